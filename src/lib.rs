@@ -1,0 +1,35 @@
+//! # surfacelab
+//!
+//! Tabletop physics driven by what a vision-based surface sees, after Wilson
+//! et al., *Bringing Physics to the Surface* (UIST 2008), with exact 2D contact
+//! geometry after Cheng et al. (2016) and a study harness.
+//!
+//! Data flows one way:
+//!
+//! ```text
+//! surface ──▶ vision ──▶ technique ──▶ world ──▶ render / study
+//! (synthetic   (threshold,  (Direct, Joint,  (rapier3d,   (wgpu; trials,
+//!  hands →      components,  Proxy, Particle) scene goals) CSVs, plots)
+//!  contact      Sobel, flow,
+//!  image)       tracking)
+//! ```
+//!
+//! - [`scene`]: scene/task files (table, camera, objects, goals, declared effects) as data.
+//! - [`world`]: the rapier3d world built from a scene; steps only the declared effects.
+//! - [`technique`]: the paper's four ways of mapping contacts into the world.
+//! - [`render`]: the wgpu renderer, on screen or off screen.
+//! - [`cli`]: the command line, which only wires these together.
+
+pub mod cli;
+pub mod goal;
+/// The wgpu renderer (being filled in; only the GPU probe is wired so far).
+pub mod render {
+    pub mod gpu;
+}
+pub mod scene;
+/// Interaction techniques (only the names are wired so far).
+pub mod technique {
+    mod kind;
+    pub use kind::TechniqueKind;
+}
+pub mod world;

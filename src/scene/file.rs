@@ -1,0 +1,194 @@
+//! The raw TOML shape of a scene file, exactly as written. Validation turns it
+//! into a [`super::Scene`]; nothing downstream reads these types.
+
+use super::effects::Effect;
+use serde::Deserialize;
+use toml::Spanned;
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneFile {
+    pub name: String,
+    #[serde(default)]
+    pub description: String,
+    /// One line shown on screen when the scene opens.
+    #[serde(default)]
+    pub hint: String,
+    pub effects: Vec<Effect>,
+    /// Seconds before a study trial of this scene counts as failed.
+    #[serde(default)]
+    pub time_limit_s: Option<Spanned<f32>>,
+    pub table: Spanned<TableFile>,
+    #[serde(default)]
+    pub camera: Option<Spanned<CameraFile>>,
+    #[serde(default)]
+    pub physics: Option<Spanned<PhysicsFile>>,
+    #[serde(default)]
+    pub objects: Vec<Spanned<ObjectFile>>,
+    #[serde(default)]
+    pub goal: Option<Spanned<GoalFile>>,
+    /// Technique parameter overrides, validated by the technique module.
+    #[serde(default)]
+    pub technique: Option<toml::Table>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TableFile {
+    pub size: [f32; 2],
+    #[serde(default)]
+    pub friction: Option<f32>,
+    #[serde(default)]
+    pub restitution: Option<f32>,
+    #[serde(default)]
+    pub color: Option<String>,
+    /// Invisible rim walls that keep objects on the display (default true).
+    #[serde(default)]
+    pub walls: Option<bool>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CameraFile {
+    /// Height of the eye above the table centre, metres.
+    pub height: f32,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PhysicsFile {
+    #[serde(default)]
+    pub timestep_hz: Option<f32>,
+    #[serde(default)]
+    pub solver_iterations: Option<usize>,
+    #[serde(default)]
+    pub pgs_iterations: Option<usize>,
+    #[serde(default)]
+    pub length_unit: Option<f32>,
+    #[serde(default)]
+    pub ccd_substeps: Option<usize>,
+    #[serde(default)]
+    pub max_speed: Option<f32>,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ShapeKind {
+    Box,
+    Sphere,
+    Cylinder,
+    Capsule,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BodyKindFile {
+    Dynamic,
+    Fixed,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ObjectFile {
+    pub name: String,
+    pub shape: ShapeKind,
+    /// Box: full extents [x, y, z].
+    #[serde(default)]
+    pub size: Option<[f32; 3]>,
+    /// Sphere, cylinder, capsule.
+    #[serde(default)]
+    pub radius: Option<f32>,
+    /// Cylinder: full height; capsule: length of the straight part.
+    #[serde(default)]
+    pub height: Option<f32>,
+    #[serde(default)]
+    pub mass: Option<f32>,
+    #[serde(default)]
+    pub friction: Option<f32>,
+    #[serde(default)]
+    pub restitution: Option<f32>,
+    pub color: String,
+    /// [x, y] (resting on the table) or [x, y, z] (centre).
+    pub position: Vec<f32>,
+    /// Euler angles XYZ in degrees.
+    #[serde(default)]
+    pub rotation_deg: Option<[f32; 3]>,
+    #[serde(default)]
+    pub body: Option<BodyKindFile>,
+    /// Repeat this object `count` times along `step` (for the gather scene's
+    /// many small objects): object i sits at position + i·step.
+    #[serde(default)]
+    pub count: Option<u32>,
+    #[serde(default)]
+    pub step: Option<[f32; 2]>,
+    /// Wrap the row every `per_row` objects, moving by `row_step`.
+    #[serde(default)]
+    pub per_row: Option<u32>,
+    #[serde(default)]
+    pub row_step: Option<[f32; 2]>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TargetFile {
+    pub object: String,
+    pub position: [f32; 2],
+    #[serde(default)]
+    pub tolerance: Option<f32>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ZoneFile {
+    pub color: String,
+    pub min: [f32; 2],
+    pub max: [f32; 2],
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum GoalKind {
+    None,
+    Positioning,
+    Sorting,
+    Steering,
+    Gather,
+    Region,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GoalFile {
+    pub kind: GoalKind,
+    /// Seconds an object must rest in place before it counts.
+    #[serde(default)]
+    pub dwell_s: Option<f32>,
+    #[serde(default)]
+    pub targets: Vec<Spanned<TargetFile>>,
+    #[serde(default)]
+    pub zones: Vec<Spanned<ZoneFile>>,
+    // steering
+    #[serde(default)]
+    pub object: Option<String>,
+    #[serde(default)]
+    pub platform: Option<String>,
+    #[serde(default)]
+    pub waypoints: Vec<[f32; 2]>,
+    #[serde(default)]
+    pub waypoint_radius: Option<f32>,
+    #[serde(default)]
+    pub finish: Option<[f32; 2]>,
+    #[serde(default)]
+    pub finish_radius: Option<f32>,
+    // gather / region
+    #[serde(default)]
+    pub center: Option<[f32; 2]>,
+    #[serde(default)]
+    pub radius: Option<f32>,
+    #[serde(default)]
+    pub fraction: Option<f32>,
+    #[serde(default)]
+    pub min: Option<[f32; 2]>,
+    #[serde(default)]
+    pub max: Option<[f32; 2]>,
+}

@@ -1,0 +1,19 @@
+//! Scene files: the table, camera, objects, goals and declared effects of a task, as data.
+//!
+//! A scene is read once from TOML ([`load`]), validated, and handed out as a
+//! plain [`Scene`] value that the world, the renderer, the study harness, the
+//! benchmarks and the tests all share — one scene definition, many uses.
+
+mod effects;
+mod error;
+mod file;
+mod model;
+mod validate;
+
+pub use effects::{Effect, EffectSet};
+pub use error::SceneError;
+pub use model::{
+    BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SortingZone,
+    SteeringGoal, Table, Target,
+};
+pub use validate::{load, parse, resolve_path};

@@ -1,0 +1,394 @@
+//! From TOML text to a validated [`Scene`]. Input is cleaned once, here, so
+//! everything downstream can trust it (Box2D's `b2ComputeHull` habit).
+
+use super::effects::EffectSet;
+use super::error::SceneError;
+use super::file::{BodyKindFile, GoalFile, GoalKind, ObjectFile, SceneFile, ShapeKind};
+use super::model::{
+    BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SortingZone,
+    SteeringGoal, Table, Target,
+};
+use glam::{EulerRot, Quat, Vec2, Vec3};
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+use toml::Spanned;
+
+/// Finds a scene: an existing path, else `tasks/NAME.toml` under the current
+/// directory, else under the crate's own `tasks/` folder (so the binary works
+/// from any directory of a checkout).
+pub fn resolve_path(name_or_path: &str) -> Result<PathBuf, SceneError> {
+    let direct = PathBuf::from(name_or_path);
+    if direct.is_file() {
+        return Ok(direct);
+    }
+    let file = if name_or_path.ends_with(".toml") {
+        name_or_path.to_string()
+    } else {
+        format!("{name_or_path}.toml")
+    };
+    let candidates = [
+        PathBuf::from("tasks").join(&file),
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tasks").join(&file),
+    ];
+    for c in &candidates {
+        if c.is_file() {
+            return Ok(c.clone());
+        }
+    }
+    Err(SceneError::NotFound {
+        name: name_or_path.to_string(),
+        tried: std::iter::once(direct.display().to_string())
+            .chain(candidates.iter().map(|c| c.display().to_string()))
+            .collect::<Vec<_>>()
+            .join(", "),
+    })
+}
+
+/// Resolves and loads a scene by name (`positioning`) or path.
+pub fn load(name_or_path: &str) -> Result<Scene, SceneError> {
+    let path = resolve_path(name_or_path)?;
+    let text = std::fs::read_to_string(&path).map_err(|source| SceneError::Io {
+        path: path.clone(),
+        source,
+    })?;
+    parse(&text, &path.display().to_string())
+}
+
+/// Parses and validates scene TOML. `origin` names the file in errors.
+pub fn parse(text: &str, origin: &str) -> Result<Scene, SceneError> {
+    let raw: SceneFile = toml::from_str(text).map_err(|e| SceneError::Parse {
+        origin: origin.to_string(),
+        message: e.to_string().trim_end().to_string(),
+    })?;
+    Checker { text, origin }.scene(raw)
+}
+
+struct Checker<'a> {
+    text: &'a str,
+    origin: &'a str,
+}
+
+impl Checker<'_> {
+    fn line(&self, span: &Range<usize>) -> usize {
+        let end = span.start.min(self.text.len());
+        self.text[..end].bytes().filter(|&b| b == b'\n').count() + 1
+    }
+
+    fn err(&self, span: &Range<usize>, field: impl Into<String>, message: impl Into<String>) -> SceneError {
+        SceneError::Invalid {
+            origin: self.origin.to_string(),
+            line: self.line(span),
+            field: field.into(),
+            message: message.into(),
+        }
+    }
+
+    /// A finite number in `lo..=hi` (`hi` may be infinite).
+    fn num(&self, span: &Range<usize>, field: &str, v: f32, lo: f32, hi: f32) -> Result<f32, SceneError> {
+        if !v.is_finite() {
+            return Err(self.err(span, field, format!("must be a finite number, got {v}")));
+        }
+        if v < lo || v > hi {
+            let range = if hi.is_finite() { format!("{lo}..={hi}") } else { format!(">= {lo}") };
+            return Err(self.err(span, field, format!("{v} is out of range ({range})")));
+        }
+        Ok(v)
+    }
+
+    fn positive(&self, span: &Range<usize>, field: &str, v: f32) -> Result<f32, SceneError> {
+        let v = self.num(span, field, v, 0.0, f32::INFINITY)?;
+        if v == 0.0 {
+            return Err(self.err(span, field, "must be greater than 0"));
+        }
+        Ok(v)
+    }
+
+    fn scene(&self, raw: SceneFile) -> Result<Scene, SceneError> {
+        let effects: EffectSet = raw.effects.iter().copied().collect();
+
+        let tspan = raw.table.span();
+        let t = raw.table.into_inner();
+        let width = self.positive(&tspan, "table.size[0]", t.size[0])?;
+        let depth = self.positive(&tspan, "table.size[1]", t.size[1])?;
+        let table_color = match &t.color {
+            Some(c) => Color::parse(c).ok_or_else(|| self.err(&tspan, "table.color", format!("unknown colour `{c}`")))?,
+            None => Color { rgba: [0.78, 0.80, 0.82, 1.0] },
+        };
+        let table = Table {
+            width,
+            depth,
+            friction: self.num(&tspan, "table.friction", t.friction.unwrap_or(0.6), 0.0, 10.0)?,
+            restitution: self.num(&tspan, "table.restitution", t.restitution.unwrap_or(0.1), 0.0, 1.0)?,
+            color: table_color,
+            walls: t.walls.unwrap_or(true),
+        };
+
+        let camera = match raw.camera {
+            Some(c) => {
+                let span = c.span();
+                CameraSpec { height: self.positive(&span, "camera.height", c.into_inner().height)? }
+            }
+            None => CameraSpec { height: 1.2 },
+        };
+
+        let mut physics = PhysicsSpec::default();
+        if let Some(p) = raw.physics {
+            let span = p.span();
+            let p = p.into_inner();
+            if let Some(hz) = p.timestep_hz {
+                physics.dt = 1.0 / self.num(&span, "physics.timestep_hz", hz, 10.0, 10_000.0)?;
+            }
+            if let Some(n) = p.solver_iterations {
+                if n == 0 || n > 100 {
+                    return Err(self.err(&span, "physics.solver_iterations", format!("{n} is out of range (1..=100)")));
+                }
+                physics.solver_iterations = n;
+            }
+            if let Some(n) = p.pgs_iterations {
+                if n == 0 || n > 100 {
+                    return Err(self.err(&span, "physics.pgs_iterations", format!("{n} is out of range (1..=100)")));
+                }
+                physics.pgs_iterations = n;
+            }
+            if let Some(l) = p.length_unit {
+                physics.length_unit = self.positive(&span, "physics.length_unit", l)?;
+            }
+            if let Some(n) = p.ccd_substeps {
+                physics.ccd_substeps = n;
+            }
+            if let Some(v) = p.max_speed {
+                physics.max_speed = self.positive(&span, "physics.max_speed", v)?;
+            }
+        }
+
+        let mut objects = Vec::new();
+        for (i, o) in raw.objects.into_iter().enumerate() {
+            self.objects(i, o, &table, &mut objects)?;
+        }
+        for (i, a) in objects.iter().enumerate() {
+            if objects[..i].iter().any(|b| b.name == a.name) {
+                return Err(SceneError::Invalid {
+                    origin: self.origin.to_string(),
+                    line: 0,
+                    field: format!("objects.name = \"{}\"", a.name),
+                    message: "duplicate object name".into(),
+                });
+            }
+        }
+
+        let time_limit_s = match raw.time_limit_s {
+            Some(s) => {
+                let span = s.span();
+                self.positive(&span, "time_limit_s", s.into_inner())?
+            }
+            None => 120.0,
+        };
+
+        let goal = match raw.goal {
+            Some(g) => self.goal(g, &table, &objects)?,
+            None => Goal::None,
+        };
+
+        Ok(Scene {
+            name: raw.name,
+            origin: self.origin.to_string(),
+            description: raw.description,
+            hint: raw.hint,
+            effects,
+            time_limit_s,
+            table,
+            camera,
+            physics,
+            objects,
+            goal,
+            technique: raw.technique.unwrap_or_default(),
+        })
+    }
+
+    fn objects(&self, i: usize, o: Spanned<ObjectFile>, table: &Table, out: &mut Vec<ObjectSpec>) -> Result<(), SceneError> {
+        let span = o.span();
+        let o = o.into_inner();
+        let f = |field: &str| format!("objects[{i}].{field}");
+        let need = |v: Option<f32>, field: &str| {
+            v.ok_or_else(|| self.err(&span, f(field), format!("a {:?} needs `{field}`", o.shape).to_lowercase()))
+        };
+        let shape = match o.shape {
+            ShapeKind::Box => {
+                let s = o.size.ok_or_else(|| self.err(&span, f("size"), "a box needs `size = [x, y, z]`"))?;
+                for (k, v) in s.iter().enumerate() {
+                    self.positive(&span, &f(&format!("size[{k}]")), *v)?;
+                }
+                Shape::Box { half_extents: Vec3::from(s) / 2.0 }
+            }
+            ShapeKind::Sphere => Shape::Sphere { radius: self.positive(&span, &f("radius"), need(o.radius, "radius")?)? },
+            ShapeKind::Cylinder => Shape::Cylinder {
+                radius: self.positive(&span, &f("radius"), need(o.radius, "radius")?)?,
+                half_height: self.positive(&span, &f("height"), need(o.height, "height")?)? / 2.0,
+            },
+            ShapeKind::Capsule => Shape::Capsule {
+                radius: self.positive(&span, &f("radius"), need(o.radius, "radius")?)?,
+                half_height: self.num(&span, &f("height"), need(o.height, "height")?, 0.0, f32::INFINITY)? / 2.0,
+            },
+        };
+        let body = match o.body.unwrap_or(BodyKindFile::Dynamic) {
+            BodyKindFile::Dynamic => BodyKind::Dynamic,
+            BodyKindFile::Fixed => BodyKind::Fixed,
+        };
+        let mass = match (body, o.mass) {
+            (BodyKind::Dynamic, None) => return Err(self.err(&span, f("mass"), "a dynamic object needs `mass` (kg)")),
+            (_, Some(m)) => self.positive(&span, &f("mass"), m)?,
+            (BodyKind::Fixed, None) => 0.0,
+        };
+        let color = Color::parse(&o.color).ok_or_else(|| {
+            let names: Vec<&str> = Color::NAMED.iter().map(|(n, _)| *n).collect();
+            self.err(&span, f("color"), format!("unknown colour `{}` (use #rrggbb or one of {})", o.color, names.join(", ")))
+        })?;
+        let rot = o.rotation_deg.unwrap_or([0.0; 3]);
+        for (k, v) in rot.iter().enumerate() {
+            self.num(&span, &f(&format!("rotation_deg[{k}]")), *v, -360.0, 360.0)?;
+        }
+        let rotation = Quat::from_euler(EulerRot::XYZ, rot[0].to_radians(), rot[1].to_radians(), rot[2].to_radians());
+        let base = match o.position.as_slice() {
+            [x, y] => Vec3::new(*x, *y, shape.half_z()),
+            [x, y, z] => Vec3::new(*x, *y, *z),
+            _ => return Err(self.err(&span, f("position"), "must be [x, y] or [x, y, z]")),
+        };
+        for (k, v) in base.to_array().iter().enumerate() {
+            self.num(&span, &f(&format!("position[{k}]")), *v, -100.0, 100.0)?;
+        }
+        let count = o.count.unwrap_or(1);
+        if count == 0 || count > 10_000 {
+            return Err(self.err(&span, f("count"), format!("{count} is out of range (1..=10000)")));
+        }
+        let step = Vec2::from(o.step.unwrap_or([0.0, 0.0]));
+        let per_row = o.per_row.unwrap_or(count).max(1);
+        let row_step = Vec2::from(o.row_step.unwrap_or([0.0, 0.0]));
+        for k in 0..count {
+            let offset = step * (k % per_row) as f32 + row_step * (k / per_row) as f32;
+            let position = base + offset.extend(0.0);
+            if !table_contains(table, position.truncate()) && body == BodyKind::Dynamic {
+                return Err(self.err(
+                    &span,
+                    f("position"),
+                    format!("({:.3}, {:.3}) lies off the table (±{:.3} × ±{:.3})", position.x, position.y, table.width / 2.0, table.depth / 2.0),
+                ));
+            }
+            let name = if count == 1 { o.name.clone() } else { format!("{}{}", o.name, k + 1) };
+            out.push(ObjectSpec {
+                name,
+                shape,
+                mass,
+                friction: self.num(&span, &f("friction"), o.friction.unwrap_or(0.5), 0.0, 10.0)?,
+                restitution: self.num(&span, &f("restitution"), o.restitution.unwrap_or(0.1), 0.0, 1.0)?,
+                color_name: o.color.clone(),
+                color,
+                position,
+                rotation,
+                body,
+            });
+        }
+        Ok(())
+    }
+
+    fn goal(&self, g: Spanned<GoalFile>, table: &Table, objects: &[ObjectSpec]) -> Result<Goal, SceneError> {
+        let span = g.span();
+        let g = g.into_inner();
+        let dwell_s = self.num(&span, "goal.dwell_s", g.dwell_s.unwrap_or(0.5), 0.0, 60.0)?;
+        let object_named = |name: &Option<String>, field: &str| -> Result<usize, SceneError> {
+            let n = name.as_ref().ok_or_else(|| self.err(&span, field, format!("this goal needs `{field}`")))?;
+            objects
+                .iter()
+                .position(|o| &o.name == n)
+                .ok_or_else(|| self.err(&span, field, format!("no object named `{n}`")))
+        };
+        let on_table = |p: [f32; 2], sp: &Range<usize>, field: &str| -> Result<Vec2, SceneError> {
+            let v = Vec2::from(p);
+            if !v.is_finite() {
+                return Err(self.err(sp, field, "must be finite"));
+            }
+            if !table_contains(table, v) {
+                return Err(self.err(sp, field, format!("({:.3}, {:.3}) lies off the table (±{:.3} × ±{:.3})", v.x, v.y, table.width / 2.0, table.depth / 2.0)));
+            }
+            Ok(v)
+        };
+        Ok(match g.kind {
+            GoalKind::None => Goal::None,
+            GoalKind::Positioning => {
+                if g.targets.is_empty() {
+                    return Err(self.err(&span, "goal.targets", "a positioning goal needs at least one [[goal.targets]]"));
+                }
+                let mut targets = Vec::new();
+                for (i, t) in g.targets.into_iter().enumerate() {
+                    let tspan = t.span();
+                    let t = t.into_inner();
+                    let object = objects
+                        .iter()
+                        .position(|o| o.name == t.object)
+                        .ok_or_else(|| self.err(&tspan, format!("goal.targets[{i}].object"), format!("no object named `{}`", t.object)))?;
+                    targets.push(Target {
+                        object,
+                        position: on_table(t.position, &tspan, &format!("goal.targets[{i}].position"))?,
+                        tolerance: self.positive(&tspan, &format!("goal.targets[{i}].tolerance"), t.tolerance.unwrap_or(0.015))?,
+                    });
+                }
+                Goal::Positioning { targets, dwell_s }
+            }
+            GoalKind::Sorting => {
+                if g.zones.is_empty() {
+                    return Err(self.err(&span, "goal.zones", "a sorting goal needs at least one [[goal.zones]]"));
+                }
+                let mut zones = Vec::new();
+                for (i, z) in g.zones.into_iter().enumerate() {
+                    let zspan = z.span();
+                    let z = z.into_inner();
+                    let min = on_table(z.min, &zspan, &format!("goal.zones[{i}].min"))?;
+                    let max = on_table(z.max, &zspan, &format!("goal.zones[{i}].max"))?;
+                    if min.x >= max.x || min.y >= max.y {
+                        return Err(self.err(&zspan, format!("goal.zones[{i}]"), "min must be below max on both axes"));
+                    }
+                    if Color::parse(&z.color).is_none() {
+                        return Err(self.err(&zspan, format!("goal.zones[{i}].color"), format!("unknown colour `{}`", z.color)));
+                    }
+                    zones.push(SortingZone { color_name: z.color, min, max });
+                }
+                Goal::Sorting { zones, dwell_s }
+            }
+            GoalKind::Steering => {
+                let object = object_named(&g.object, "goal.object")?;
+                let platform = match &g.platform {
+                    Some(_) => Some(object_named(&g.platform, "goal.platform")?),
+                    None => None,
+                };
+                let mut waypoints = Vec::new();
+                for (i, w) in g.waypoints.iter().enumerate() {
+                    waypoints.push(on_table(*w, &span, &format!("goal.waypoints[{i}]"))?);
+                }
+                let finish = on_table(g.finish.ok_or_else(|| self.err(&span, "goal.finish", "a steering goal needs `finish`"))?, &span, "goal.finish")?;
+                Goal::Steering(SteeringGoal {
+                    object,
+                    platform,
+                    waypoints,
+                    waypoint_radius: self.positive(&span, "goal.waypoint_radius", g.waypoint_radius.unwrap_or(0.04))?,
+                    finish,
+                    finish_radius: self.positive(&span, "goal.finish_radius", g.finish_radius.unwrap_or(0.04))?,
+                })
+            }
+            GoalKind::Gather => Goal::Gather {
+                center: on_table(g.center.ok_or_else(|| self.err(&span, "goal.center", "a gather goal needs `center`"))?, &span, "goal.center")?,
+                radius: self.positive(&span, "goal.radius", g.radius.ok_or_else(|| self.err(&span, "goal.radius", "a gather goal needs `radius`"))?)?,
+                fraction: self.num(&span, "goal.fraction", g.fraction.unwrap_or(0.8), 0.0, 1.0)?,
+                dwell_s,
+            },
+            GoalKind::Region => {
+                let object = object_named(&g.object, "goal.object")?;
+                let min = on_table(g.min.ok_or_else(|| self.err(&span, "goal.min", "a region goal needs `min`"))?, &span, "goal.min")?;
+                let max = on_table(g.max.ok_or_else(|| self.err(&span, "goal.max", "a region goal needs `max`"))?, &span, "goal.max")?;
+                Goal::Region { object, min, max, dwell_s }
+            }
+        })
+    }
+}
+
+fn table_contains(table: &Table, p: Vec2) -> bool {
+    p.x.abs() <= table.width / 2.0 + 1e-6 && p.y.abs() <= table.depth / 2.0 + 1e-6
+}

@@ -1,0 +1,62 @@
+//! Collision layers. Particles must never collide with each other (thousands
+//! of overlapping particles would cost quadratic pairs), and scene ray casts
+//! must see only the scene, never the technique's own bodies.
+
+use rapier3d::prelude::{Collider, Group, InteractionGroups, InteractionTestMode};
+
+/// What a collider belongs to, stored in its collision-group membership.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Layer {
+    /// The table, its rim walls and fixed scene objects.
+    Environment,
+    /// Dynamic scene objects.
+    Object,
+    /// A technique's proxy bodies (one per contact).
+    Proxy,
+    /// A technique's particles (one per edge pixel).
+    Particle,
+}
+
+impl Layer {
+    fn group(self) -> Group {
+        match self {
+            Layer::Environment => Group::GROUP_1,
+            Layer::Object => Group::GROUP_2,
+            Layer::Proxy => Group::GROUP_3,
+            Layer::Particle => Group::GROUP_4,
+        }
+    }
+
+    /// The interaction groups a collider on this layer gets.
+    pub fn groups(self) -> InteractionGroups {
+        let scene = Group::GROUP_1 | Group::GROUP_2;
+        let filter = match self {
+            Layer::Environment => scene | Group::GROUP_3 | Group::GROUP_4,
+            Layer::Object => scene | Group::GROUP_3 | Group::GROUP_4,
+            // Proxies touch the scene and each other (two fingers can pinch).
+            Layer::Proxy => scene | Group::GROUP_3,
+            // Particles touch the scene only.
+            Layer::Particle => scene,
+        };
+        InteractionGroups::new(self.group(), filter, InteractionTestMode::And)
+    }
+
+    /// Groups for queries that should see the scene only.
+    pub fn scene_query() -> InteractionGroups {
+        InteractionGroups::new(Group::ALL, Group::GROUP_1 | Group::GROUP_2, InteractionTestMode::And)
+    }
+}
+
+/// The layer a collider was created on.
+pub fn collider_layer(c: &Collider) -> Layer {
+    let m = c.collision_groups().memberships;
+    if m.contains(Group::GROUP_4) {
+        Layer::Particle
+    } else if m.contains(Group::GROUP_3) {
+        Layer::Proxy
+    } else if m.contains(Group::GROUP_2) {
+        Layer::Object
+    } else {
+        Layer::Environment
+    }
+}

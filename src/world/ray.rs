@@ -1,0 +1,16 @@
+//! The result of a scene ray cast.
+
+use glam::Vec3;
+
+/// Where a ray met the scene.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RayHit {
+    /// The scene object hit, or `None` for the table, its walls or a fixed
+    /// environment part with no object index.
+    pub object: Option<usize>,
+    pub point: Vec3,
+    /// Outward surface normal at `point`.
+    pub normal: Vec3,
+    /// Distance along the (unit) ray.
+    pub toi: f32,
+}

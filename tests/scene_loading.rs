@@ -1,0 +1,138 @@
+//! Scene files: the shipped tasks load, and every class of bad input names
+//! the file, the line and the field.
+
+use surfacelab::scene::{self, Effect, Goal, SceneError, Shape};
+
+#[test]
+fn positioning_has_four_spheres_and_four_boxes_each_with_a_target() {
+    let s = scene::load("positioning").expect("positioning loads");
+    let Goal::Positioning { targets, .. } = &s.goal else { panic!("positioning goal, got {:?}", s.goal) };
+    assert_eq!(targets.len(), 8);
+    let spheres = targets.iter().filter(|t| matches!(s.objects[t.object].shape, Shape::Sphere { .. })).count();
+    let boxes = targets.iter().filter(|t| matches!(s.objects[t.object].shape, Shape::Box { .. })).count();
+    assert_eq!((spheres, boxes), (4, 4));
+    for t in targets {
+        assert!(s.on_table(t.position));
+    }
+}
+
+#[test]
+fn sorting_has_two_colours_and_a_zone_for_each() {
+    let s = scene::load("sorting").expect("sorting loads");
+    let Goal::Sorting { zones, .. } = &s.goal else { panic!("sorting goal") };
+    let mut colours: Vec<&str> = s.objects.iter().map(|o| o.color_name.as_str()).collect();
+    colours.sort_unstable();
+    colours.dedup();
+    assert_eq!(colours, ["blue", "red"]);
+    for c in colours {
+        assert!(zones.iter().any(|z| z.color_name == c), "zone for {c}");
+    }
+    // Different shapes, sizes and masses.
+    let masses: Vec<f32> = s.objects.iter().map(|o| o.mass).collect();
+    assert!(masses.iter().copied().fold(0.0, f32::max) / masses.iter().copied().fold(f32::MAX, f32::min) > 4.0);
+}
+
+#[test]
+fn steering_starts_far_top_right_on_a_raised_platform() {
+    let s = scene::load("steering").expect("steering loads");
+    let Goal::Steering(g) = &s.goal else { panic!("steering goal") };
+    let start = s.objects[g.object].position;
+    assert!(start.x > 0.25 && start.y > 0.15, "start at far top right, got {start}");
+    let platform = &s.objects[g.platform.expect("platform")];
+    assert!(start.z > platform.position.z + platform.shape.half_z(), "cylinder starts on the platform");
+    assert!(g.waypoints.len() >= 3);
+    assert!(!s.effects.contains(Effect::Sleeping));
+}
+
+#[test]
+fn loading_by_path_works_too() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/tasks/sorting.toml");
+    assert_eq!(scene::load(path).expect("by path").name, "sorting");
+}
+
+const GOOD: &str = r#"
+name = "t"
+effects = ["gravity"]
+[table]
+size = [1.0, 0.75]
+[[objects]]
+name = "a"
+shape = "box"
+size = [0.1, 0.1, 0.1]
+mass = 1.0
+color = "red"
+position = [0.0, 0.0]
+[goal]
+kind = "positioning"
+[[goal.targets]]
+object = "a"
+position = [0.2, 0.1]
+"#;
+
+fn bad(text: &str) -> String {
+    match scene::parse(text, "bad.toml") {
+        Ok(_) => panic!("should not load:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+#[test]
+fn the_good_template_loads() {
+    let s = scene::parse(GOOD, "good.toml").expect("template is valid");
+    assert_eq!(s.objects[0].position.z, 0.05, "an [x, y] position rests on the table");
+}
+
+#[test]
+fn unknown_shape_names_line_and_field() {
+    let e = bad(&GOOD.replace("shape = \"box\"", "shape = \"pyramid\""));
+    assert!(e.contains("bad.toml"), "{e}");
+    assert!(e.contains("pyramid") && e.contains("line 8"), "{e}");
+}
+
+#[test]
+fn negative_mass_names_line_and_field() {
+    let e = bad(&GOOD.replace("mass = 1.0", "mass = -2.0"));
+    assert!(e.starts_with("bad.toml:6:") && e.contains("objects[0].mass") && e.contains("-2"), "{e}");
+}
+
+#[test]
+fn nan_mass_is_rejected() {
+    let e = bad(&GOOD.replace("mass = 1.0", "mass = nan"));
+    assert!(e.contains("objects[0].mass") && e.contains("finite"), "{e}");
+}
+
+#[test]
+fn missing_field_is_named() {
+    let e = bad(&GOOD.replace("mass = 1.0\n", ""));
+    assert!(e.contains("objects[0].mass") && e.contains("needs"), "{e}");
+    let e = bad(&GOOD.replace("name = \"t\"\n", ""));
+    assert!(e.contains("missing field `name`"), "{e}");
+}
+
+#[test]
+fn unknown_effect_names_line() {
+    let e = bad(&GOOD.replace("[\"gravity\"]", "[\"gravity\", \"magnetism\"]"));
+    assert!(e.contains("magnetism") && e.contains("line 3"), "{e}");
+}
+
+#[test]
+fn target_off_the_table_names_field() {
+    let e = bad(&GOOD.replace("position = [0.2, 0.1]", "position = [0.9, 0.1]"));
+    assert!(e.contains("goal.targets[0].position") && e.contains("off the table"), "{e}");
+}
+
+#[test]
+fn unknown_field_and_unknown_object_are_named() {
+    let e = bad(&GOOD.replace("mass = 1.0", "mass = 1.0\nmas = 2.0"));
+    assert!(e.contains("mas"), "{e}");
+    let e = bad(&GOOD.replace("object = \"a\"", "object = \"b\""));
+    assert!(e.contains("goal.targets[0].object") && e.contains("`b`"), "{e}");
+}
+
+#[test]
+fn missing_scene_file_lists_where_it_looked() {
+    match scene::load("no_such_scene") {
+        Err(SceneError::NotFound { tried, .. }) => assert!(tried.contains("tasks")),
+        other => panic!("expected NotFound, got {other:?}"),
+    }
+}

@@ -1,0 +1,121 @@
+//! The physics world: determinism, ray casts, and effect gating.
+
+use glam::{Vec2, Vec3};
+use surfacelab::scene::{self, EffectSet};
+use surfacelab::world::World;
+
+fn push_pattern(world: &mut World, step: usize) {
+    // A fixed, input-like sequence of forces on a few objects.
+    let n = world.object_count();
+    let i = step % n;
+    let h = world.object_body(i);
+    let f = Vec3::new(((step * 7) % 5) as f32 - 2.0, ((step * 3) % 7) as f32 - 3.0, 0.0) * 0.5;
+    if let Some(b) = world.physics_mut().bodies.get_mut(h) {
+        if b.is_dynamic() {
+            b.add_force(f, true);
+        }
+    }
+}
+
+#[test]
+fn same_scene_and_inputs_give_bit_identical_state() {
+    let s = scene::load("sorting").expect("scene");
+    let mut a = World::new(&s);
+    let mut b = World::new(&s);
+    for k in 0..600 {
+        push_pattern(&mut a, k);
+        push_pattern(&mut b, k);
+        a.step();
+        b.step();
+    }
+    assert_eq!(a.state_bits(), b.state_bits());
+    // And the inputs mattered: a world without them differs.
+    let mut c = World::new(&s);
+    for _ in 0..600 {
+        c.step();
+    }
+    assert_ne!(a.state_bits(), c.state_bits());
+}
+
+#[test]
+fn objects_rest_on_the_table_without_drifting() {
+    let s = scene::load("positioning").expect("scene");
+    let mut w = World::new(&s);
+    for _ in 0..180 {
+        w.step();
+    }
+    for (i, o) in s.objects.iter().enumerate() {
+        let p = w.object_pose(i).position;
+        assert!((p - o.position).length() < 0.005, "{} moved from {} to {p}", o.name, o.position);
+    }
+    assert_eq!(w.stats().nan_count, 0);
+    assert!(w.measure_penetration() < 0.005);
+}
+
+#[test]
+fn contact_ray_hits_the_object_under_the_point() {
+    let s = scene::load("positioning").expect("scene");
+    let mut w = World::new(&s);
+    w.step();
+    for (i, o) in s.objects.iter().enumerate() {
+        let hit = w.cast_contact_ray(o.position.truncate()).expect("hits something");
+        assert_eq!(hit.object, Some(i), "ray at {} should hit {}", o.position, o.name);
+        let top = o.position.z + o.shape.half_z();
+        assert!((hit.point.z - top).abs() < 0.01, "{}: hit z {} vs top {top}", o.name, hit.point.z);
+        assert!(hit.normal.z > 0.5, "the top faces up");
+    }
+    let empty = w.cast_contact_ray(Vec2::new(0.0, -0.3)).expect("hits the table");
+    assert_eq!(empty.object, None);
+    assert!(empty.point.z.abs() < 1e-4);
+}
+
+#[test]
+fn undeclared_effects_are_switched_off() {
+    let pos = scene::load("positioning").expect("scene"); // gravity friction sleeping joints
+    let w = World::new(&pos);
+    let c = w.config();
+    assert_eq!(c.ccd_substeps, 0);
+    assert_eq!(w.physics().integration_parameters.max_ccd_substeps, 0);
+    assert!(c.sleeping && c.joints && c.friction && !c.soft_bodies);
+    assert!(w.physics().bodies.iter().all(|(_, b)| !b.is_ccd_enabled()));
+
+    let steer = scene::load("steering").expect("scene"); // no sleeping
+    let w = World::new(&steer);
+    assert!(!w.config().sleeping);
+
+    let all = World::with_effects(&pos, EffectSet::all());
+    assert!(all.config().ccd_substeps > 0);
+    assert!(all.physics().bodies.iter().filter(|(_, b)| b.is_dynamic()).all(|(_, b)| b.is_ccd_enabled()));
+}
+
+#[test]
+fn sleeping_happens_only_when_declared() {
+    let s = scene::load("positioning").expect("scene");
+    let mut on = World::new(&s);
+    let mut off = World::with_effects(&s, s.effects.iter().filter(|e| *e != scene::Effect::Sleeping).collect());
+    for _ in 0..300 {
+        on.step();
+        off.step();
+    }
+    let asleep = |w: &World| (0..w.object_count()).filter(|&i| w.physics().bodies[w.object_body(i)].is_sleeping()).count();
+    assert_eq!(asleep(&on), s.objects.len(), "resting objects sleep when declared");
+    assert_eq!(asleep(&off), 0, "and never when not");
+}
+
+#[test]
+fn joints_need_the_joints_effect() {
+    let mut s = scene::load("positioning").expect("scene");
+    assert!(World::new(&s).require_joints("the Joint technique").is_ok());
+    s.effects = s.effects.iter().filter(|e| *e != scene::Effect::Joints).collect();
+    let e = World::new(&s).require_joints("the Joint technique").expect_err("joints off");
+    assert!(e.to_string().contains("joints"));
+}
+
+#[test]
+fn no_gravity_no_friction_when_undeclared() {
+    let mut s = scene::load("positioning").expect("scene");
+    s.effects = EffectSet::empty();
+    let w = World::new(&s);
+    assert_eq!(w.physics().gravity, Vec3::ZERO);
+    assert!(w.physics().colliders.iter().all(|(_, c)| c.friction() == 0.0));
+}
