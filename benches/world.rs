@@ -21,10 +21,11 @@ fn settle_and_step(c: &mut Criterion) {
                     k += 1;
                     let i = k % w.object_count();
                     let h = w.object_body(i);
-                    if let Some(body) = w.physics_mut().bodies.get_mut(h) {
-                        if body.is_dynamic() && k % 120 == 0 {
-                            body.apply_impulse(glam::Vec3::new(0.02, 0.0, 0.0), true);
-                        }
+                    if let Some(body) = w.physics_mut().bodies.get_mut(h)
+                        && body.is_dynamic()
+                        && k.is_multiple_of(120)
+                    {
+                        body.apply_impulse(glam::Vec3::new(0.02, 0.0, 0.0), true);
                     }
                     w.step();
                 });

@@ -21,15 +21,17 @@
 //! - [`cli`]: the command line, which only wires these together.
 
 pub mod cli;
+pub mod contact;
 pub mod goal;
+pub mod participant;
 /// The wgpu renderer (being filled in; only the GPU probe is wired so far).
 pub mod render {
     pub mod gpu;
 }
 pub mod scene;
-/// Interaction techniques (only the names are wired so far).
-pub mod technique {
-    mod kind;
-    pub use kind::TechniqueKind;
-}
+pub mod session;
+pub mod study;
+pub mod surface;
+pub mod vision;
+pub mod technique;
 pub mod world;

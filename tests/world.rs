@@ -10,10 +10,10 @@ fn push_pattern(world: &mut World, step: usize) {
     let i = step % n;
     let h = world.object_body(i);
     let f = Vec3::new(((step * 7) % 5) as f32 - 2.0, ((step * 3) % 7) as f32 - 3.0, 0.0) * 0.5;
-    if let Some(b) = world.physics_mut().bodies.get_mut(h) {
-        if b.is_dynamic() {
-            b.add_force(f, true);
-        }
+    if let Some(b) = world.physics_mut().bodies.get_mut(h)
+        && b.is_dynamic()
+    {
+        b.add_force(f, true);
     }
 }
 
@@ -118,4 +118,24 @@ fn no_gravity_no_friction_when_undeclared() {
     let w = World::new(&s);
     assert_eq!(w.physics().gravity, Vec3::ZERO);
     assert!(w.physics().colliders.iter().all(|(_, c)| c.friction() == 0.0));
+}
+
+#[test]
+fn touching_where_an_object_appears_hits_its_top() {
+    // The steering cylinder sits far from the table centre, so its contact
+    // ray is oblique: a touch where its cap *appears* lands on the cap.
+    let s = scene::load("steering").expect("scene");
+    let w = World::new(&s);
+    let cyl = s.object_index("cylinder").expect("cylinder");
+    let c = s.objects[cyl].position;
+    let top = c.z + 0.025;
+    for (dx, dy) in [(0.0, 0.0), (-0.01, 0.0), (0.0, 0.015), (0.012, -0.012)] {
+        // Where the user sees that point of the cap, they touch.
+        let seen = w.screen_point(Vec3::new(c.x + dx, c.y + dy, top));
+        assert!(seen.length() > c.truncate().length(), "perspective pushes it outward");
+        let hit = w.cast_contact_ray(seen).expect("hit");
+        assert_eq!(hit.object, Some(cyl), "offset ({dx}, {dy})");
+        assert!((hit.point.z - top).abs() < 1e-3 && hit.normal.z > 0.99, "{hit:?}");
+        assert!((hit.point.truncate() - Vec2::new(c.x + dx, c.y + dy)).length() < 1e-3);
+    }
 }

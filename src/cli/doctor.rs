@@ -7,7 +7,7 @@ pub fn has_display() -> bool {
     ["WAYLAND_DISPLAY", "DISPLAY"].iter().any(|v| std::env::var(v).is_ok_and(|s| !s.is_empty()))
 }
 
-pub fn run() -> anyhow::Result<ExitCode> {
+pub fn run() -> ExitCode {
     println!("surfacelab {}", env!("CARGO_PKG_VERSION"));
     let display = match (std::env::var("WAYLAND_DISPLAY"), std::env::var("DISPLAY")) {
         (Ok(w), _) if !w.is_empty() => format!("yes (Wayland {w})"),
@@ -20,11 +20,11 @@ pub fn run() -> anyhow::Result<ExitCode> {
             println!("adapter: {}", a.name);
             println!("backend: {:?}", a.backend);
             println!("device type: {:?}", a.device_type);
-            Ok(ExitCode::SUCCESS)
+            ExitCode::SUCCESS
         }
         Err(e) => {
             eprintln!("adapter: none\nsurfacelab doctor: {e}");
-            Ok(ExitCode::FAILURE)
+            ExitCode::FAILURE
         }
     }
 }

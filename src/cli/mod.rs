@@ -3,6 +3,8 @@
 //! library modules, this layer only wires them together.
 
 mod doctor;
+mod run;
+mod study;
 
 use crate::technique::TechniqueKind;
 use clap::{Args, Parser, Subcommand};
@@ -62,13 +64,76 @@ pub struct RunArgs {
     /// Where to write the JSON report (default: standard output).
     #[arg(long)]
     pub report: Option<PathBuf>,
+    /// Seconds simulated after the gesture ends, so released objects settle.
+    #[arg(long, default_value_t = 1.0, value_parser = parse_seconds)]
+    pub settle: f32,
+}
+
+/// A finite, non-negative number of seconds.
+fn parse_seconds(s: &str) -> Result<f32, String> {
+    let v: f32 = s.parse().map_err(|_| format!("`{s}` is not a number of seconds"))?;
+    if v.is_finite() && v >= 0.0 { Ok(v) } else { Err(format!("`{s}` must be a finite number >= 0")) }
 }
 
 #[derive(Debug, Args)]
+#[command(args_conflicts_with_subcommands = true)]
 pub struct StudyArgs {
-    /// Output folder.
+    #[command(subcommand)]
+    pub action: Option<StudyAction>,
+    /// Output folder (must not already hold a run; use --resume for that).
     #[arg(long, default_value = "out/study")]
     pub out: PathBuf,
+    /// Number of participants (default 6, as in the paper).
+    #[arg(long)]
+    pub participants: Option<u32>,
+    /// Study seed: orders, skills and noise all derive from it.
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Measured repetitions per condition (default 2).
+    #[arg(long)]
+    pub reps: Option<u32>,
+    /// Comma-separated techniques (default joint,proxy,particle; direct is optional).
+    #[arg(long)]
+    pub techniques: Option<String>,
+    /// Comma-separated tasks, in the fixed order they run (default positioning,sorting,steering).
+    #[arg(long)]
+    pub tasks: Option<String>,
+    /// Skip the unmeasured practice trial before each condition.
+    #[arg(long)]
+    pub no_practice: bool,
+    /// Override every task's time limit (seconds); a trial past it counts as failed.
+    #[arg(long, value_parser = parse_seconds)]
+    pub time_limit: Option<f32>,
+    /// Reproduce a run from its run.toml (flags given as well override it).
+    #[arg(long)]
+    pub from: Option<PathBuf>,
+    /// Complete the missing trials of an interrupted run folder.
+    #[arg(long, conflicts_with = "from")]
+    pub resume: Option<PathBuf>,
+    /// Run only shard i of n (0-based), e.g. for a Slurm job array; combine with `study merge`.
+    #[arg(long)]
+    pub shard: Option<String>,
+    /// Worker threads (0 = one per core). Results do not depend on it.
+    #[arg(long, default_value_t = 0)]
+    pub jobs: usize,
+    /// Replay recorded gesture files from this folder instead of scripted participants.
+    #[arg(long)]
+    pub replay: Option<PathBuf>,
+    /// No progress bar.
+    #[arg(long)]
+    pub no_progress: bool,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum StudyAction {
+    /// Combine shard folders into one run (trials in order, summary, figure).
+    Merge {
+        /// Output folder.
+        out: PathBuf,
+        /// Shard folders.
+        #[arg(required = true)]
+        dirs: Vec<PathBuf>,
+    },
 }
 
 #[derive(Debug, Args)]
@@ -121,9 +186,20 @@ pub fn main() -> ExitCode {
         Ok(code) => code,
         Err(e) => {
             eprintln!("surfacelab: error: {e:#}");
-            ExitCode::FAILURE
+            if is_bad_input(&e) { ExitCode::from(EXIT_USAGE) } else { ExitCode::FAILURE }
         }
     }
+}
+
+/// Bad input (a scene, gesture or config file) exits 2, like a usage error.
+fn is_bad_input(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| {
+        c.is::<crate::scene::SceneError>()
+            || c.is::<crate::surface::GestureError>()
+            || c.is::<crate::technique::ConfigError>()
+            || c.is::<crate::study::StudyError>()
+            || matches!(c.downcast_ref::<crate::session::SessionError>(), Some(crate::session::SessionError::Config(_)))
+    })
 }
 
 fn init_tracing() {
@@ -134,11 +210,11 @@ fn init_tracing() {
 
 fn run(command: Command) -> anyhow::Result<ExitCode> {
     match command {
-        Command::Doctor => doctor::run(),
+        Command::Doctor => Ok(doctor::run()),
         Command::Demo(_) if !doctor::has_display() => headless_main(),
         Command::Demo(_) => Ok(not_yet("demo", "the desktop demo")),
-        Command::Run(_) => Ok(not_yet("run", "the interaction techniques")),
-        Command::Study(_) => Ok(not_yet("study", "the study harness")),
+        Command::Run(args) => run::run(&args),
+        Command::Study(args) => study::run(&args),
         Command::Screenshot(_) => Ok(not_yet("screenshot", "the wgpu renderer")),
         Command::Contact(_) => Ok(not_yet("contact", "the 2D contact module")),
         Command::Tradeoff(_) => Ok(not_yet("tradeoff", "the accuracy-versus-time report")),
@@ -149,7 +225,7 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
 /// README's main command is useful on a server or in CI.
 fn headless_main() -> anyhow::Result<ExitCode> {
     eprintln!("surfacelab: no display, so no demo window; running the headless job instead");
-    doctor::run()?;
+    doctor::run();
     for task in ["positioning", "sorting", "steering"] {
         let scene = crate::scene::load(task)?;
         let mut world = crate::world::World::new(&scene);

@@ -115,6 +115,11 @@ pub struct ObjectFile {
     pub rotation_deg: Option<[f32; 3]>,
     #[serde(default)]
     pub body: Option<BodyKindFile>,
+    /// Linear and angular velocity damping (1/s): rolling resistance for balls.
+    #[serde(default)]
+    pub linear_damping: Option<f32>,
+    #[serde(default)]
+    pub angular_damping: Option<f32>,
     /// Repeat this object `count` times along `step` (for the gather scene's
     /// many small objects): object i sits at position + i·step.
     #[serde(default)]

@@ -178,6 +178,9 @@ pub struct ObjectSpec {
     pub position: Vec3,
     pub rotation: Quat,
     pub body: BodyKind,
+    /// Velocity damping (1/s); angular damping is a ball's rolling resistance.
+    pub linear_damping: f32,
+    pub angular_damping: f32,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -1,5 +1,5 @@
 //! From TOML text to a validated [`Scene`]. Input is cleaned once, here, so
-//! everything downstream can trust it (Box2D's `b2ComputeHull` habit).
+//! everything downstream can trust it (a habit taken from Box2D).
 
 use super::effects::EffectSet;
 use super::error::SceneError;
@@ -21,7 +21,7 @@ pub fn resolve_path(name_or_path: &str) -> Result<PathBuf, SceneError> {
     if direct.is_file() {
         return Ok(direct);
     }
-    let file = if name_or_path.ends_with(".toml") {
+    let file = if Path::new(name_or_path).extension().is_some_and(|e| e.eq_ignore_ascii_case("toml")) {
         name_or_path.to_string()
     } else {
         format!("{name_or_path}.toml")
@@ -285,6 +285,8 @@ impl Checker<'_> {
                 position,
                 rotation,
                 body,
+                linear_damping: self.num(&span, &f("linear_damping"), o.linear_damping.unwrap_or(0.0), 0.0, 100.0)?,
+                angular_damping: self.num(&span, &f("angular_damping"), o.angular_damping.unwrap_or(0.0), 0.0, 100.0)?,
             });
         }
         Ok(())

@@ -7,6 +7,7 @@ use glam::Vec3;
 /// that undeclared effects are really off; benchmarks build the same scene
 /// with [`EffectSet::all`] to measure what ignoring the declaration costs.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[allow(clippy::struct_excessive_bools)] // one switch per effect, read by tests
 pub struct WorldConfig {
     pub effects: EffectSet,
     pub gravity: Vec3,

@@ -31,8 +31,7 @@ impl Layer {
     pub fn groups(self) -> InteractionGroups {
         let scene = Group::GROUP_1 | Group::GROUP_2;
         let filter = match self {
-            Layer::Environment => scene | Group::GROUP_3 | Group::GROUP_4,
-            Layer::Object => scene | Group::GROUP_3 | Group::GROUP_4,
+            Layer::Environment | Layer::Object => scene | Group::GROUP_3 | Group::GROUP_4,
             // Proxies touch the scene and each other (two fingers can pinch).
             Layer::Proxy => scene | Group::GROUP_3,
             // Particles touch the scene only.

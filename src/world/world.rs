@@ -115,6 +115,8 @@ impl World {
         for (i, o) in scene.objects.iter().enumerate() {
             let builder = match o.body {
                 BodyKind::Dynamic => RigidBodyBuilder::dynamic()
+                    .linear_damping(o.linear_damping)
+                    .angular_damping(o.angular_damping)
                     .can_sleep(config.sleeping)
                     .ccd_enabled(config.ccd_substeps > 0),
                 BodyKind::Fixed => RigidBodyBuilder::fixed(),
@@ -134,6 +136,9 @@ impl World {
             objects.push(ObjectSlot { body, collider, active: true });
         }
 
+        // Build the query structures now: a contact on the very first frame
+        // must be able to ray-cast onto the scene before anything has stepped.
+        physics.detect_collisions(&(), &());
         World { physics, config, scene: scene.clone(), objects, time: 0.0, stats: WorldStats::default(), last: StepStats::default() }
     }
 
@@ -302,6 +307,7 @@ impl World {
                 b.set_angvel(Vec3::ZERO, true);
             }
         }
+        self.physics.detect_collisions(&(), &());
     }
 
     /// Puts one object at a pose, at rest (a steering restart).
@@ -324,6 +330,16 @@ impl World {
         let eye = self.eye();
         let dir = (table_point.extend(0.0) - eye).normalize_or(Vec3::NEG_Z);
         (eye, dir)
+    }
+
+    /// Where a world point appears on the display (= the table plane, =
+    /// the contact image): the camera ray through it meets z = 0 there.
+    /// The top of a tall object far from the centre appears displaced
+    /// outward, and that is where a user touches to press on it.
+    pub fn screen_point(&self, p: Vec3) -> Vec2 {
+        let eye = self.eye();
+        let t = eye.z / (eye.z - p.z).max(1e-4);
+        (eye + (p - eye) * t).truncate()
     }
 
     /// Casts a ray against the scene only (table, walls, objects; never

@@ -1,0 +1,229 @@
+//! Contact geometry timings against vertex count: the O(m + n) entrance
+//! block (build, query, both), the one-shot walk that answers without
+//! storing the block, the O(m·n) brute force, the cached block's point
+//! queries and parry2d's GJK/EPA `contact`, on overlapping pairs of n-gons
+//! (n = 8 … 4096). After criterion's own report a summary prints the median
+//! per size, the log-log slopes and the ratios the brief asks for:
+//!
+//! ```text
+//! cargo bench --bench contact            # full run, ~2 minutes on 2 cores
+//! cargo bench --bench contact -- build   # criterion filter, summary of what ran
+//! ```
+
+use std::collections::BTreeMap;
+use std::hint::black_box;
+use std::sync::Mutex;
+use std::time::{Duration, Instant};
+
+use criterion::{BenchmarkId, Criterion};
+use parry2d_f64::math::{Pose, Vector};
+use parry2d_f64::query;
+use parry2d_f64::shape::ConvexPolygon as ParryPolygon;
+use surfacelab::contact::{
+    CachedBlock, CircleFit, ConvexPolygon, EntranceBlock, Relation, Vec2, brute_force_report,
+    contact_report, discretize_circle, log_log_slope,
+};
+
+const SIZES: [usize; 10] = [8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
+/// The brute force is quadratic: 4096² pairs take ~0.1 s per call.
+const BRUTE_MAX: usize = 1024;
+
+/// Nanoseconds per call of every measurement criterion made, by method and
+/// size; the summary takes the median.
+static SAMPLES: Mutex<BTreeMap<(&'static str, usize), Vec<f64>>> = Mutex::new(BTreeMap::new());
+
+fn record(method: &'static str, n: usize, ns: f64) {
+    if let Ok(mut samples) = SAMPLES.lock() {
+        samples.entry((method, n)).or_default().push(ns);
+    }
+}
+
+/// Two overlapping n-gons whose edges are never parallel.
+fn pair(n: usize) -> (ConvexPolygon, ConvexPolygon) {
+    let a = discretize_circle(Vec2::ZERO, 1.0, n, CircleFit::Inscribed, 0.1).expect("n-gon");
+    let b =
+        discretize_circle(Vec2::new(0.6, 0.3), 1.0, n, CircleFit::Inscribed, 0.37).expect("n-gon");
+    (a, b)
+}
+
+fn parry(p: &ConvexPolygon) -> ParryPolygon {
+    let pts = p.vertices().iter().map(|v| Vector::new(v.x, v.y)).collect();
+    ParryPolygon::from_convex_polyline_unmodified(pts).expect("convex")
+}
+
+fn bench(
+    c: &mut Criterion,
+    method: &'static str,
+    sizes: &[usize],
+    mut make: impl FnMut(usize) -> Box<dyn FnMut() -> f64>,
+) {
+    let mut group = c.benchmark_group(format!("contact/{method}"));
+    for &n in sizes {
+        let mut f = make(n);
+        group.bench_function(BenchmarkId::from_parameter(n), |b| {
+            b.iter_custom(|iters| {
+                let start = Instant::now();
+                for _ in 0..iters {
+                    black_box(f());
+                }
+                let elapsed = start.elapsed();
+                record(method, n, elapsed.as_secs_f64() * 1e9 / iters.max(1) as f64);
+                elapsed
+            });
+        });
+    }
+    group.finish();
+}
+
+fn benches(c: &mut Criterion) {
+    bench(c, "build", &SIZES, |n| {
+        let (a, b) = pair(n);
+        Box::new(move || {
+            EntranceBlock::new(black_box(&a), black_box(&b))
+                .edges()
+                .len() as f64
+        })
+    });
+    bench(c, "query", &SIZES, |n| {
+        let (a, b) = pair(n);
+        let block = EntranceBlock::new(&a, &b);
+        Box::new(move || black_box(&block).report().distance)
+    });
+    bench(c, "build+query", &SIZES, |n| {
+        let (a, b) = pair(n);
+        Box::new(move || {
+            EntranceBlock::new(black_box(&a), black_box(&b))
+                .report()
+                .distance
+        })
+    });
+    bench(c, "one_shot", &SIZES, |n| {
+        let (a, b) = pair(n);
+        Box::new(move || contact_report(black_box(&a), black_box(&b)).distance)
+    });
+    let brute_sizes: Vec<usize> = SIZES.iter().copied().filter(|&n| n <= BRUTE_MAX).collect();
+    bench(c, "brute_force", &brute_sizes, |n| {
+        let (a, b) = pair(n);
+        Box::new(move || brute_force_report(black_box(&a), black_box(&b)).distance)
+    });
+    bench(c, "cached_relation", &SIZES, |n| {
+        let (a, b) = pair(n);
+        let cached = CachedBlock::new(&a, &b);
+        let mut k = 0u32;
+        Box::new(move || {
+            // Overlapping translations around the start: O(log n) each.
+            k = k.wrapping_add(1);
+            let t = Vec2::new(0.1 * f64::from(k % 7), 0.1 * f64::from(k % 5));
+            f64::from(u8::from(
+                cached.relation(black_box(t)) == Relation::Intersecting,
+            ))
+        })
+    });
+    bench(c, "cached_distance_separated", &SIZES, |n| {
+        let (a, b) = pair(n);
+        let cached = CachedBlock::new(&a, &b);
+        let mut k = 0u32;
+        Box::new(move || {
+            k = k.wrapping_add(1);
+            let angle = f64::from(k % 64) * 0.098;
+            cached.signed_distance(black_box(Vec2::new(
+                0.6 + 4.0 * angle.cos(),
+                0.3 + 4.0 * angle.sin(),
+            )))
+        })
+    });
+    bench(c, "parry_contact", &SIZES, |n| {
+        let (a, b) = pair(n);
+        let (pa, pb) = (parry(&a), parry(&b));
+        let id = Pose::identity();
+        Box::new(move || {
+            query::contact(&id, black_box(&pa), &id, black_box(&pb), 0.0)
+                .ok()
+                .flatten()
+                .map_or(f64::NAN, |contact| contact.dist)
+        })
+    });
+}
+
+fn median(v: &[f64]) -> f64 {
+    let mut v = v.to_vec();
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// The table, slopes and ratios of whatever ran.
+fn summary() {
+    let Ok(samples) = SAMPLES.lock() else { return };
+    if samples.is_empty() {
+        return;
+    }
+    let medians: BTreeMap<(&str, usize), f64> =
+        samples.iter().map(|(&k, v)| (k, median(v))).collect();
+    let methods = [
+        "build",
+        "query",
+        "build+query",
+        "one_shot",
+        "brute_force",
+        "cached_relation",
+        "cached_distance_separated",
+        "parry_contact",
+    ];
+    println!("\ncontact summary: median ns per call, overlapping n-gon pairs (m = n)");
+    print!("{:>27}", "n");
+    for n in SIZES {
+        print!("{n:>10}");
+    }
+    println!("{:>12}{:>12}", "slope all", "slope n≥64");
+    for method in methods {
+        let row: Vec<(f64, f64)> = SIZES
+            .iter()
+            .filter_map(|&n| medians.get(&(method, n)).map(|&t| (n as f64, t)))
+            .collect();
+        if row.is_empty() {
+            continue;
+        }
+        print!("{method:>27}");
+        for n in SIZES {
+            match medians.get(&(method, n)) {
+                Some(t) => print!("{t:>10.0}"),
+                None => print!("{:>10}", "-"),
+            }
+        }
+        let large: Vec<(f64, f64)> = row.iter().copied().filter(|&(n, _)| n >= 64.0).collect();
+        let fmt = |s: Option<f64>| s.map_or_else(|| "-".to_owned(), |s| format!("{s:.2}"));
+        println!(
+            "{:>12}{:>12}",
+            fmt(log_log_slope(&row)),
+            fmt(log_log_slope(&large))
+        );
+    }
+    let ratio = |slow: &str, fast: &str, n: usize| {
+        Some(medians.get(&(slow, n))? / medians.get(&(fast, n))?)
+    };
+    if let Some(r) = ratio("brute_force", "build+query", 256) {
+        println!("brute force / entrance block (build+query) at n = 256: {r:.1}x (goal >= 10x)");
+    }
+    for n in [8, 16, 64, 256, 1024, 4096] {
+        let goal = if n == 64 { " (goal >= 2x)" } else { "" };
+        if let (Some(one), Some(both)) = (
+            ratio("parry_contact", "one_shot", n),
+            ratio("parry_contact", "build+query", n),
+        ) {
+            println!(
+                "parry2d contact / ours at n = {n}: one-shot {one:.2}x{goal}, stored block build+query {both:.2}x"
+            );
+        }
+    }
+}
+
+fn main() {
+    let mut c = Criterion::default()
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(200))
+        .measurement_time(Duration::from_millis(600))
+        .configure_from_args();
+    benches(&mut c);
+    c.final_summary();
+    summary();
+}

@@ -1,0 +1,10 @@
+//! One live pipeline: synthetic hands → contact image → vision → technique →
+//! world → goal. `run`, `study`, `screenshot`, the demo, the benchmarks and
+//! the tests all drive this same loop, so they cannot drift apart.
+
+mod report;
+#[allow(clippy::module_inception)]
+mod session;
+
+pub use report::{ObjectReport, RunReport, StageMeans};
+pub use session::{Session, SessionError, SessionOptions, StageTimes};

@@ -1,0 +1,127 @@
+//! The JSON report of one headless run (`surfacelab run --report`).
+
+use super::Session;
+use crate::goal::Progress;
+use serde::Serialize;
+
+/// Mean time per stage, µs.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct StageMeans {
+    pub rasterize_us: f64,
+    pub vision_us: f64,
+    pub technique_us: f64,
+    pub step_us: f64,
+    pub total_us: f64,
+}
+
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct ObjectReport {
+    pub name: String,
+    pub position: [f32; 3],
+    /// Quaternion x, y, z, w.
+    pub rotation: [f32; 4],
+    pub linvel: [f32; 3],
+    /// False once it vanished (placed on its positioning target).
+    pub active: bool,
+}
+
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Completion {
+    /// The scene's goal was met.
+    pub complete: bool,
+    pub completed_at_s: Option<f64>,
+    pub placed: usize,
+    pub total: usize,
+    pub waypoints_passed: usize,
+    pub restarts: u32,
+}
+
+impl From<Progress> for Completion {
+    fn from(p: Progress) -> Self {
+        Completion {
+            complete: p.complete,
+            completed_at_s: p.completed_at,
+            placed: p.placed,
+            total: p.total,
+            waypoints_passed: p.waypoints_passed,
+            restarts: p.restarts,
+        }
+    }
+}
+
+/// Everything `run` reports. Field names are a contract (README, "Report JSON").
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct RunReport {
+    pub format: &'static str,
+    pub version: String,
+    pub scene: String,
+    pub technique: String,
+    pub feedback: bool,
+    pub gesture: String,
+    pub steps: u64,
+    pub sim_time_s: f64,
+    pub wall_time_s: f64,
+    pub objects: Vec<ObjectReport>,
+    /// Highest speed of any scene object (m/s), before the speed cap.
+    pub max_speed: f32,
+    /// Deepest contact penetration between scene bodies (m).
+    pub max_penetration: f32,
+    /// Steps after which some body state was NaN/inf.
+    pub nan_count: u64,
+    /// Times a speed had to be capped.
+    pub speed_caps: u64,
+    pub completion: Completion,
+    pub stage_means_us: StageMeans,
+    pub max_contacts: usize,
+    pub max_technique_bodies: usize,
+}
+
+impl RunReport {
+    pub fn from_session(session: &Session, feedback: bool, gesture: &str, wall_time_s: f64) -> RunReport {
+        let w = session.world();
+        let scene = session.scene();
+        let objects = scene
+            .objects
+            .iter()
+            .enumerate()
+            .map(|(i, o)| {
+                let p = w.object_pose(i);
+                ObjectReport {
+                    name: o.name.clone(),
+                    position: p.position.to_array(),
+                    rotation: p.rotation.to_array(),
+                    linvel: p.linvel.to_array(),
+                    active: p.active,
+                }
+            })
+            .collect();
+        let m = session.mean_times();
+        let stats = w.stats();
+        RunReport {
+            format: "surfacelab-run-report",
+            version: env!("CARGO_PKG_VERSION").to_string(),
+            scene: scene.name.clone(),
+            technique: session.technique_kind().to_string(),
+            feedback,
+            gesture: gesture.to_string(),
+            steps: session.frames(),
+            sim_time_s: session.time(),
+            wall_time_s,
+            objects,
+            max_speed: stats.max_speed_seen,
+            max_penetration: stats.max_penetration_seen,
+            nan_count: stats.nan_count,
+            speed_caps: stats.speed_caps,
+            completion: session.progress().into(),
+            stage_means_us: StageMeans {
+                rasterize_us: m.rasterize_us,
+                vision_us: m.vision_us,
+                technique_us: m.technique_us,
+                step_us: m.step_us,
+                total_us: m.total_us(),
+            },
+            max_contacts: session.max_counts().contacts,
+            max_technique_bodies: session.max_counts().bodies,
+        }
+    }
+}

@@ -1,0 +1,250 @@
+//! [`Session`]: the frame loop. One frame = one fixed physics step: the
+//! surface camera and the simulation run at the same rate (60 Hz by default),
+//! which keeps replays exact.
+
+use crate::goal::{Progress, Tracker};
+use crate::scene::Scene;
+use crate::surface::{ContactImage, Gesture, Hand, RasterParams, Sensor, rasterize_into};
+use crate::technique::{ConfigError, Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use crate::vision::{Pipeline, VisionFrame, VisionParams};
+use crate::world::{World, WorldError};
+use std::time::Instant;
+
+#[derive(Debug, thiserror::Error)]
+pub enum SessionError {
+    #[error(transparent)]
+    Config(#[from] ConfigError),
+    #[error(transparent)]
+    World(#[from] WorldError),
+}
+
+/// How a session is set up beyond its scene and technique.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SessionOptions {
+    /// Technique parameters; `None` takes the defaults overridden by the
+    /// scene's `[technique]` table.
+    pub config: Option<TechniqueConfig>,
+    /// Contact-image resolution (default 640 × 480 over the whole table).
+    pub sensor_px: (u32, u32),
+    pub raster: RasterParams,
+    pub vision: VisionParams,
+    /// Measure contact penetration after every step (for reports; it reads
+    /// the narrow phase, so the study's throughput runs leave it off).
+    pub measure_penetration: bool,
+}
+
+impl Default for SessionOptions {
+    fn default() -> Self {
+        SessionOptions { config: None, sensor_px: (640, 480), raster: RasterParams::default(), vision: VisionParams::default(), measure_penetration: false }
+    }
+}
+
+/// Time spent per stage (µs).
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct StageTimes {
+    pub rasterize_us: f64,
+    pub vision_us: f64,
+    pub technique_us: f64,
+    pub step_us: f64,
+}
+
+impl StageTimes {
+    pub fn total_us(&self) -> f64 {
+        self.rasterize_us + self.vision_us + self.technique_us + self.step_us
+    }
+
+    fn add(&mut self, o: &StageTimes) {
+        self.rasterize_us += o.rasterize_us;
+        self.vision_us += o.vision_us;
+        self.technique_us += o.technique_us;
+        self.step_us += o.step_us;
+    }
+}
+
+/// A running scene under one technique.
+pub struct Session {
+    scene: Scene,
+    kind: TechniqueKind,
+    world: World,
+    technique: Box<dyn Technique>,
+    vision: Pipeline,
+    sensor: Sensor,
+    raster: RasterParams,
+    image: ContactImage,
+    frame: VisionFrame,
+    tracker: Tracker,
+    progress: Progress,
+    last: StageTimes,
+    sums: StageTimes,
+    frames: u64,
+    max_counts: TechniqueCounts,
+    measure_penetration: bool,
+}
+
+impl std::fmt::Debug for Session {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Session").field("scene", &self.scene.name).field("technique", &self.kind).field("frames", &self.frames).finish_non_exhaustive()
+    }
+}
+
+impl Session {
+    pub fn new(scene: &Scene, kind: TechniqueKind, options: SessionOptions) -> Result<Session, SessionError> {
+        let config = match options.config {
+            Some(c) => c,
+            None => TechniqueConfig::from_scene_table(&scene.technique, &scene.origin)?,
+        };
+        let effects = scene.effects.union(kind.required_effects());
+        let world = World::with_effects(scene, effects);
+        let sensor = Sensor::new(options.sensor_px.0, options.sensor_px.1, scene.table.width, scene.table.depth);
+        let mut vision_params = options.vision;
+        vision_params.stride = config.particle_stride;
+        vision_params.edge_threshold = config.particle_edge_threshold;
+        Ok(Session {
+            scene: scene.clone(),
+            kind,
+            world,
+            technique: kind.build(config),
+            vision: Pipeline::new(vision_params),
+            sensor,
+            raster: options.raster,
+            image: ContactImage::new(sensor.width_px as usize, sensor.height_px as usize),
+            frame: VisionFrame::default(),
+            tracker: Tracker::new(scene),
+            progress: Progress::default(),
+            last: StageTimes::default(),
+            sums: StageTimes::default(),
+            frames: 0,
+            max_counts: TechniqueCounts::default(),
+            measure_penetration: options.measure_penetration,
+        })
+    }
+
+    /// One frame: draw the hands, see them, act, step, judge the goal.
+    pub fn step(&mut self, hands: &[Hand]) -> Result<Progress, SessionError> {
+        let t0 = Instant::now();
+        let measure = self.measure_penetration;
+        rasterize_into(hands, &self.sensor, &self.raster, &mut self.image);
+        let t1 = Instant::now();
+        self.frame = self.vision.process(&self.image);
+        let t2 = Instant::now();
+        let input = TechniqueInput { frame: &self.frame, sensor: &self.sensor, dt: self.world.dt() };
+        self.technique.apply(&input, &mut self.world)?;
+        let t3 = Instant::now();
+        self.world.step();
+        self.technique.after_step(&mut self.world);
+        if measure {
+            self.world.measure_penetration();
+        }
+        let t4 = Instant::now();
+        self.progress = self.tracker.update(&mut self.world);
+        self.last = StageTimes {
+            rasterize_us: (t1 - t0).as_secs_f64() * 1e6,
+            vision_us: (t2 - t1).as_secs_f64() * 1e6,
+            technique_us: (t3 - t2).as_secs_f64() * 1e6,
+            step_us: (t4 - t3).as_secs_f64() * 1e6,
+        };
+        self.sums.add(&self.last);
+        self.frames += 1;
+        let c = self.technique.counts();
+        self.max_counts.contacts = self.max_counts.contacts.max(c.contacts);
+        self.max_counts.bodies = self.max_counts.bodies.max(c.bodies);
+        self.max_counts.joints = self.max_counts.joints.max(c.joints);
+        Ok(self.progress)
+    }
+
+    /// Replays a gesture from the current time up to `until` seconds
+    /// (gesture time 0 = session time 0), one frame per step.
+    pub fn replay_until(&mut self, gesture: &Gesture, until: f64) -> Result<Progress, SessionError> {
+        while self.time() + 0.5 * f64::from(self.world.dt()) < until {
+            let hands = gesture.sample(self.time());
+            self.step(&hands)?;
+        }
+        Ok(self.progress)
+    }
+
+    /// Removes the technique's bodies and puts every object back.
+    pub fn reset(&mut self) {
+        self.technique.clear(&mut self.world);
+        self.world.reset_objects();
+        self.vision.reset();
+        self.tracker = Tracker::new(&self.scene);
+        self.progress = Progress::default();
+    }
+
+    /// Simulated seconds.
+    pub fn time(&self) -> f64 {
+        self.world.time()
+    }
+
+    pub fn frames(&self) -> u64 {
+        self.frames
+    }
+
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    pub fn technique_kind(&self) -> TechniqueKind {
+        self.kind
+    }
+
+    pub fn world(&self) -> &World {
+        &self.world
+    }
+
+    pub fn world_mut(&mut self) -> &mut World {
+        &mut self.world
+    }
+
+    pub fn sensor(&self) -> &Sensor {
+        &self.sensor
+    }
+
+    pub fn image(&self) -> &ContactImage {
+        &self.image
+    }
+
+    pub fn frame(&self) -> &VisionFrame {
+        &self.frame
+    }
+
+    pub fn progress(&self) -> Progress {
+        self.progress
+    }
+
+    pub fn tracker(&self) -> &Tracker {
+        &self.tracker
+    }
+
+    pub fn feedback(&self) -> Feedback {
+        self.technique.feedback(&self.world)
+    }
+
+    pub fn counts(&self) -> TechniqueCounts {
+        self.technique.counts()
+    }
+
+    /// The largest counts seen over the session.
+    pub fn max_counts(&self) -> TechniqueCounts {
+        self.max_counts
+    }
+
+    pub fn config_mut(&mut self) -> &mut TechniqueConfig {
+        self.technique.config_mut()
+    }
+
+    pub fn last_times(&self) -> StageTimes {
+        self.last
+    }
+
+    /// Mean time per stage over all frames.
+    pub fn mean_times(&self) -> StageTimes {
+        let n = self.frames.max(1) as f64;
+        StageTimes {
+            rasterize_us: self.sums.rasterize_us / n,
+            vision_us: self.sums.vision_us / n,
+            technique_us: self.sums.technique_us / n,
+            step_us: self.sums.step_us / n,
+        }
+    }
+}

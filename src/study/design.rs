@@ -1,0 +1,321 @@
+//! The study design (who does what, in which order) and its expansion into
+//! trials.
+//!
+//! # Run order
+//!
+//! The paper (UIST 2008, "User study"): tasks in the same order for everyone;
+//! technique order counterbalanced across participants with a Latin square;
+//! "two main phases (with visual feedback of the input and without)",
+//! counterbalanced across participants. We read "phases" literally, so the
+//! loops nest, outermost first:
+//!
+//! ```text
+//! participant (P1..Pn)
+//!   feedback phase   on-first for odd IDs, off-first for even IDs
+//!     task           fixed order, as listed in the design
+//!       technique    this participant's row of the balanced Latin square
+//!         practice trial (repetition 0, unmeasured), if enabled
+//!         measured trials (repetition 1..=reps)
+//! ```
+//!
+//! A participant keeps one technique order (their row of the square) in
+//! every task and both phases; the square balances orders across
+//! participants. Rejected alternative: feedback innermost (on and off
+//! alternating within each technique) — that is not "two phases", and
+//! switching feedback every few trials would blur its effect.
+//!
+//! # Counterbalancing
+//!
+//! Technique orders come from a Williams design ([`williams_square`]): every
+//! technique once in every position and every technique immediately followed
+//! by every other exactly once (n even), or by a doubled square with 2n rows
+//! where each such pair occurs twice (n odd). Participant `p` takes row
+//! `(p - 1) % rows`; with the paper's 3 techniques that is 6 rows — exactly
+//! its 6 participants. The feedback phase order is rotated by participant
+//! (`(p - 1) % levels`), which for on/off alternates.
+
+use super::error::StudyError;
+use super::trial::{Technique, TrialSpec};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+
+/// The paper's tasks, in the paper's (fixed) order.
+pub const DEFAULT_TASKS: [&str; 3] = ["positioning", "sorting", "steering"];
+
+/// A within-subject design: participants × tasks × techniques × feedback,
+/// each condition repeated.
+///
+/// Every field is written to `run.toml`, so `study --from run.toml` rebuilds
+/// the same trials with the same seeds. Missing fields in a hand-written file
+/// take the defaults (the paper's design).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct StudyDesign {
+    pub participants: u32,
+    /// In run order (the paper keeps it fixed for everyone).
+    pub tasks: Vec<String>,
+    /// The conditions the Latin square orders. Default: Joint, Proxy, Particle.
+    pub techniques: Vec<Technique>,
+    /// Feedback levels in the phase order of participant 1; default `[true, false]`.
+    pub feedback: Vec<bool>,
+    /// Measured trials per condition.
+    pub repetitions: u32,
+    /// One unmeasured practice trial per condition, before the measured ones.
+    pub practice: bool,
+    /// Study seed. TOML integers are signed, so at most `i64::MAX`.
+    pub seed: u64,
+    /// Overrides every task's time limit (seconds). Read by the trial runner,
+    /// not by the harness.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub time_limit_override: Option<f64>,
+    /// Runner settings that change results without being part of the design
+    /// proper (e.g. `frames`); recorded so `--from` reproduces the run. The
+    /// harness never reads them.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub settings: BTreeMap<String, toml::Value>,
+}
+
+impl Default for StudyDesign {
+    /// The paper's study: 6 participants, 3 tasks, Joint/Proxy/Particle,
+    /// feedback on and off, 2 measured repetitions after one practice trial.
+    fn default() -> Self {
+        StudyDesign {
+            participants: 6,
+            tasks: DEFAULT_TASKS.iter().map(|t| (*t).to_owned()).collect(),
+            techniques: vec![Technique::Joint, Technique::Proxy, Technique::Particle],
+            feedback: vec![true, false],
+            repetitions: 2,
+            practice: true,
+            seed: 2008,
+            time_limit_override: None,
+            settings: BTreeMap::new(),
+        }
+    }
+}
+
+impl StudyDesign {
+    /// Rejects designs that cannot be run or written to `run.toml`.
+    pub fn validate(&self) -> Result<(), StudyError> {
+        let fail = |m: String| Err(StudyError::Design(m));
+        if self.participants == 0 {
+            return fail("at least one participant is needed".into());
+        }
+        if self.tasks.is_empty() {
+            return fail("at least one task is needed".into());
+        }
+        if let Some(t) = self.tasks.iter().find(|t| t.trim().is_empty()) {
+            return fail(format!("empty task name {t:?}"));
+        }
+        if let Some(t) = self.tasks.iter().find(|t| t.chars().any(|c| c.is_control() || c == '"')) {
+            return fail(format!("task name {t:?} contains a quote or control character"));
+        }
+        if let Some(t) = first_duplicate(&self.tasks) {
+            return fail(format!("task {t:?} listed twice"));
+        }
+        if self.techniques.is_empty() {
+            return fail("at least one technique is needed".into());
+        }
+        if let Some(t) = first_duplicate(&self.techniques) {
+            return fail(format!("technique {t} listed twice"));
+        }
+        if self.feedback.is_empty() {
+            return fail("at least one feedback level is needed".into());
+        }
+        if first_duplicate(&self.feedback).is_some() {
+            return fail("a feedback level is listed twice".into());
+        }
+        if self.repetitions == 0 {
+            return fail("at least one repetition is needed".into());
+        }
+        if self.seed > i64::MAX as u64 {
+            return fail(format!("seed {} does not fit a TOML integer (max {})", self.seed, i64::MAX));
+        }
+        if let Some(limit) = self.time_limit_override
+            && !(limit.is_finite() && limit > 0.0)
+        {
+            return fail(format!("time limit must be a positive number of seconds, got {limit}"));
+        }
+        Ok(())
+    }
+
+    /// Rows of the technique square (n or 2n for n techniques).
+    pub fn square_rows(&self) -> usize {
+        williams_rows(self.techniques.len())
+    }
+
+    /// `None` when the participants fill whole squares and both phase orders
+    /// equally; otherwise a sentence for the user saying how many would.
+    pub fn balance_note(&self) -> Option<String> {
+        let k = lcm(self.square_rows().max(1), self.feedback.len().max(1));
+        (!(self.participants as usize).is_multiple_of(k)).then(|| {
+            format!(
+                "{} participants do not fill the counterbalancing: use a multiple of {k} \
+                 ({} technique orders x {} feedback orders)",
+                self.participants,
+                self.square_rows(),
+                self.feedback.len()
+            )
+        })
+    }
+
+    /// Technique order for a participant (1-based ID): a row of the square.
+    pub fn technique_order(&self, participant: u32) -> Vec<Technique> {
+        let square = williams_square(self.techniques.len());
+        if square.is_empty() {
+            return Vec::new();
+        }
+        let row = &square[(participant.saturating_sub(1) as usize) % square.len()];
+        row.iter().map(|&i| self.techniques[i]).collect()
+    }
+
+    /// Feedback phase order for a participant (1-based ID).
+    pub fn feedback_order(&self, participant: u32) -> Vec<bool> {
+        let mut order = self.feedback.clone();
+        if !order.is_empty() {
+            let k = (participant.saturating_sub(1) as usize) % order.len();
+            order.rotate_left(k);
+        }
+        order
+    }
+
+    /// Trials per participant, practice included.
+    pub fn trials_per_participant(&self) -> usize {
+        let per_condition = self.repetitions as usize + usize::from(self.practice);
+        self.tasks.len() * self.techniques.len() * self.feedback.len() * per_condition
+    }
+
+    pub fn trial_count(&self) -> usize {
+        self.participants as usize * self.trials_per_participant()
+    }
+
+    /// Every trial in run order (see the module docs for the nesting). A
+    /// trial's position in this list is its *trial index*, used by shards.
+    pub fn trials(&self) -> Vec<TrialSpec> {
+        let mut out = Vec::with_capacity(self.trial_count());
+        for participant in 1..=self.participants {
+            let techniques = self.technique_order(participant);
+            let mut order_index = 0u32;
+            for feedback in self.feedback_order(participant) {
+                for task in &self.tasks {
+                    for &technique in &techniques {
+                        let first_rep = u32::from(!self.practice);
+                        for repetition in first_rep..=self.repetitions {
+                            out.push(TrialSpec {
+                                participant,
+                                order_index,
+                                task: task.clone(),
+                                technique,
+                                feedback,
+                                repetition,
+                                practice: repetition == 0,
+                                seed: trial_seed(self.seed, participant, order_index),
+                            });
+                            order_index += 1;
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+}
+
+/// A slice of a design's trials, run into its own folder so that several
+/// machines (or processes) share a study: shard `i/n` holds the trials whose
+/// trial index `k` has `k % n == i`. `merge` puts the slices back together.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Shard {
+    pub index: u32,
+    pub count: u32,
+}
+
+impl Shard {
+    pub fn new(index: u32, count: u32) -> Result<Shard, StudyError> {
+        if count == 0 || index >= count {
+            return Err(StudyError::Design(format!("shard {index}/{count}: need 0 <= i < n")));
+        }
+        Ok(Shard { index, count })
+    }
+
+    /// The shard holding every trial (`0/1`).
+    pub const WHOLE: Shard = Shard { index: 0, count: 1 };
+
+    pub fn contains(self, trial_index: usize) -> bool {
+        trial_index % self.count as usize == self.index as usize
+    }
+}
+
+impl std::fmt::Display for Shard {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}/{}", self.index, self.count)
+    }
+}
+
+impl std::str::FromStr for Shard {
+    type Err = StudyError;
+
+    /// `i/n`, e.g. `0/4`.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let bad = || StudyError::Design(format!("shard {s:?}: expected i/n with 0 <= i < n, e.g. 0/4"));
+        let (i, n) = s.trim().split_once('/').ok_or_else(bad)?;
+        let i = i.trim().parse().map_err(|_| bad())?;
+        let n = n.trim().parse().map_err(|_| bad())?;
+        Shard::new(i, n)
+    }
+}
+
+/// The per-trial seed: `SplitMix64` (Steele et al. 2014) chained over the study
+/// seed, the participant and the order index. Hand-written rather than taken
+/// from `rand` so seeds never change with a dependency update.
+pub fn trial_seed(seed: u64, participant: u32, order_index: u32) -> u64 {
+    splitmix64(splitmix64(splitmix64(seed) ^ u64::from(participant)) ^ u64::from(order_index))
+}
+
+fn splitmix64(x: u64) -> u64 {
+    let mut z = x.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
+}
+
+fn williams_rows(n: usize) -> usize {
+    if n.is_multiple_of(2) { n } else { 2 * n }
+}
+
+/// A balanced Latin square (Williams 1949) over conditions `0..n`.
+///
+/// The first row is `0, 1, n-1, 2, n-2, ...`; row `i` adds `i` to it (mod n).
+/// For even `n` these n rows are balanced: each condition once per position,
+/// each ordered pair of conditions adjacent exactly once. For odd `n` no
+/// n-row square can be, so the n mirrored rows are appended (2n rows, each
+/// pair adjacent exactly twice). `n = 0` gives no rows; `n = 1` gives `[[0], [0]]`.
+pub fn williams_square(n: usize) -> Vec<Vec<usize>> {
+    if n == 0 {
+        return Vec::new();
+    }
+    let first: Vec<usize> = (0..n)
+        .map(|j| match j {
+            0 => 0,
+            j if j % 2 == 1 => j.div_ceil(2),
+            j => n - j / 2,
+        })
+        .collect();
+    let mut rows: Vec<Vec<usize>> = (0..n).map(|i| first.iter().map(|&c| (c + i) % n).collect()).collect();
+    if !n.is_multiple_of(2) {
+        let mirrored: Vec<Vec<usize>> = rows.iter().map(|r| r.iter().rev().copied().collect()).collect();
+        rows.extend(mirrored);
+    }
+    rows
+}
+
+fn first_duplicate<T: PartialEq>(items: &[T]) -> Option<&T> {
+    items.iter().enumerate().find(|(i, a)| items[..*i].contains(a)).map(|(_, a)| a)
+}
+
+fn lcm(a: usize, b: usize) -> usize {
+    fn gcd(a: usize, b: usize) -> usize {
+        if b == 0 { a } else { gcd(b, a % b) }
+    }
+    a / gcd(a, b) * b
+}

@@ -1,0 +1,45 @@
+//! The study layer's error: which file, and what was wrong with it.
+//!
+//! A failing *trial* is not an error here: it is recorded as a row (not
+//! completed, no time) and logged, and the study goes on.
+
+use std::path::{Path, PathBuf};
+
+#[derive(Debug, thiserror::Error)]
+pub enum StudyError {
+    /// The design cannot be run as given (no participants, duplicate technique, ...).
+    #[error("invalid study design: {0}")]
+    Design(String),
+    #[error("{}: {source}", path.display())]
+    Io { path: PathBuf, source: std::io::Error },
+    #[error("{}: {source}", path.display())]
+    Csv { path: PathBuf, source: csv::Error },
+    #[error("{}: {source}", path.display())]
+    TomlRead { path: PathBuf, source: toml::de::Error },
+    #[error("cannot write run file: {0}")]
+    TomlWrite(#[from] toml::ser::Error),
+    /// `--out` names a folder that already holds a run.
+    #[error("{} already holds a study run (trials.csv or run.toml); resume it with --resume or pick another folder", path.display())]
+    AlreadyExists { path: PathBuf },
+    /// A folder's contents do not belong to the design that should have made them.
+    #[error("{}: {message}", path.display())]
+    Mismatch { path: PathBuf, message: String },
+    #[error("merge: {0}")]
+    Merge(String),
+    #[error("{}: drawing the figure failed: {message}", path.display())]
+    Plot { path: PathBuf, message: String },
+}
+
+impl StudyError {
+    pub(crate) fn io(path: &Path) -> impl FnOnce(std::io::Error) -> StudyError + '_ {
+        move |source| StudyError::Io { path: path.to_owned(), source }
+    }
+
+    pub(crate) fn csv(path: &Path) -> impl FnOnce(csv::Error) -> StudyError + '_ {
+        move |source| StudyError::Csv { path: path.to_owned(), source }
+    }
+
+    pub(crate) fn mismatch(path: &Path, message: impl Into<String>) -> StudyError {
+        StudyError::Mismatch { path: path.to_owned(), message: message.into() }
+    }
+}

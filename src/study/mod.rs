@@ -1,0 +1,16 @@
+//! The study harness: counterbalanced designs (`design`), crash-safe resumable and shardable runs (`runner`, `output`), statistics (`summary`) and the Figure-9 plot (`figure`).
+
+pub mod design;
+pub mod error;
+pub mod figure;
+pub mod output;
+pub mod runner;
+pub mod summary;
+pub mod trial;
+
+pub use design::{DEFAULT_TASKS, Shard, StudyDesign, trial_seed, williams_square};
+pub use error::StudyError;
+pub use output::{COLUMNS, RunFile, TrialRow};
+pub use runner::{MergeOutcome, RunOptions, RunOutcome, merge, resume_study, run_study, write_report};
+pub use summary::{Stats, SummaryRow, describe, summarize, t_quantile_975};
+pub use trial::{Technique, TrialResult, TrialRunner, TrialSpec, UnknownTechnique};

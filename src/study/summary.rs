@@ -1,0 +1,174 @@
+//! `summary.csv`: completion time per task × technique × feedback.
+//!
+//! As in the paper ("each task twice ... to provide an average completion
+//! time for each condition"), a participant's measured repetitions of a
+//! condition are averaged first; mean, SD and the 95% confidence interval
+//! are then taken over participants (n = participants, df = n - 1), since
+//! repetitions by one person are not independent samples.
+//!
+//! Which trials count: measured ones (not practice) that have a time. A trial
+//! that ran out of time (`completed = false`) enters with the time the runner
+//! recorded for it — the time limit, a lower bound of the true time — so a
+//! condition nobody could finish still shows up; `completed` says how many
+//! did. A trial whose runner failed has no time and is counted in `failed`.
+
+use super::design::StudyDesign;
+use super::error::StudyError;
+use super::output::TrialRow;
+use super::trial::Technique;
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
+use std::path::Path;
+
+/// One line of `summary.csv`. Statistics that need more participants than
+/// there are (SD and CI need two) are empty.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct SummaryRow {
+    pub task: String,
+    pub technique: Technique,
+    pub feedback: bool,
+    /// Participants with at least one timed measured trial in this condition.
+    pub participants: u32,
+    /// Measured trials in this condition.
+    pub trials: u32,
+    pub completed: u32,
+    /// Trials whose runner failed (no time).
+    pub failed: u32,
+    pub mean_s: Option<f64>,
+    pub sd_s: Option<f64>,
+    pub ci95_low_s: Option<f64>,
+    pub ci95_high_s: Option<f64>,
+}
+
+/// Mean, sample SD (n - 1) and 95% CI half-width of a sample.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Stats {
+    pub n: usize,
+    pub mean: f64,
+    /// `None` for n < 2.
+    pub sd: Option<f64>,
+    /// `t(0.975, n-1) * sd / sqrt(n)`; `None` for n < 2.
+    pub ci95_half_width: Option<f64>,
+}
+
+/// `None` for an empty sample.
+pub fn describe(values: &[f64]) -> Option<Stats> {
+    let n = values.len();
+    if n == 0 {
+        return None;
+    }
+    let mean = values.iter().sum::<f64>() / n as f64;
+    if n < 2 {
+        return Some(Stats { n, mean, sd: None, ci95_half_width: None });
+    }
+    let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1) as f64;
+    let sd = var.sqrt();
+    let half = t_quantile_975((n - 1) as u32) * sd / (n as f64).sqrt();
+    Some(Stats { n, mean, sd: Some(sd), ci95_half_width: Some(half) })
+}
+
+/// The 0.975 quantile of Student's t with `df` degrees of freedom (the
+/// two-sided 95% critical value).
+///
+/// df 1..=30: exact values (to 1e-9) in a table. Above 30: the Cornish–Fisher
+/// expansion in 1/df about z = 1.959964 (Abramowitz & Stegun 26.7.5, first
+/// four terms), whose error there is below 2e-6 (checked against the
+/// incomplete-beta inverse). df = 0 gives infinity.
+pub fn t_quantile_975(df: u32) -> f64 {
+    const TABLE: [f64; 30] = [
+        12.706_204_736,
+        4.302_652_730,
+        3.182_446_305,
+        2.776_445_105,
+        2.570_581_836,
+        2.446_911_851,
+        2.364_624_252,
+        2.306_004_135,
+        2.262_157_163,
+        2.228_138_852,
+        2.200_985_160,
+        2.178_812_830,
+        2.160_368_656,
+        2.144_786_688,
+        2.131_449_546,
+        2.119_905_299,
+        2.109_815_578,
+        2.100_922_040,
+        2.093_024_054,
+        2.085_963_447,
+        2.079_613_845,
+        2.073_873_068,
+        2.068_657_610,
+        2.063_898_562,
+        2.059_538_553,
+        2.055_529_439,
+        2.051_830_516,
+        2.048_407_142,
+        2.045_229_642,
+        2.042_272_456,
+    ];
+    match df {
+        0 => f64::INFINITY,
+        1..=30 => TABLE[df as usize - 1],
+        _ => {
+            let z: f64 = 1.959_963_984_540_054;
+            let n = f64::from(df);
+            let (z3, z5, z7) = (z.powi(3), z.powi(5), z.powi(7));
+            z + (z3 + z) / (4.0 * n)
+                + (5.0 * z5 + 16.0 * z3 + 3.0 * z) / (96.0 * n * n)
+                + (3.0 * z7 + 19.0 * z5 + 17.0 * z3 - 15.0 * z) / (384.0 * n * n * n)
+        }
+    }
+}
+
+/// One summary row per task × technique × feedback of the design, in design
+/// order (tasks, then techniques as listed, then feedback levels as listed).
+/// Rows of other conditions are ignored.
+pub fn summarize(design: &StudyDesign, rows: &[TrialRow]) -> Vec<SummaryRow> {
+    let mut out = Vec::new();
+    for task in &design.tasks {
+        for &technique in &design.techniques {
+            for &feedback in &design.feedback {
+                let cell: Vec<&TrialRow> =
+                    rows.iter().filter(|r| !r.practice && r.task == *task && r.technique == technique && r.feedback == feedback).collect();
+                let mut per_participant: BTreeMap<u32, Vec<f64>> = BTreeMap::new();
+                for r in &cell {
+                    if let Some(t) = r.completion_time_s {
+                        per_participant.entry(r.participant).or_default().push(t);
+                    }
+                }
+                let means: Vec<f64> = per_participant.values().map(|ts| ts.iter().sum::<f64>() / ts.len() as f64).collect();
+                let stats = describe(&means);
+                let count = |f: fn(&TrialRow) -> bool| cell.iter().filter(|r| f(r)).count() as u32;
+                out.push(SummaryRow {
+                    task: task.clone(),
+                    technique,
+                    feedback,
+                    participants: means.len() as u32,
+                    trials: cell.len() as u32,
+                    completed: count(|r| r.completed),
+                    failed: count(|r| r.completion_time_s.is_none()),
+                    mean_s: stats.map(|s| s.mean),
+                    sd_s: stats.and_then(|s| s.sd),
+                    ci95_low_s: stats.and_then(|s| s.ci95_half_width.map(|h| s.mean - h)),
+                    ci95_high_s: stats.and_then(|s| s.ci95_half_width.map(|h| s.mean + h)),
+                });
+            }
+        }
+    }
+    out
+}
+
+pub fn write_summary(path: &Path, rows: &[SummaryRow]) -> Result<(), StudyError> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    for row in rows {
+        w.serialize(row).map_err(StudyError::csv(path))?;
+    }
+    let bytes = w.into_inner().map_err(|e| StudyError::io(path)(e.into_error()))?;
+    super::output::write_atomically(path, &bytes)
+}
+
+pub fn read_summary(path: &Path) -> Result<Vec<SummaryRow>, StudyError> {
+    let mut r = csv::Reader::from_path(path).map_err(StudyError::csv(path))?;
+    r.deserialize().collect::<Result<_, _>>().map_err(StudyError::csv(path))
+}

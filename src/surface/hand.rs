@@ -1,0 +1,406 @@
+//! Models of hands and tangibles lying on the glass.
+//!
+//! Each model is a union of [`Shape`]s in a local frame whose +y points
+//! along the fingers (away from the wrist) and whose +x points to the
+//! little-finger side of a right hand, placed on the table by a [`Pose`].
+//! Sizes are those of an adult hand as seen by a diffuse-illumination table:
+//! a fingertip touches with a patch about 1.5 cm across, a flat palm about
+//! 9 x 10 cm, a forearm about 25 x 7 cm.
+
+use super::shape::{Patch, Shape};
+
+/// What is touching the glass.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum HandKind {
+    /// `n` fingertips (1..=5) side by side; the fifth is the thumb, below
+    /// and to the left of the index. The pose is the middle of the row.
+    Fingertips(u8),
+    /// A right hand lying flat: palm, four fingers and thumb. The pose is
+    /// the palm centre.
+    FlatHand,
+    /// The side of the hand (little-finger edge), as used to sweep or
+    /// gather; it runs along the local y axis.
+    Edge,
+    /// A closed fist resting on the backs of the fingers.
+    Fist,
+    /// A forearm laid on the table, wrist towards +y.
+    Forearm,
+    /// A 30 x 3 cm ruler along the local x axis.
+    Ruler,
+    /// The rim of a cup's base, a ring 7.6 cm across.
+    Cup,
+    /// A credit-card sized card (8.6 x 5.4 cm).
+    Card,
+}
+
+impl HandKind {
+    /// Every kind with its file name, in the order the UI lists them.
+    pub const ALL: [Self; 8] = [
+        Self::Fingertips(1),
+        Self::FlatHand,
+        Self::Edge,
+        Self::Fist,
+        Self::Forearm,
+        Self::Ruler,
+        Self::Cup,
+        Self::Card,
+    ];
+
+    /// The name used in gesture files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Fingertips(_) => "fingertips",
+            Self::FlatHand => "flat_hand",
+            Self::Edge => "edge",
+            Self::Fist => "fist",
+            Self::Forearm => "forearm",
+            Self::Ruler => "ruler",
+            Self::Cup => "cup",
+            Self::Card => "card",
+        }
+    }
+
+    /// The kind called `name` in a gesture file (fingertip count apart).
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|k| k.name() == name)
+    }
+
+    /// A physical object rather than a body part.
+    pub fn is_tangible(self) -> bool {
+        matches!(self, Self::Ruler | Self::Cup | Self::Card)
+    }
+}
+
+/// Where a hand lies: position on the table (metres) and rotation of its
+/// local frame (radians, counter-clockwise; 0 = fingers pointing to +y).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Pose {
+    pub x: f32,
+    pub y: f32,
+    pub angle: f32,
+}
+
+/// One hand or tangible at one instant.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hand {
+    /// Identity chosen by whoever drives the hand (gesture file, mouse);
+    /// unrelated to the contact ids that vision assigns.
+    pub id: u32,
+    pub kind: HandKind,
+    pub pose: Pose,
+    /// How far apart fingers are: 0 = pressed together (two fingertips at
+    /// spread 0 merge into one blob), 1 = relaxed, 2 = wide. Only
+    /// `Fingertips` and `FlatHand` use it.
+    pub spread: f32,
+    /// Uniform size factor, 1 = the adult sizes of the module doc.
+    pub scale: f32,
+    /// 0..=1; the grey level of the touch is proportional to it. 0 is a
+    /// hand hovering out of sight.
+    pub pressure: f32,
+}
+
+/// Fingertip contact patch: 1.5 cm across, a little longer along the finger.
+const TIP_RADII: [f32; 2] = [0.0075, 0.009];
+/// Fingertip centre spacing at spread 0: less than the patch width, so
+/// neighbouring fingertips overlap and merge.
+const TIP_SPACING_CLOSED: f32 = 0.013;
+/// Extra fingertip spacing per unit of spread.
+const TIP_SPACING_PER_SPREAD: f32 = 0.012;
+/// Grey of the fingers of a flat hand relative to the palm: they press less.
+const FINGER_LEVEL: f32 = 0.85;
+
+impl Hand {
+    /// A relaxed hand of `kind` at `(x, y)`, angle 0, full pressure.
+    pub fn new(id: u32, kind: HandKind, x: f32, y: f32) -> Self {
+        Self {
+            id,
+            kind,
+            pose: Pose { x, y, angle: 0.0 },
+            spread: 1.0,
+            scale: 1.0,
+            pressure: 1.0,
+        }
+    }
+
+    pub fn with_angle(mut self, angle: f32) -> Self {
+        self.pose.angle = angle;
+        self
+    }
+
+    pub fn with_spread(mut self, spread: f32) -> Self {
+        self.spread = spread;
+        self
+    }
+
+    pub fn with_pressure(mut self, pressure: f32) -> Self {
+        self.pressure = pressure;
+        self
+    }
+
+    pub fn with_scale(mut self, scale: f32) -> Self {
+        self.scale = scale;
+        self
+    }
+
+    /// The footprint on the table, in table metres.
+    pub fn patches(&self) -> Vec<Patch> {
+        let mut out = Vec::new();
+        self.push_patches(&mut out);
+        out
+    }
+
+    /// Appends the footprint to `out` (the rasterizer reuses one buffer).
+    pub fn push_patches(&self, out: &mut Vec<Patch>) {
+        let start = out.len();
+        local_patches(self.kind, self.spread.max(0.0), out);
+        let s = self.scale.max(0.0);
+        for p in &mut out[start..] {
+            p.shape = scaled(p.shape, s).placed([self.pose.x, self.pose.y], self.pose.angle);
+        }
+    }
+}
+
+fn scaled(shape: Shape, s: f32) -> Shape {
+    let v = |p: [f32; 2]| [p[0] * s, p[1] * s];
+    match shape {
+        Shape::Ellipse {
+            centre,
+            radii,
+            angle,
+        } => Shape::Ellipse {
+            centre: v(centre),
+            radii: v(radii),
+            angle,
+        },
+        Shape::Capsule { a, b, radius } => Shape::Capsule {
+            a: v(a),
+            b: v(b),
+            radius: radius * s,
+        },
+        Shape::RoundedRect {
+            centre,
+            half,
+            angle,
+            corner,
+        } => Shape::RoundedRect {
+            centre: v(centre),
+            half: v(half),
+            angle,
+            corner: corner * s,
+        },
+        Shape::Ring {
+            centre,
+            radius,
+            half_width,
+        } => Shape::Ring {
+            centre: v(centre),
+            radius: radius * s,
+            half_width: half_width * s,
+        },
+    }
+}
+
+fn patch(shape: Shape, level: f32) -> Patch {
+    Patch { shape, level }
+}
+
+/// A capsule of `length` starting at `base`, pointing `angle` radians
+/// counter-clockwise from +y.
+fn digit(base: [f32; 2], angle: f32, length: f32, radius: f32) -> Shape {
+    let (sin, cos) = angle.sin_cos();
+    Shape::Capsule {
+        a: base,
+        b: [base[0] - sin * length, base[1] + cos * length],
+        radius,
+    }
+}
+
+/// The footprint of `kind` in its local frame at scale 1.
+fn local_patches(kind: HandKind, spread: f32, out: &mut Vec<Patch>) {
+    match kind {
+        HandKind::Fingertips(n) => {
+            let n = n.clamp(1, 5);
+            let fingers = n.min(4);
+            let spacing = TIP_SPACING_CLOSED + TIP_SPACING_PER_SPREAD * spread;
+            for i in 0..fingers {
+                let k = f32::from(i) - f32::from(fingers - 1) * 0.5;
+                // The middle fingers reach further than the outer ones.
+                let y = -0.003 * k * k;
+                out.push(patch(
+                    Shape::Ellipse {
+                        centre: [k * spacing, y],
+                        radii: TIP_RADII,
+                        angle: 0.0,
+                    },
+                    1.0,
+                ));
+            }
+            if n == 5 {
+                let x = -(1.5 * spacing + 0.012 + 0.01 * spread);
+                out.push(patch(
+                    Shape::Ellipse {
+                        centre: [x, -0.045],
+                        radii: [0.009, 0.011],
+                        angle: 0.5,
+                    },
+                    1.0,
+                ));
+            }
+        }
+        HandKind::FlatHand => {
+            out.push(patch(
+                Shape::RoundedRect {
+                    centre: [0.0, 0.0],
+                    half: [0.043, 0.048],
+                    angle: 0.0,
+                    corner: 0.02,
+                },
+                1.0,
+            ));
+            // Index, middle, ring, little: base x, length, radius.
+            let fingers = [
+                (-0.030, 0.075, 0.0085),
+                (-0.010, 0.082, 0.0085),
+                (0.010, 0.077, 0.0082),
+                (0.030, 0.060, 0.0075),
+            ];
+            for (i, (x, len, r)) in fingers.into_iter().enumerate() {
+                let splay = (1.5 - i as f32) * 0.12 * spread;
+                out.push(patch(digit([x, 0.040], splay, len, r), FINGER_LEVEL));
+            }
+            out.push(patch(
+                digit([-0.036, -0.022], 0.7 + 0.3 * spread, 0.055, 0.0095),
+                FINGER_LEVEL,
+            ));
+        }
+        HandKind::Edge => {
+            out.push(patch(
+                Shape::Capsule {
+                    a: [0.0, -0.05],
+                    b: [0.0, 0.03],
+                    radius: 0.012,
+                },
+                1.0,
+            ));
+            out.push(patch(
+                Shape::Capsule {
+                    a: [0.0, 0.03],
+                    b: [0.004, 0.09],
+                    radius: 0.008,
+                },
+                0.8,
+            ));
+        }
+        HandKind::Fist => out.push(patch(
+            Shape::RoundedRect {
+                centre: [0.0, 0.0],
+                half: [0.04, 0.0225],
+                angle: 0.0,
+                corner: 0.015,
+            },
+            1.0,
+        )),
+        HandKind::Forearm => {
+            out.push(patch(
+                Shape::Capsule {
+                    a: [0.0, -0.09],
+                    b: [0.0, 0.0],
+                    radius: 0.035,
+                },
+                1.0,
+            ));
+            out.push(patch(
+                Shape::Capsule {
+                    a: [0.0, 0.0],
+                    b: [0.0, 0.1],
+                    radius: 0.027,
+                },
+                0.9,
+            ));
+        }
+        HandKind::Ruler => out.push(patch(
+            Shape::RoundedRect {
+                centre: [0.0, 0.0],
+                half: [0.15, 0.015],
+                angle: 0.0,
+                corner: 0.001,
+            },
+            1.0,
+        )),
+        HandKind::Cup => out.push(patch(
+            Shape::Ring {
+                centre: [0.0, 0.0],
+                radius: 0.035,
+                half_width: 0.003,
+            },
+            1.0,
+        )),
+        HandKind::Card => out.push(patch(
+            Shape::RoundedRect {
+                centre: [0.0, 0.0],
+                half: [0.043, 0.027],
+                angle: 0.0,
+                corner: 0.003,
+            },
+            1.0,
+        )),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn extent(hand: &Hand) -> [[f32; 2]; 2] {
+        let mut lo = [f32::MAX; 2];
+        let mut hi = [f32::MIN; 2];
+        for p in hand.patches() {
+            let [a, b] = p.shape.bounds();
+            for k in 0..2 {
+                lo[k] = lo[k].min(a[k]);
+                hi[k] = hi[k].max(b[k]);
+            }
+        }
+        [lo, hi]
+    }
+
+    #[test]
+    fn sizes_are_realistic() {
+        let size = |kind| {
+            let [lo, hi] = extent(&Hand::new(1, kind, 0.0, 0.0));
+            [hi[0] - lo[0], hi[1] - lo[1]]
+        };
+        let tip = size(HandKind::Fingertips(1));
+        assert!((tip[0] - 0.015).abs() < 1e-4);
+        let hand = size(HandKind::FlatHand);
+        assert!(hand[0] > 0.09 && hand[0] < 0.16, "{hand:?}");
+        assert!(hand[1] > 0.16 && hand[1] < 0.21, "{hand:?}");
+        let arm = size(HandKind::Forearm);
+        assert!((arm[0] - 0.07).abs() < 1e-3 && (arm[1] - 0.252).abs() < 1e-3);
+        let ruler = size(HandKind::Ruler);
+        assert!((ruler[0] - 0.30).abs() < 1e-4 && (ruler[1] - 0.03).abs() < 1e-4);
+    }
+
+    #[test]
+    fn pose_moves_and_turns_the_footprint() {
+        let hand =
+            Hand::new(1, HandKind::Forearm, 0.2, -0.1).with_angle(std::f32::consts::FRAC_PI_2);
+        let [lo, hi] = extent(&hand);
+        // A quarter turn counter-clockwise lays the arm along x, wrist to -x.
+        assert!(hi[0] - lo[0] > 0.24 && hi[1] - lo[1] < 0.08);
+        assert!(
+            hand.patches()
+                .iter()
+                .any(|p| p.shape.distance([0.2, -0.1]) < 0.0)
+        );
+        assert!(lo[0] < 0.2 - 0.12);
+    }
+
+    #[test]
+    fn names_round_trip() {
+        for kind in HandKind::ALL {
+            assert_eq!(HandKind::from_name(kind.name()), Some(kind));
+        }
+        assert_eq!(HandKind::from_name("tentacle"), None);
+    }
+}

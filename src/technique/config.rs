@@ -1,0 +1,185 @@
+//! Every technique parameter in one place, with documented defaults, and
+//! overridable from a scene file's `[technique]` table.
+
+use serde::{Deserialize, Serialize};
+
+/// Shape of a proxy body.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ProxyShape {
+    /// A cube under the contact centre (the paper's default).
+    Cube,
+    Sphere,
+    /// A long capsule from the camera's near plane down to the touched
+    /// surface: it also collides with objects' sides at any height.
+    Capsule,
+}
+
+/// What grey level (pressure) changes, when enabled (the paper's own suggestion).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PressureMode {
+    Off,
+    /// Proxy and particle weight (press) scale with the grey level.
+    Weight,
+}
+
+/// Parameters of all four techniques. Units: kg, m, s, N.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct TechniqueConfig {
+    // Direct force
+    /// Force per unit of relative velocity per kg of the touched object (1/s):
+    /// a viscous drag towards the hand's velocity, i.e. kinetic friction only.
+    pub direct_gain: f32,
+
+    // Joint
+    /// Spring stiffness (N/m) between the contact and its anchor.
+    pub joint_stiffness: f32,
+    /// Spring damping (N·s/m).
+    pub joint_damping: f32,
+    /// Force (N) above which a joint breaks (its line disappears).
+    pub joint_break_force: f32,
+
+    // Proxy
+    pub proxy_shape: ProxyShape,
+    /// Proxy mass (kg): its inertia, i.e. how much momentum it hands to an
+    /// object per step while driven towards the contact. A finger is driven
+    /// by an arm, so this is large.
+    pub proxy_mass: f32,
+    /// Proxy weight (N): how hard it presses into what it stands on, which
+    /// sets the friction it can exert (the paper's "weight of a finger").
+    /// Applied through the body's gravity scale, so inertia and press are
+    /// separate knobs.
+    pub proxy_weight: f32,
+    /// Half size of a cube proxy / radius of a sphere or capsule proxy (m).
+    pub proxy_size: f32,
+    /// Static/kinetic friction coefficient of proxies and particles.
+    pub friction: f32,
+
+    // Particle
+    /// Take every n-th outline column and row (forwarded to the vision stage).
+    pub particle_stride: usize,
+    /// Sobel magnitude (grey levels per pixel) an outline pixel needs to
+    /// become a particle (forwarded to the vision stage's edge threshold).
+    pub particle_edge_threshold: f32,
+    /// Particle radius (m).
+    pub particle_radius: f32,
+    /// Particle mass (kg): inertia, as for proxies.
+    pub particle_mass: f32,
+    /// Particle weight (N): press per particle, as for proxies. Friction
+    /// therefore grows with contact area (the paper's observation).
+    pub particle_weight: f32,
+    /// At most this many particles per frame (the rest are dropped evenly).
+    pub particle_cap: usize,
+    /// Reuse particle bodies across frames instead of creating and destroying them.
+    pub particle_pooled: bool,
+    /// Long capsule particles that hug non-flat objects.
+    pub particle_capsules: bool,
+
+    // Shared limits
+    /// Contact speeds above this are clamped (m/s): lost tracking never flings.
+    pub max_contact_speed: f32,
+    pub pressure: PressureMode,
+}
+
+impl Default for TechniqueConfig {
+    fn default() -> Self {
+        TechniqueConfig {
+            direct_gain: 50.0,
+            joint_stiffness: 150.0,
+            joint_damping: 8.0,
+            joint_break_force: 25.0,
+            proxy_shape: ProxyShape::Cube,
+            proxy_mass: 1.0,
+            proxy_weight: 2.0,
+            proxy_size: 0.008,
+            friction: 1.5,
+            particle_stride: 3,
+            particle_edge_threshold: 12.0,
+            particle_radius: 0.003,
+            particle_mass: 0.2,
+            particle_weight: 0.08,
+            particle_cap: 4000,
+            particle_pooled: true,
+            particle_capsules: false,
+            max_contact_speed: 4.0,
+            pressure: PressureMode::Off,
+        }
+    }
+}
+
+/// A `[technique]` table that does not fit [`TechniqueConfig`].
+#[derive(Debug, thiserror::Error)]
+#[error("{origin}: [technique]: {message}")]
+pub struct ConfigError {
+    pub origin: String,
+    pub message: String,
+}
+
+impl TechniqueConfig {
+    /// Defaults overridden by a scene's `[technique]` table.
+    pub fn from_scene_table(table: &toml::Table, origin: &str) -> Result<Self, ConfigError> {
+        let cfg: TechniqueConfig = toml::Value::Table(table.clone())
+            .try_into()
+            .map_err(|e: toml::de::Error| ConfigError { origin: origin.to_string(), message: e.message().to_string() })?;
+        cfg.validate().map_err(|message| ConfigError { origin: origin.to_string(), message })?;
+        Ok(cfg)
+    }
+
+    /// Checks ranges; the message names the field.
+    pub fn validate(&self) -> Result<(), String> {
+        let pos = [
+            ("proxy_mass", self.proxy_mass),
+            ("proxy_size", self.proxy_size),
+            ("particle_radius", self.particle_radius),
+            ("particle_mass", self.particle_mass),
+            ("proxy_weight", self.proxy_weight),
+            ("particle_weight", self.particle_weight),
+            ("max_contact_speed", self.max_contact_speed),
+            ("joint_break_force", self.joint_break_force),
+        ];
+        for (name, v) in pos {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(format!("`{name}` must be a positive number, got {v}"));
+            }
+        }
+        let nonneg = [
+            ("direct_gain", self.direct_gain),
+            ("joint_stiffness", self.joint_stiffness),
+            ("joint_damping", self.joint_damping),
+            ("friction", self.friction),
+            ("particle_edge_threshold", self.particle_edge_threshold),
+        ];
+        for (name, v) in nonneg {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(format!("`{name}` must be a finite number >= 0, got {v}"));
+            }
+        }
+        if self.particle_stride == 0 {
+            return Err("`particle_stride` must be at least 1".into());
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scene_overrides_and_errors_name_the_field() {
+        let t: toml::Table = toml::from_str("proxy_mass = 0.5\nproxy_shape = \"sphere\"").expect("toml");
+        let c = TechniqueConfig::from_scene_table(&t, "x.toml").expect("valid");
+        assert_eq!(c.proxy_mass, 0.5);
+        assert_eq!(c.proxy_shape, ProxyShape::Sphere);
+        assert_eq!(c.particle_stride, TechniqueConfig::default().particle_stride);
+
+        let t: toml::Table = toml::from_str("proxy_mas = 0.5").expect("toml");
+        let e = TechniqueConfig::from_scene_table(&t, "x.toml").expect_err("unknown field");
+        assert!(e.to_string().contains("proxy_mas"), "{e}");
+        let t: toml::Table = toml::from_str("proxy_mass = -1.0").expect("toml");
+        let e = TechniqueConfig::from_scene_table(&t, "x.toml").expect_err("negative");
+        assert!(e.to_string().contains("proxy_mass"), "{e}");
+    }
+}

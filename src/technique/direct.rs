@@ -1,0 +1,85 @@
+//! Direct Force: a force at the touched point from the contact's velocity.
+//!
+//! The paper piloted it and dropped it: it models kinetic friction only, so
+//! an object keeps sliding after the hand stops and must be pushed back
+//! (overshoot). Kept as a baseline condition.
+
+use super::surface_point::{clamp_len, table_point, table_velocity};
+use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use crate::world::{World, WorldError};
+use glam::Vec3;
+
+#[derive(Debug)]
+pub struct DirectForce {
+    config: TechniqueConfig,
+    /// Points where a force was applied this frame (feedback: a cube each).
+    touched: Vec<Vec3>,
+    contacts: usize,
+}
+
+impl DirectForce {
+    pub fn new(config: TechniqueConfig) -> Self {
+        DirectForce { config, touched: Vec::new(), contacts: 0 }
+    }
+}
+
+impl Technique for DirectForce {
+    fn kind(&self) -> TechniqueKind {
+        TechniqueKind::Direct
+    }
+
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+        self.touched.clear();
+        self.contacts = input.frame.contacts.len();
+        for c in &input.frame.contacts {
+            let p = table_point(input.sensor, c.blob.centroid);
+            let Some(hit) = world.cast_contact_ray(p) else { continue };
+            let Some(obj) = hit.object else { continue };
+            // A contact that just appeared has no velocity yet.
+            if c.age_frames == 0 {
+                continue;
+            }
+            let v_hand = clamp_len(table_velocity(input.sensor, c.velocity_px, input.dt), self.config.max_contact_speed);
+            let h = world.object_body(obj);
+            let Some(body) = world.physics_mut().bodies.get_mut(h) else { continue };
+            if !body.is_dynamic() {
+                continue;
+            }
+            let v_point = body.velocity_at_point(hit.point);
+            // Kinetic friction only: drag the touched point toward the hand's
+            // tangential velocity; no static grip, no normal force.
+            let rel = v_hand.extend(0.0) - Vec3::new(v_point.x, v_point.y, 0.0);
+            let force = rel * (self.config.direct_gain * body.mass());
+            body.add_force_at_point(force, hit.point, true);
+            self.touched.push(hit.point);
+        }
+        Ok(())
+    }
+
+    fn after_step(&mut self, world: &mut World) {
+        // Forces are per step: clear what we added so they do not accumulate.
+        for i in 0..world.object_count() {
+            let h = world.object_body(i);
+            if let Some(b) = world.physics_mut().bodies.get_mut(h) {
+                b.reset_forces(false);
+                b.reset_torques(false);
+            }
+        }
+    }
+
+    fn feedback(&self, _world: &World) -> Feedback {
+        Feedback { lines: Vec::new(), cubes: self.touched.iter().map(|p| (*p, 0.006)).collect() }
+    }
+
+    fn counts(&self) -> TechniqueCounts {
+        TechniqueCounts { contacts: self.contacts, bodies: 0, joints: 0 }
+    }
+
+    fn clear(&mut self, _world: &mut World) {
+        self.touched.clear();
+    }
+
+    fn config_mut(&mut self) -> &mut TechniqueConfig {
+        &mut self.config
+    }
+}

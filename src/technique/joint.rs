@@ -1,0 +1,247 @@
+//! Joint: a spring from each contact to an anchor point on the touched object
+//! (`BumpTop` style: an off-centre anchor gives torque).
+//!
+//! The contact drives an invisible kinematic anchor body; a rapier spring
+//! joint (rest length 0) ties it to the object at the ray-cast point. A joint
+//! breaks when its spring force passes `joint_break_force`; that contact then
+//! grabs nothing until it lifts.
+//!
+//! Side collisions: joints have no collision of their own, so, as in the
+//! paper's study, contacts that grab nothing get a simple kinematic collision
+//! model — a kinematic prism shaped like the contact's convex hull, standing on
+//! the surface the contact started on. We chose kinematic colliders over a
+//! hand-written 2D push (the contact module's exit vector) because rapier then
+//! resolves side pushes, stacking and friction consistently with everything
+//! else; the 2D module remains the exact footprint test used elsewhere.
+
+use super::proxy::remove_body;
+use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
+use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use crate::vision::Contact;
+use crate::world::{Layer, World, WorldError};
+use glam::{Vec2, Vec3};
+use rapier3d::prelude::*;
+use std::collections::{BTreeMap, BTreeSet};
+
+/// Height of the kinematic side-collision prism (m).
+const PRISM_HEIGHT: f32 = 0.03;
+
+#[derive(Debug, Clone, Copy)]
+struct Grab {
+    anchor: RigidBodyHandle,
+    joint: ImpulseJointHandle,
+    object: usize,
+    /// Anchor point in the object's local frame.
+    local: Vec3,
+    /// Height the anchor moves at (the touched surface).
+    z: f32,
+    /// Hand velocity last frame (m/s), for a clean release.
+    v_hand: Vec2,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Pusher {
+    body: RigidBodyHandle,
+    collider: ColliderHandle,
+    base_z: f32,
+}
+
+#[derive(Debug)]
+pub struct JointTechnique {
+    config: TechniqueConfig,
+    grabs: BTreeMap<u32, Grab>,
+    pushers: BTreeMap<u32, Pusher>,
+    /// Contacts whose joint broke: they grab nothing until lifted.
+    broken: BTreeSet<u32>,
+    contacts: usize,
+}
+
+impl JointTechnique {
+    pub fn new(config: TechniqueConfig) -> Self {
+        JointTechnique { config, grabs: BTreeMap::new(), pushers: BTreeMap::new(), broken: BTreeSet::new(), contacts: 0 }
+    }
+
+    fn try_grab(&self, world: &mut World, target: Vec2, v_hand: Vec2) -> Option<Grab> {
+        let hit = world.cast_contact_ray(target)?;
+        let object = hit.object?;
+        let h = world.object_body(object);
+        let physics = world.physics_mut();
+        let body = physics.bodies.get(h)?;
+        if !body.is_dynamic() {
+            return None;
+        }
+        let local = body.position().inverse_transform_point(hit.point);
+        let anchor = physics.bodies.insert(RigidBodyBuilder::kinematic_position_based().translation(hit.point).build());
+        let joint = SpringJointBuilder::new(0.0, self.config.joint_stiffness, self.config.joint_damping)
+            .local_anchor1(Vec3::ZERO)
+            .local_anchor2(local)
+            .build();
+        let joint = physics.impulse_joints.insert(anchor, h, joint, true);
+        Some(Grab { anchor, joint, object, local, z: hit.point.z, v_hand })
+    }
+
+    fn release(world: &mut World, g: Grab) {
+        world.physics_mut().impulse_joints.remove(g.joint, true);
+        remove_body(world, g.anchor);
+        // No slingshot: the object leaves with the hand's velocity, not with
+        // energy stored in the stretched spring.
+        let h = world.object_body(g.object);
+        if let Some(b) = world.physics_mut().bodies.get_mut(h) {
+            let v = b.linvel();
+            let cap = g.v_hand.length() * 1.2 + 0.05;
+            let horiz = Vec2::new(v.x, v.y);
+            if horiz.length() > cap {
+                let c = clamp_len(horiz, cap);
+                b.set_linvel(Vec3::new(c.x, c.y, v.z), true);
+            }
+        }
+    }
+
+    fn update_pusher(&mut self, world: &mut World, c: &Contact, input: &TechniqueInput<'_>, screen: Vec2) {
+        let max_step = self.config.max_contact_speed * input.dt;
+        if let Some(p) = self.pushers.get(&c.id).copied() {
+            // The outline where it appears at the prism's mid-height.
+            let mid = p.base_z + PRISM_HEIGHT / 2.0;
+            let target = at_height(world, screen, mid);
+            let hull: Vec<Vec2> = c.blob.hull.iter().map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target).collect();
+            let shape = prism(&hull, input.sensor.metres_per_pixel());
+            let physics = world.physics_mut();
+            if let Some(b) = physics.bodies.get_mut(p.body) {
+                let cur = b.translation();
+                let next = cur.truncate() + clamp_len(target - cur.truncate(), max_step);
+                b.set_next_kinematic_translation(next.extend(p.base_z));
+            }
+            if let Some(col) = physics.colliders.get_mut(p.collider) {
+                col.set_shape(shape);
+            }
+        } else {
+            // Stand on the surface under the finger (beside an object, that
+            // is the surface next to it, not the object's side).
+            let base_z = support_below(world, screen).map_or(0.0, |h| h.point.z) + 0.001;
+            let mid = base_z + PRISM_HEIGHT / 2.0;
+            let target = at_height(world, screen, mid);
+            let hull: Vec<Vec2> = c.blob.hull.iter().map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target).collect();
+            let shape = prism(&hull, input.sensor.metres_per_pixel());
+            let physics = world.physics_mut();
+            let body = physics.bodies.insert(RigidBodyBuilder::kinematic_position_based().translation(target.extend(base_z)).build());
+            let col = ColliderBuilder::new(shape)
+                .friction(self.config.friction)
+                .collision_groups(Layer::Proxy.groups())
+                .build();
+            let collider = physics.colliders.insert_with_parent(col, body, &mut physics.bodies);
+            self.pushers.insert(c.id, Pusher { body, collider, base_z });
+        }
+    }
+}
+
+/// A prism over a contact hull (points relative to its centroid), from the
+/// surface up `PRISM_HEIGHT`; a small cylinder-like box for tiny hulls.
+fn prism(hull: &[Vec2], pixel: f32) -> SharedShape {
+    let mut pts = Vec::with_capacity(hull.len() * 2);
+    for p in hull {
+        pts.push(p.extend(0.0));
+        pts.push(p.extend(PRISM_HEIGHT));
+    }
+    if hull.len() >= 3
+        && let Some(s) = SharedShape::convex_hull(&pts)
+    {
+        return s;
+    }
+    let r = hull.iter().map(|p| p.length()).fold(pixel * 2.0, f32::max);
+    SharedShape::cuboid(r, r, PRISM_HEIGHT / 2.0)
+}
+
+impl Technique for JointTechnique {
+    fn kind(&self) -> TechniqueKind {
+        TechniqueKind::Joint
+    }
+
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+        world.require_joints("the Joint technique")?;
+        self.contacts = input.frame.contacts.len();
+        let dt = input.dt;
+        let max_step = self.config.max_contact_speed * dt;
+        let mut seen = BTreeSet::new();
+        for c in &input.frame.contacts {
+            seen.insert(c.id);
+            let target = table_point(input.sensor, c.blob.centroid);
+            let v_hand = clamp_len(table_velocity(input.sensor, c.velocity_px, dt), self.config.max_contact_speed);
+            if let Some(mut g) = self.grabs.get(&c.id).copied() {
+                g.v_hand = v_hand;
+                let object_body = world.object_body(g.object);
+                let goal = at_height(world, target, g.z);
+                let physics = world.physics_mut();
+                let cur = physics.bodies.get(g.anchor).map_or(Vec3::ZERO, RigidBody::translation);
+                let next = cur.truncate() + clamp_len(goal - cur.truncate(), max_step);
+                if let Some(a) = physics.bodies.get_mut(g.anchor) {
+                    a.set_next_kinematic_translation(next.extend(g.z));
+                }
+                // The spring's pull: stiffness × stretch. Past the break force it snaps.
+                let obj = physics.bodies.get(object_body).map(|b| b.position().transform_point(g.local));
+                let stretch = obj.map_or(0.0, |p| (p - next.extend(g.z)).length());
+                if self.config.joint_stiffness * stretch > self.config.joint_break_force || !world.is_active(g.object) {
+                    self.grabs.remove(&c.id);
+                    self.broken.insert(c.id);
+                    Self::release(world, g);
+                } else {
+                    self.grabs.insert(c.id, g);
+                }
+                continue;
+            }
+            if !self.broken.contains(&c.id)
+                && !self.pushers.contains_key(&c.id)
+                && let Some(g) = self.try_grab(world, target, v_hand)
+            {
+                self.grabs.insert(c.id, g);
+                continue;
+            }
+            self.update_pusher(world, c, input, target);
+        }
+        let lifted: Vec<u32> = self.grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
+        for id in lifted {
+            if let Some(g) = self.grabs.remove(&id) {
+                Self::release(world, g);
+            }
+        }
+        let lifted: Vec<u32> = self.pushers.keys().copied().filter(|id| !seen.contains(id)).collect();
+        for id in lifted {
+            if let Some(p) = self.pushers.remove(&id) {
+                remove_body(world, p.body);
+            }
+        }
+        self.broken.retain(|id| seen.contains(id));
+        Ok(())
+    }
+
+    fn feedback(&self, world: &World) -> Feedback {
+        let physics = world.physics();
+        let lines = self
+            .grabs
+            .values()
+            .filter_map(|g| {
+                let a = physics.bodies.get(g.anchor)?.translation();
+                let o = physics.bodies.get(world.object_body(g.object))?.position().transform_point(g.local);
+                Some((a, o))
+            })
+            .collect();
+        Feedback { lines, cubes: Vec::new() }
+    }
+
+    fn counts(&self) -> TechniqueCounts {
+        TechniqueCounts { contacts: self.contacts, bodies: self.grabs.len() + self.pushers.len(), joints: self.grabs.len() }
+    }
+
+    fn clear(&mut self, world: &mut World) {
+        for (_, g) in std::mem::take(&mut self.grabs) {
+            Self::release(world, g);
+        }
+        for (_, p) in std::mem::take(&mut self.pushers) {
+            remove_body(world, p.body);
+        }
+        self.broken.clear();
+    }
+
+    fn config_mut(&mut self) -> &mut TechniqueConfig {
+        &mut self.config
+    }
+}

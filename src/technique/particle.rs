@@ -1,0 +1,260 @@
+//! Particle proxies: one small body per high-gradient (Sobel) pixel.
+//!
+//! Each edge sample is ray-cast to the surface it touches, moved by the flow
+//! at that pixel projected onto that surface's tangent plane (paper, Figure
+//! 6), and pushed down by gravity. Particles never collide with each other.
+//!
+//! Two variants behave the same: the paper's own (`particle_pooled = false`),
+//! which creates every particle before the step and destroys it after, and a
+//! pooled one that keeps bodies and re-places them. Pooling keeps each body on
+//! a stable point of the outline (matched by position through the flow), so
+//! rapier's broad phase keeps its pairs; PLATFORM.md measured that pooling
+//! without such coherence is *slower* than create/destroy.
+
+use super::proxy::{gravity_scale_for, pressure_weight, remove_body};
+use super::surface_point::{clamp_len, project_flow, table_point};
+use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use crate::world::{Layer, World, WorldError};
+use glam::{Vec2, Vec3};
+use rapier3d::prelude::*;
+use std::collections::HashMap;
+
+/// Grid cell (px) for matching pooled particles to this frame's samples.
+const CELL: f32 = 4.0;
+/// A pooled particle is re-used for a sample within this many pixels of its
+/// flow-predicted position.
+const MATCH_PX: f32 = 3.0;
+
+#[derive(Debug, Clone, Copy)]
+struct Slot {
+    body: RigidBodyHandle,
+    /// Pixel position it sat on last frame.
+    px: [f32; 2],
+    active: bool,
+}
+
+#[derive(Debug)]
+pub struct ParticleTechnique {
+    config: TechniqueConfig,
+    /// Pooled bodies (pooled variant) or this frame's bodies (per-frame variant).
+    slots: Vec<Slot>,
+    positions: Vec<Vec3>,
+    contacts: usize,
+}
+
+/// One particle to place this frame.
+#[derive(Debug, Clone, Copy)]
+struct Placement {
+    px: [f32; 2],
+    center: Vec3,
+    velocity: Vec3,
+    /// Press (N).
+    weight: f32,
+}
+
+impl ParticleTechnique {
+    pub fn new(config: TechniqueConfig) -> Self {
+        ParticleTechnique { config, slots: Vec::new(), positions: Vec::new(), contacts: 0 }
+    }
+
+    /// Where each particle goes this frame: pure given the frame and world.
+    fn placements(&self, input: &TechniqueInput<'_>, world: &World) -> Vec<Placement> {
+        // Stride and edge threshold were applied by the vision stage, which
+        // the session configures from `particle_stride` and
+        // `particle_edge_threshold`: one knob each, not two.
+        let mut samples: Vec<_> = input.frame.edges.iter().collect();
+        if samples.len() > self.config.particle_cap {
+            // Drop evenly, never the tail of the list only.
+            let keep = self.config.particle_cap;
+            let n = samples.len();
+            samples = (0..keep).map(|k| samples[k * n / keep]).collect();
+        }
+        let r = self.config.particle_radius;
+        let mut out = Vec::with_capacity(samples.len());
+        for e in samples {
+            let p = table_point(input.sensor, e.px);
+            let Some(hit) = world.cast_contact_ray(p) else { continue };
+            let next = table_point(input.sensor, [e.px[0] + e.flow_px[0], e.px[1] + e.flow_px[1]]);
+            let p_next = project_flow(world, &hit, next);
+            let mut v = (p_next - hit.point) / input.dt;
+            // Tangential only: the plane projection already removed the normal part.
+            v -= hit.normal * v.dot(hit.normal);
+            let vt = clamp_len(Vec2::new(v.x, v.y), self.config.max_contact_speed);
+            let vz = if v.z.abs() > self.config.max_contact_speed { v.z.signum() * self.config.max_contact_speed } else { v.z };
+            let offset = if self.config.particle_capsules { r * 3.0 } else { r };
+            out.push(Placement {
+                px: e.px,
+                // Just touching (0.1 mm in): a particle that starts in contact presses
+                // with its full weight within its one step.
+                center: hit.point + hit.normal * (offset - 0.0001),
+                velocity: Vec3::new(vt.x, vt.y, vz),
+                weight: pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey)),
+            });
+        }
+        out
+    }
+
+    fn new_body(&self, world: &mut World, p: &Placement) -> RigidBodyHandle {
+        let r = self.config.particle_radius;
+        let shape = if self.config.particle_capsules { ColliderBuilder::capsule_z(r * 2.0, r) } else { ColliderBuilder::ball(r) };
+        let physics = world.physics_mut();
+        // Rotations locked: a rolling ball would transmit no friction.
+        let body = physics.bodies.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(p.center)
+                .linvel(p.velocity)
+                .gravity_scale(gravity_scale_for(self.config.particle_mass, p.weight))
+                .lock_rotations()
+                .can_sleep(false)
+                .build(),
+        );
+        let col = shape
+            .mass(self.config.particle_mass)
+            .friction(self.config.friction)
+            .friction_combine_rule(CoefficientCombineRule::Max)
+            .restitution(0.0)
+            .collision_groups(Layer::Particle.groups())
+            .build();
+        physics.colliders.insert_with_parent(col, body, &mut physics.bodies);
+        body
+    }
+
+    fn place_pooled(&mut self, world: &mut World, placements: &[Placement], flows: &[[f32; 2]]) {
+        // Index last frame's active slots by where they sat.
+        let key = |px: [f32; 2]| ((px[0] / CELL).floor() as i32, (px[1] / CELL).floor() as i32);
+        let mut grid: HashMap<(i32, i32), Vec<usize>> = HashMap::new();
+        for (i, s) in self.slots.iter().enumerate() {
+            if s.active {
+                grid.entry(key(s.px)).or_default().push(i);
+            }
+        }
+        let mut taken = vec![false; self.slots.len()];
+        let mut assignment = vec![usize::MAX; placements.len()];
+        for (k, p) in placements.iter().enumerate() {
+            // Where this outline point was last frame, by its flow.
+            let prev = [p.px[0] - flows[k][0], p.px[1] - flows[k][1]];
+            let (cx, cy) = key(prev);
+            let mut best = (MATCH_PX * MATCH_PX, usize::MAX);
+            for dx in -1..=1 {
+                for dy in -1..=1 {
+                    for &i in grid.get(&(cx + dx, cy + dy)).map_or(&[][..], Vec::as_slice) {
+                        if taken[i] {
+                            continue;
+                        }
+                        let s = self.slots[i].px;
+                        let d2 = (s[0] - prev[0]).powi(2) + (s[1] - prev[1]).powi(2);
+                        if d2 <= best.0 {
+                            best = (d2, i);
+                        }
+                    }
+                }
+            }
+            if best.1 != usize::MAX {
+                taken[best.1] = true;
+                assignment[k] = best.1;
+            }
+        }
+        // Unmatched samples take a free slot, else a new body.
+        let mut free: Vec<usize> = (0..self.slots.len()).filter(|&i| !taken[i]).rev().collect();
+        for (k, p) in placements.iter().enumerate() {
+            if assignment[k] != usize::MAX {
+                continue;
+            }
+            if let Some(i) = free.pop() {
+                taken[i] = true;
+                assignment[k] = i;
+            } else {
+                let body = self.new_body(world, p);
+                self.slots.push(Slot { body, px: p.px, active: true });
+                taken.push(true);
+                assignment[k] = self.slots.len() - 1;
+            }
+        }
+        let mut used = vec![false; self.slots.len()];
+        let physics = world.physics_mut();
+        for (k, p) in placements.iter().enumerate() {
+            let i = assignment[k];
+            used[i] = true;
+            let s = &mut self.slots[i];
+            s.px = p.px;
+            s.active = true;
+            if let Some(b) = physics.bodies.get_mut(s.body) {
+                b.set_enabled(true);
+                b.set_position(Pose::from_translation(p.center), true);
+                b.set_linvel(p.velocity, true);
+                b.set_gravity_scale(gravity_scale_for(self.config.particle_mass, p.weight), true);
+            }
+        }
+        // Spare bodies are disabled (cheap) rather than removed.
+        for (i, s) in self.slots.iter_mut().enumerate() {
+            if !used[i] && s.active {
+                s.active = false;
+                if let Some(b) = physics.bodies.get_mut(s.body) {
+                    b.set_enabled(false);
+                }
+            }
+        }
+    }
+}
+
+impl Technique for ParticleTechnique {
+    fn kind(&self) -> TechniqueKind {
+        TechniqueKind::Particle
+    }
+
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+        self.contacts = input.frame.contacts.len();
+        let placements = self.placements(input, world);
+        if self.config.particle_pooled {
+            let flows: Vec<[f32; 2]> = {
+                // Flow of each placement's sample, looked up by pixel.
+                let map: HashMap<(u32, u32), [f32; 2]> =
+                    input.frame.edges.iter().map(|e| ((e.px[0].to_bits()), (e.px[1].to_bits()))).zip(input.frame.edges.iter().map(|e| e.flow_px)).collect();
+                placements.iter().map(|p| map.get(&(p.px[0].to_bits(), p.px[1].to_bits())).copied().unwrap_or([0.0, 0.0])).collect()
+            };
+            self.place_pooled(world, &placements, &flows);
+        } else {
+            // The paper's way: every particle is created now and destroyed after the step.
+            for p in &placements {
+                let body = self.new_body(world, p);
+                self.slots.push(Slot { body, px: p.px, active: true });
+            }
+        }
+        Ok(())
+    }
+
+    fn after_step(&mut self, world: &mut World) {
+        self.positions.clear();
+        let physics = world.physics();
+        for s in self.slots.iter().filter(|s| s.active) {
+            if let Some(b) = physics.bodies.get(s.body) {
+                self.positions.push(b.translation());
+            }
+        }
+        if !self.config.particle_pooled {
+            for s in std::mem::take(&mut self.slots) {
+                remove_body(world, s.body);
+            }
+        }
+    }
+
+    fn feedback(&self, _world: &World) -> Feedback {
+        let half = self.config.particle_radius;
+        Feedback { lines: Vec::new(), cubes: self.positions.iter().map(|p| (*p, half)).collect() }
+    }
+
+    fn counts(&self) -> TechniqueCounts {
+        TechniqueCounts { contacts: self.contacts, bodies: self.positions.len(), joints: 0 }
+    }
+
+    fn clear(&mut self, world: &mut World) {
+        for s in std::mem::take(&mut self.slots) {
+            remove_body(world, s.body);
+        }
+        self.positions.clear();
+    }
+
+    fn config_mut(&mut self) -> &mut TechniqueConfig {
+        &mut self.config
+    }
+}

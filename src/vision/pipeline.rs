@@ -1,0 +1,289 @@
+//! The vision pipeline: one contact image in, contacts and moving outline
+//! points out, with the time each stage took.
+//!
+//! Stage order: threshold -> components -> tracking -> Sobel -> flow.
+//! Tracking runs before flow (the paper has them side by side) because its
+//! per-contact motion is the flow search's guess: a flick moving 20 px per
+//! frame is then found with a 3 px search radius instead of a 20 px one
+//! (45x fewer candidates), and the guess resolves the aperture problem
+//! along straight outlines.
+
+use std::time::Instant;
+
+use crate::surface::ContactImage;
+
+use super::components::{Blob, find_blobs};
+use super::flow::BlockMatcher;
+use super::sobel::find_edges;
+use super::threshold::{Mask, threshold_into};
+use super::tracking::{Tracker, TrackerParams};
+
+/// Pipeline settings. The defaults suit the default sensor (640 x 480 over
+/// 1.0 x 0.75 m, 1.56 mm pixels) and the rasterizer's 4 px soft edge.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VisionParams {
+    /// Grey level at and above which a pixel is touching. 48 (19% of full
+    /// scale): a light touch at pressure 0.4 still shows (its outline sits
+    /// about a pixel inside the drawn shape), and sensor noise of up to
+    /// +-40 never does.
+    pub threshold: u8,
+    /// Blobs smaller than this many pixels are noise (a fingertip is ~90).
+    pub min_area: u32,
+    /// Gradient magnitude (grey levels per pixel) at and above which a
+    /// pixel is on an outline. A full-pressure soft edge rises ~64 grey/px;
+    /// 12 keeps the outline of a touch down to pressure ~0.2 while leaving
+    /// out the flat inside of a contact, where noise alone makes gradients.
+    pub edge_threshold: f32,
+    /// Report every `stride`-th column and row of the outline (a grid
+    /// anchored at pixel 0, so still contacts keep their points). The soft
+    /// edge is a band about 4 px wide: at 3 a flat hand gives ~320 points,
+    /// one per ~2 mm of outline; 2 gives 2.2x as many and 1 about 9x, with
+    /// flow cost (~0.5 us per point) and particle count in proportion.
+    /// 3 is what keeps two flat hands within the 0.5 ms frame budget.
+    pub stride: usize,
+    /// Side of the block matched for flow, pixels (odd). 7 spans the
+    /// 4 px soft edge with texture to spare on both sides.
+    pub block_size: usize,
+    /// Flow search radius around the tracked motion's prediction, pixels.
+    /// 3 covers a fingertip spinning or accelerating by 3 px per frame
+    /// beyond what tracking predicted.
+    pub search_radius: usize,
+    /// See [`TrackerParams::max_jump_px`].
+    pub max_jump_px: f32,
+}
+
+impl Default for VisionParams {
+    fn default() -> Self {
+        Self {
+            threshold: 48,
+            min_area: 6,
+            edge_threshold: 12.0,
+            stride: 3,
+            block_size: 7,
+            search_radius: 3,
+            max_jump_px: TrackerParams::default().max_jump_px,
+        }
+    }
+}
+
+/// A tracked contact.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Contact {
+    /// Stable across frames (see `tracking` for the rules).
+    pub id: u32,
+    pub blob: Blob,
+    /// Weighted-centroid motion, pixels per frame.
+    pub velocity_px: [f32; 2],
+    /// Principal-axis turn, radians per frame, image orientation (negate
+    /// for the table); 0 for round blobs.
+    pub rotation_rad: f32,
+    /// Frames since the contact appeared (0 = new).
+    pub age_frames: u32,
+}
+
+/// A point of a contact's outline with its motion.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EdgeSample {
+    /// Pixel position `[column, row]` (integers at pixel centres).
+    pub px: [f32; 2],
+    /// Image motion at this point since the previous frame, pixels per
+    /// frame: the content here was at `px - flow_px` one frame ago. Zero on
+    /// a contact's first frame.
+    pub flow_px: [f32; 2],
+    /// Gradient magnitude, grey levels per pixel.
+    pub magnitude: f32,
+    /// Grey level at the point.
+    pub grey: u8,
+    pub contact_id: u32,
+}
+
+/// Microseconds spent in each stage of one `process` call.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct StageTimings {
+    pub threshold_us: f64,
+    pub components_us: f64,
+    pub tracking_us: f64,
+    pub sobel_us: f64,
+    pub flow_us: f64,
+    /// Everything, including keeping a copy of the frame for the next flow.
+    pub total_us: f64,
+}
+
+/// The result of one frame.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct VisionFrame {
+    pub contacts: Vec<Contact>,
+    pub edges: Vec<EdgeSample>,
+    pub timings: StageTimings,
+}
+
+/// Runs the stages frame after frame, keeping what flow and tracking need
+/// from the previous frame.
+#[derive(Debug, Clone)]
+pub struct Pipeline {
+    params: VisionParams,
+    matcher: BlockMatcher,
+    tracker: Tracker,
+    previous: Option<ContactImage>,
+    mask: Mask,
+}
+
+impl Default for Pipeline {
+    fn default() -> Self {
+        Self::new(VisionParams::default())
+    }
+}
+
+fn micros(since: Instant) -> f64 {
+    since.elapsed().as_secs_f64() * 1e6
+}
+
+impl Pipeline {
+    pub fn new(params: VisionParams) -> Self {
+        Self {
+            params,
+            matcher: BlockMatcher::new(params.block_size, params.search_radius),
+            tracker: Tracker::new(TrackerParams {
+                max_jump_px: params.max_jump_px,
+                ..TrackerParams::default()
+            }),
+            previous: None,
+            mask: Mask::default(),
+        }
+    }
+
+    pub fn params(&self) -> VisionParams {
+        self.params
+    }
+
+    /// Forgets the previous frame and every contact.
+    pub fn reset(&mut self) {
+        self.tracker.reset();
+        self.previous = None;
+    }
+
+    /// Analyses one frame.
+    pub fn process(&mut self, image: &ContactImage) -> VisionFrame {
+        let start = Instant::now();
+        let mut timings = StageTimings::default();
+        let p = self.params;
+
+        let t = Instant::now();
+        threshold_into(image, p.threshold, &mut self.mask);
+        timings.threshold_us = micros(t);
+
+        let t = Instant::now();
+        let blobs = find_blobs(image, &self.mask, p.min_area);
+        timings.components_us = micros(t);
+
+        let t = Instant::now();
+        let tracked = self.tracker.update(&blobs);
+        timings.tracking_us = micros(t);
+
+        let t = Instant::now();
+        let outline = find_edges(image, &blobs, p.edge_threshold, p.stride);
+        timings.sobel_us = micros(t);
+
+        let t = Instant::now();
+        let previous = self
+            .previous
+            .as_ref()
+            .filter(|q| q.width == image.width && q.height == image.height);
+        let edges = outline
+            .iter()
+            .map(|e| {
+                let (blob, track) = (&blobs[e.blob], &tracked[e.blob]);
+                let px = [e.x as f32, e.y as f32];
+                let flow_px = match previous {
+                    Some(prev) if track.age > 0 => {
+                        let guess =
+                            rigid_guess(px, blob.weighted_centroid, track.velocity, track.rotation);
+                        self.matcher
+                            .flow_at(prev, image, [e.x, e.y], guess)
+                            .unwrap_or([0.0, 0.0])
+                    }
+                    _ => [0.0, 0.0],
+                };
+                EdgeSample {
+                    px,
+                    flow_px,
+                    magnitude: e.magnitude,
+                    grey: image.pixels[e.y as usize * image.width + e.x as usize],
+                    contact_id: track.id,
+                }
+            })
+            .collect();
+        timings.flow_us = micros(t);
+
+        match &mut self.previous {
+            Some(prev) => prev.clone_from(image),
+            None => self.previous = Some(image.clone()),
+        }
+        let contacts = blobs
+            .into_iter()
+            .zip(tracked)
+            .map(|(blob, t)| Contact {
+                id: t.id,
+                blob,
+                velocity_px: t.velocity,
+                rotation_rad: t.rotation,
+                age_frames: t.age,
+            })
+            .collect();
+        timings.total_us = micros(start);
+        VisionFrame {
+            contacts,
+            edges,
+            timings,
+        }
+    }
+}
+
+/// The flow at `px` if its contact moved rigidly: translated by `velocity`
+/// and turned by `rotation` about its centroid `c`. The point was at
+/// `c - velocity + R(-rotation) (px - c)` in the previous frame.
+pub fn rigid_guess(px: [f32; 2], c: [f32; 2], velocity: [f32; 2], rotation: f32) -> [f32; 2] {
+    let (sin, cos) = (-rotation).sin_cos();
+    let r = [px[0] - c[0], px[1] - c[1]];
+    let back = [cos * r[0] - sin * r[1], sin * r[0] + cos * r[1]];
+    let was = [c[0] - velocity[0] + back[0], c[1] - velocity[1] + back[1]];
+    [px[0] - was[0], px[1] - was[1]]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rigid_guess_of_a_pure_turn() {
+        // A quarter turn clockwise on screen about the origin moves (10, 0)
+        // to (0, 10): the point now at (0, 10) came from (10, 0).
+        let g = rigid_guess(
+            [0.0, 10.0],
+            [0.0, 0.0],
+            [0.0, 0.0],
+            std::f32::consts::FRAC_PI_2,
+        );
+        assert!(
+            (g[0] + 10.0).abs() < 1e-4 && (g[1] - 10.0).abs() < 1e-4,
+            "{g:?}"
+        );
+        assert_eq!(
+            rigid_guess([5.0, 5.0], [1.0, 1.0], [2.0, -1.0], 0.0),
+            [2.0, -1.0]
+        );
+    }
+
+    #[test]
+    fn degenerate_frames() {
+        let mut p = Pipeline::default();
+        for (w, h) in [(0, 0), (1, 1), (3, 1), (1, 3), (4, 2), (2, 5)] {
+            let f = p.process(&ContactImage::new(w, h));
+            assert!(f.contacts.is_empty());
+            let white = ContactImage::from_pixels(w, h, vec![255; w * h]).expect("sized");
+            let f = p.process(&white);
+            // Below `min_area` (6) a white frame is noise.
+            assert_eq!(f.contacts.len(), usize::from(w * h >= 6));
+        }
+    }
+}

@@ -1,0 +1,259 @@
+//! Behaviour of the four techniques, each replaying a gesture through the
+//! real pipeline (rasterizer → vision → technique → rapier) and asserting
+//! what the paper says the physics should do.
+
+use glam::{Quat, Vec3};
+use surfacelab::scene;
+use surfacelab::session::{Session, SessionOptions};
+use surfacelab::surface::Gesture;
+use surfacelab::technique::{TechniqueConfig, TechniqueKind};
+
+fn asset(path: &str) -> String {
+    format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn session(task: &str, kind: TechniqueKind) -> Session {
+    let s = scene::load(&asset(task)).expect("scene loads");
+    Session::new(&s, kind, SessionOptions { measure_penetration: true, ..SessionOptions::default() }).expect("session")
+}
+
+/// Replays the gesture plus `settle` seconds; returns the session.
+fn replay(task: &str, kind: TechniqueKind, gesture: &Gesture, settle: f64) -> Session {
+    let mut s = session(task, kind);
+    s.replay_until(gesture, gesture.duration() + settle).expect("replay");
+    assert_eq!(s.world().stats().nan_count, 0, "{kind}: NaN seen");
+    s
+}
+
+fn yaw_deg(q: Quat) -> f32 {
+    let (z, _, _) = q.to_euler(glam::EulerRot::ZYX);
+    z.to_degrees()
+}
+
+#[test]
+fn fingertip_drag_moves_the_box_about_ten_cm() {
+    let g = Gesture::load(asset("assets/gestures/fingertip_drag.toml")).expect("gesture");
+    for kind in [TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle] {
+        let s = replay("tasks/cases/one_box.toml", kind, &g, 1.0);
+        let p = s.world().object_pose(0).position;
+        // The finger moves 10 cm; springs lag and particles slip a little.
+        assert!((0.08..=0.11).contains(&p.x), "{kind}: box moved {:.3} m in x", p.x);
+        assert!(p.y.abs() < 0.01, "{kind}: box drifted {:.3} m in y", p.y);
+        assert!(s.world().stats().max_penetration_seen < 0.005, "{kind}: penetration");
+    }
+}
+
+const EDGE_SWEEP: &str = r#"
+format = "surfacelab-gesture"
+version = 1
+[[hands]]
+id = 1
+kind = "edge"
+[[hands.keys]]
+t = 0.0
+pos = [-0.12, 0.01]
+[[hands.keys]]
+t = 1.5
+pos = [0.12, 0.01]
+[[hands.keys]]
+t = 1.8
+pos = [0.12, 0.01]
+"#;
+
+#[test]
+fn hand_edge_sweep_moves_three_boxes_together() {
+    let g = Gesture::from_str(EDGE_SWEEP, "edge_sweep").expect("gesture");
+    for kind in [TechniqueKind::Particle, TechniqueKind::Proxy, TechniqueKind::Joint] {
+        let s = replay("tasks/cases/three_boxes.toml", kind, &g, 0.5);
+        let xs: Vec<f32> = (0..3).map(|i| s.world().object_pose(i).position.x).collect();
+        if kind == TechniqueKind::Proxy {
+            // The paper's known weakness: one proxy at the blob centre. The
+            // edge's centre passes the middle box only.
+            assert!(xs[1] > 0.05, "proxy pushes the box under the edge's centre: {xs:?}");
+            continue;
+        }
+        for (i, x) in xs.iter().enumerate() {
+            assert!(*x > 0.05, "{kind}: box {i} moved only {x:.3} m: {xs:?}");
+        }
+        let spread = xs.iter().copied().fold(f32::MIN, f32::max) - xs.iter().copied().fold(f32::MAX, f32::min);
+        assert!(spread < 0.03, "{kind}: boxes not moved together: {xs:?}");
+    }
+}
+
+#[test]
+fn two_finger_twist_rotates_a_box() {
+    let g = Gesture::load(asset("assets/gestures/two_finger_twist.toml")).expect("gesture");
+    // Proxy turns it most of the 90°; particles follow the slow twist less
+    // well (0.2 px/frame of outline motion is below the flow's noise).
+    for (kind, min_deg) in [(TechniqueKind::Proxy, 45.0), (TechniqueKind::Particle, 10.0), (TechniqueKind::Joint, 45.0)] {
+        let s = replay("tasks/cases/small_box.toml", kind, &g, 0.5);
+        let pose = s.world().object_pose(0);
+        let yaw = yaw_deg(pose.rotation);
+        assert!(yaw > min_deg && yaw < 100.0, "{kind}: yaw {yaw:.1}°");
+        assert!(pose.position.truncate().length() < 0.02, "{kind}: a twist should not translate much: {}", pose.position);
+    }
+}
+
+const PULL_APART: &str = r#"
+format = "surfacelab-gesture"
+version = 1
+[[hands]]
+id = 1
+kind = "fingertips"
+fingers = 1
+[[hands.keys]]
+t = 0.0
+pos = [-0.04, 0.0]
+[[hands.keys]]
+t = 1.0
+pos = [-0.3, 0.05]
+[[hands.keys]]
+t = 10.0
+pos = [-0.3, 0.05]
+[[hands]]
+id = 2
+kind = "fingertips"
+fingers = 1
+[[hands.keys]]
+t = 0.0
+pos = [0.04, 0.0]
+[[hands.keys]]
+t = 1.0
+pos = [0.3, -0.05]
+[[hands.keys]]
+t = 10.0
+pos = [0.3, -0.05]
+"#;
+
+#[test]
+fn two_joints_pulling_apart_stay_finite_and_slow() {
+    let g = Gesture::from_str(PULL_APART, "pull_apart").expect("gesture");
+    let s = replay("tasks/cases/one_box.toml", TechniqueKind::Joint, &g, 0.0);
+    let st = s.world().stats();
+    assert_eq!(st.nan_count, 0);
+    assert!(st.max_speed_seen < 3.0, "max speed {} m/s", st.max_speed_seen);
+    let p = s.world().object_pose(0).position;
+    assert!(p.is_finite() && p.truncate().length() < 0.3, "box stays between the hands: {p}");
+    assert!(s.world().stats().max_penetration_seen < 0.01);
+}
+
+const THROW: &str = r#"
+format = "surfacelab-gesture"
+version = 1
+[[hands]]
+id = 1
+kind = "fingertips"
+fingers = 1
+[[hands.keys]]
+t = 0.0
+pos = [-0.2, 0.0]
+[[hands.keys]]
+t = 0.3
+pos = [-0.2, 0.0]
+[[hands.keys]]
+t = 0.6
+pos = [-0.14, 0.0]
+[[hands.keys]]
+t = 0.8
+pos = [-0.06, 0.0]
+"#;
+
+#[test]
+fn a_thrown_ball_keeps_the_hands_release_velocity() {
+    // The hand accelerates, then moves at 0.4 m/s (on screen) for the last
+    // 0.2 s and lifts. A ball held by a spring at its top rolls, so the
+    // point the hand held, not the centre, is what keeps the hand's speed;
+    // and at the ball's top (6 cm up) the hand's world speed is
+    // 0.4 · (1 − 0.06 / 1.2) = 0.38 m/s (the camera is 1.2 m up).
+    let g = Gesture::from_str(THROW, "throw").expect("gesture");
+    let scene = scene::load(&asset("tasks/cases/ball.toml")).expect("scene");
+    let mut sc = scene.clone();
+    sc.objects[0].position = Vec3::new(-0.2, 0.0, 0.03);
+    let mut s = Session::new(&sc, TechniqueKind::Joint, SessionOptions::default()).expect("session");
+    s.replay_until(&g, g.duration()).expect("replay");
+    let held = s.feedback().lines.first().expect("the joint holds the ball").1;
+    let local = s.world().physics().bodies[s.world().object_body(0)].position().inverse_transform_point(held);
+    // One frame after the lift, what does the held point carry?
+    s.step(&[]).expect("step");
+    let body = &s.world().physics().bodies[s.world().object_body(0)];
+    let v = body.velocity_at_point(body.position().transform_point(local));
+    let hand = 0.4 * (1.0 - 0.06 / 1.2);
+    assert!((v.x - hand).abs() <= 0.2 * hand, "release velocity {v} vs hand {hand} m/s");
+    assert!(v.y.abs() < 0.05);
+    // And no slingshot afterwards: the ball only slows down.
+    let mut prev = s.world().object_pose(0).linvel.truncate().length();
+    for _ in 0..30 {
+        s.step(&[]).expect("step");
+        let now = s.world().object_pose(0).linvel.truncate().length();
+        assert!(now <= prev + 1e-3, "ball sped up after release: {prev} -> {now}");
+        prev = now;
+    }
+}
+
+#[test]
+fn pooled_and_per_frame_particles_give_the_same_trajectory() {
+    let g = Gesture::load(asset("assets/gestures/fingertip_drag.toml")).expect("gesture");
+    let scene = scene::load(&asset("tasks/cases/one_box.toml")).expect("scene");
+    let run = |pooled: bool| {
+        let config = TechniqueConfig { particle_pooled: pooled, ..TechniqueConfig::default() };
+        let mut s = Session::new(&scene, TechniqueKind::Particle, SessionOptions { config: Some(config), ..SessionOptions::default() }).expect("session");
+        let mut track = Vec::new();
+        while s.time() < g.duration() + 0.5 {
+            let hands = g.sample(s.time());
+            s.step(&hands).expect("step");
+            track.push(s.world().object_pose(0).position);
+        }
+        track
+    };
+    let a = run(true);
+    let b = run(false);
+    let travel = a.last().expect("frames").x;
+    assert!(travel > 0.08, "the box actually moved: {travel}");
+    // Fresh per-frame contacts get no solver warm start, so with 4 solver
+    // iterations their friction converges a little less (measured: 7.9 vs
+    // 9.0 cm of travel). Within 15% of the travel, all along the way.
+    let worst = a.iter().zip(&b).map(|(p, q)| (*p - *q).length()).fold(0.0f32, f32::max);
+    assert!(worst < 0.15 * travel, "pooled and per-frame particles diverge by {worst:.4} m of {travel:.3} m");
+}
+
+#[test]
+fn lost_tracking_never_teleports_a_proxy() {
+    // A contact that jumps 40 cm in one frame (tracking lost and found).
+    let text = r#"
+format = "surfacelab-gesture"
+version = 1
+[[hands]]
+id = 1
+kind = "fingertips"
+fingers = 1
+[[hands.keys]]
+t = 0.0
+pos = [-0.2, 0.0]
+[[hands.keys]]
+t = 0.5
+pos = [-0.2, 0.0]
+[[hands.keys]]
+t = 0.5167
+pos = [0.2, 0.0]
+[[hands.keys]]
+t = 1.5
+pos = [0.2, 0.0]
+"#;
+    let g = Gesture::from_str(text, "jump").expect("gesture");
+    for kind in [TechniqueKind::Proxy, TechniqueKind::Joint, TechniqueKind::Particle] {
+        let s = replay("tasks/cases/one_box.toml", kind, &g, 0.5);
+        assert!(s.world().stats().max_speed_seen < 4.5, "{kind}: {}", s.world().stats().max_speed_seen);
+    }
+}
+
+#[test]
+fn every_technique_runs_every_study_task_without_nan() {
+    let g = Gesture::load(asset("assets/gestures/two_hand_gather.toml")).expect("gesture");
+    for task in ["tasks/positioning.toml", "tasks/sorting.toml", "tasks/steering.toml"] {
+        for kind in TechniqueKind::ALL {
+            let s = replay(task, kind, &g, 0.5);
+            assert!(s.world().stats().max_speed_seen < 10.0, "{task} {kind}");
+            assert!(s.world().stats().max_penetration_seen < 0.02, "{task} {kind}: {}", s.world().stats().max_penetration_seen);
+        }
+    }
+}
