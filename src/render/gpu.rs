@@ -121,8 +121,8 @@ pub async fn request_adapter(
         .request_adapter(&wgpu::RequestAdapterOptions {
             power_preference: wgpu::PowerPreference::from_env().unwrap_or_default(),
             force_fallback_adapter: false,
-            apply_limit_buckets: false,
             compatible_surface,
+            ..Default::default()
         })
         .await
         .map_err(|e| GpuError::NoAdapter { backends, reason: e.to_string() })
