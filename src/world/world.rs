@@ -350,7 +350,29 @@ impl World {
         let (h, hit) = self.physics.cast_ray_and_get_normal(&ray, max_toi, true, filter)?;
         let c = &self.physics.colliders[h];
         let object = if c.user_data == ENV_TAG { None } else { Some(c.user_data as usize) };
-        Some(RayHit { object, point: ray.point_at(hit.time_of_impact), normal: hit.normal, toi: hit.time_of_impact })
+        let mut out = RayHit { object, point: ray.point_at(hit.time_of_impact), normal: hit.normal, toi: hit.time_of_impact };
+        if let Some(i) = object
+            && let Shape::Cylinder { radius, half_height } = self.scene.objects[i].shape
+        {
+            // parry casts rays at cylinders by GJK, whose normals tilt by up
+            // to ~30° near a cap's rim; the particles' flow projection needs
+            // the true tangent plane, so compute it from the known shape.
+            let pose = *c.position();
+            let local = pose.inverse_transform_point(out.point);
+            // The collider is a y-axis cylinder rotated onto z; in its local
+            // frame the axis is y.
+            let n_local = if local.y.abs() >= half_height - 1e-3 * radius.max(half_height) {
+                Vec3::new(0.0, local.y.signum(), 0.0)
+            } else {
+                Vec3::new(local.x, 0.0, local.z).normalize_or(Vec3::X)
+            };
+            out.normal = pose.rotation * n_local;
+            if n_local.y != 0.0 {
+                let snapped = Vec3::new(local.x, half_height * local.y.signum(), local.z);
+                out.point = pose.transform_point(snapped);
+            }
+        }
+        Some(out)
     }
 
     /// The paper's ray cast for a contact: the camera ray through the table point.
