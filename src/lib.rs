@@ -24,10 +24,7 @@ pub mod cli;
 pub mod contact;
 pub mod goal;
 pub mod participant;
-/// The wgpu renderer (being filled in; only the GPU probe is wired so far).
-pub mod render {
-    pub mod gpu;
-}
+pub mod render;
 pub mod scene;
 pub mod session;
 pub mod study;

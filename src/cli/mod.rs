@@ -2,8 +2,10 @@
 //! arguments are parsed once into a validated struct; the work lives in the
 //! library modules, this layer only wires them together.
 
+mod contact;
 mod doctor;
 mod run;
+mod screenshot;
 mod study;
 
 use crate::technique::TechniqueKind;
@@ -138,18 +140,27 @@ pub enum StudyAction {
 
 #[derive(Debug, Args)]
 pub struct ScreenshotArgs {
+    /// Scene name under tasks/ or a path to a scene file.
     #[arg(long, default_value = "positioning")]
     pub task: String,
     #[arg(long, value_enum, default_value_t = TechniqueKind::Particle)]
     pub technique: TechniqueKind,
+    /// Draw the technique's feedback (red joint lines, proxy cubes, particles).
     #[arg(long)]
     pub feedback: bool,
+    /// Draw the sensed contact image as a translucent hand shadow.
+    #[arg(long)]
+    pub contact_overlay: bool,
+    /// Gesture file to replay before capturing.
     #[arg(long)]
     pub gesture: Option<PathBuf>,
-    #[arg(long)]
+    /// Capture at this many seconds into the gesture (default: its end).
+    #[arg(long, value_parser = parse_seconds, requires = "gesture")]
     pub at: Option<f32>,
-    #[arg(long, default_value = "1024x768")]
-    pub size: String,
+    /// Image size, WIDTHxHEIGHT.
+    #[arg(long, default_value = "1024x768", value_parser = screenshot::parse_size)]
+    pub size: (u32, u32),
+    /// PNG file to write.
     #[arg(long)]
     pub out: PathBuf,
 }
@@ -159,6 +170,9 @@ pub struct ContactArgs {
     /// JSON file with {"a": [[x,y],...], "b": [[x,y],...]}, or - for standard input.
     #[arg(default_value = "-")]
     pub input: String,
+    /// Accept concave (simple) polygons, by convex decomposition.
+    #[arg(long)]
+    pub concave: bool,
 }
 
 #[derive(Debug, Args)]
@@ -198,6 +212,7 @@ fn is_bad_input(e: &anyhow::Error) -> bool {
             || c.is::<crate::surface::GestureError>()
             || c.is::<crate::technique::ConfigError>()
             || c.is::<crate::study::StudyError>()
+            || c.is::<crate::render::RenderError>()
             || matches!(c.downcast_ref::<crate::session::SessionError>(), Some(crate::session::SessionError::Config(_)))
     })
 }
@@ -215,8 +230,8 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
         Command::Demo(_) => Ok(not_yet("demo", "the desktop demo")),
         Command::Run(args) => run::run(&args),
         Command::Study(args) => study::run(&args),
-        Command::Screenshot(_) => Ok(not_yet("screenshot", "the wgpu renderer")),
-        Command::Contact(_) => Ok(not_yet("contact", "the 2D contact module")),
+        Command::Screenshot(args) => screenshot::run(&args),
+        Command::Contact(args) => contact::run(&args),
         Command::Tradeoff(_) => Ok(not_yet("tradeoff", "the accuracy-versus-time report")),
     }
 }

@@ -150,3 +150,29 @@ pub fn probe_adapter() -> Result<AdapterSummary, GpuError> {
     let adapter = pollster::block_on(request_adapter(&instance, None))?;
     Ok(AdapterSummary::from_info(&adapter.get_info()))
 }
+
+/// The window surface format to ask for: the first sRGB one the surface
+/// offers (colours then blend in linear space, as in captures), else the
+/// first offered (the renderer then encodes sRGB in its shaders).
+pub fn preferred_surface_format(offered: &[wgpu::TextureFormat]) -> Option<wgpu::TextureFormat> {
+    offered.iter().copied().find(wgpu::TextureFormat::is_srgb).or_else(|| offered.first().copied())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn surface_format_prefers_srgb() {
+        use wgpu::TextureFormat::{Bgra8Unorm, Bgra8UnormSrgb, Rgba16Float};
+        assert_eq!(preferred_surface_format(&[Bgra8Unorm, Bgra8UnormSrgb]), Some(Bgra8UnormSrgb));
+        assert_eq!(preferred_surface_format(&[Rgba16Float, Bgra8Unorm]), Some(Rgba16Float));
+        assert_eq!(preferred_surface_format(&[]), None);
+    }
+
+    #[test]
+    fn no_adapter_message_says_how_to_install_lavapipe() {
+        let e = GpuError::NoAdapter { backends: wgpu::Backends::VULKAN, reason: "none".into() };
+        assert!(e.to_string().contains("apt-get install mesa-vulkan-drivers libvulkan1"));
+    }
+}

@@ -69,6 +69,8 @@ pub struct PhysicsFile {
     pub ccd_substeps: Option<usize>,
     #[serde(default)]
     pub max_speed: Option<f32>,
+    #[serde(default)]
+    pub contact_hz: Option<f32>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]

@@ -75,6 +75,10 @@ pub struct PhysicsSpec {
     pub ccd_substeps: usize,
     /// Hard cap on any dynamic body's linear speed (m/s): no explosions.
     pub max_speed: f32,
+    /// Natural frequency of rapier's soft contacts (Hz). Contact stiffness
+    /// is the pair's effective mass × (2π·hz)², so a heavy object on a
+    /// light one sinks unless this is raised (a 100:1 stack at 30 Hz: 2.5 cm).
+    pub contact_hz: f32,
 }
 
 impl Default for PhysicsSpec {
@@ -87,6 +91,7 @@ impl Default for PhysicsSpec {
             length_unit: 0.1,
             ccd_substeps: 1,
             max_speed: 50.0,
+            contact_hz: 30.0,
         }
     }
 }

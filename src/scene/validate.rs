@@ -156,6 +156,9 @@ impl Checker<'_> {
             if let Some(n) = p.ccd_substeps {
                 physics.ccd_substeps = n;
             }
+            if let Some(hz) = p.contact_hz {
+                physics.contact_hz = self.num(&span, "physics.contact_hz", hz, 1.0, 10_000.0)?;
+            }
             if let Some(v) = p.max_speed {
                 physics.max_speed = self.positive(&span, "physics.max_speed", v)?;
             }

@@ -19,6 +19,13 @@ use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::HashMap;
 
+/// Outline spacing (m) that `particle_mass` and `particle_weight` are given
+/// for: the default stride (3 px) on the default sensor (1.5625 mm pixels).
+/// Particles stand for a length of outline, so at a finer spacing each one
+/// weighs proportionally less: resolution and stride trade accuracy for
+/// time without changing how hard a hand presses.
+pub const REFERENCE_SPACING: f32 = 3.0 * 0.001_562_5;
+
 /// Grid cell (px) for matching pooled particles to this frame's samples.
 const CELL: f32 = 4.0;
 /// A pooled particle is re-used for a sample within this many pixels of its
@@ -50,6 +57,8 @@ struct Placement {
     velocity: Vec3,
     /// Press (N).
     weight: f32,
+    /// Inertia (kg).
+    mass: f32,
 }
 
 impl ParticleTechnique {
@@ -70,6 +79,7 @@ impl ParticleTechnique {
             samples = (0..keep).map(|k| samples[k * n / keep]).collect();
         }
         let r = self.config.particle_radius;
+        let share = self.config.particle_stride as f32 * input.sensor.metres_per_pixel() / REFERENCE_SPACING;
         let mut out = Vec::with_capacity(samples.len());
         for e in samples {
             let p = table_point(input.sensor, e.px);
@@ -88,7 +98,8 @@ impl ParticleTechnique {
                 // with its full weight within its one step.
                 center: hit.point + hit.normal * (offset - 0.0001),
                 velocity: Vec3::new(vt.x, vt.y, vz),
-                weight: pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey)),
+                weight: pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey)) * share,
+                mass: self.config.particle_mass * share,
             });
         }
         out
@@ -103,13 +114,13 @@ impl ParticleTechnique {
             RigidBodyBuilder::dynamic()
                 .translation(p.center)
                 .linvel(p.velocity)
-                .gravity_scale(gravity_scale_for(self.config.particle_mass, p.weight))
+                .gravity_scale(gravity_scale_for(p.mass, p.weight))
                 .lock_rotations()
                 .can_sleep(false)
                 .build(),
         );
         let col = shape
-            .mass(self.config.particle_mass)
+            .mass(p.mass)
             .friction(self.config.friction)
             .friction_combine_rule(CoefficientCombineRule::Max)
             .restitution(0.0)
@@ -182,7 +193,7 @@ impl ParticleTechnique {
                 b.set_enabled(true);
                 b.set_position(Pose::from_translation(p.center), true);
                 b.set_linvel(p.velocity, true);
-                b.set_gravity_scale(gravity_scale_for(self.config.particle_mass, p.weight), true);
+                b.set_gravity_scale(gravity_scale_for(b.mass(), p.weight), true);
             }
         }
         // Spare bodies are disabled (cheap) rather than removed.

@@ -26,6 +26,7 @@ pub struct WorldConfig {
     pub pgs_iterations: usize,
     pub length_unit: f32,
     pub max_speed: f32,
+    pub contact_hz: f32,
 }
 
 impl WorldConfig {
@@ -45,6 +46,7 @@ impl WorldConfig {
             pgs_iterations: p.pgs_iterations,
             length_unit: p.length_unit,
             max_speed: p.max_speed,
+            contact_hz: p.contact_hz,
         }
     }
 }

@@ -76,6 +76,7 @@ impl World {
         ip.num_internal_pgs_iterations = config.pgs_iterations;
         ip.length_unit = config.length_unit;
         ip.max_ccd_substeps = config.ccd_substeps;
+        ip.contact_softness.natural_frequency = config.contact_hz;
 
         let friction = |mu: f32| if config.friction { mu } else { 0.0 };
 

@@ -1,0 +1,441 @@
+//! Every render pipeline and bind-group layout, created once per renderer.
+//!
+//! Each pipeline's shader is `shaders/<pipeline>.wgsl` with
+//! `shaders/frame.wgsl` (uniforms, shadow lookup, lighting) prepended: WGSL
+//! has no includes, and one shared prelude keeps the lighting identical
+//! across the table, the objects and the decals.
+
+use crate::render::instances::{
+    CubeInstance, DecalInstance, LineInstance, ObjectInstance, OverlayRegion, StripInstance,
+};
+use crate::render::mesh::Vertex;
+use crate::render::targets::DEPTH_FORMAT;
+
+macro_rules! shader_source {
+    ($name:literal) => {
+        concat!(include_str!("../../shaders/frame.wgsl"), "\n", include_str!(concat!("../../shaders/", $name, ".wgsl")))
+    };
+}
+
+/// Shader sources by pipeline name (this order is relied on in `Pipelines::new`).
+pub const SHADERS: [(&str, &str); 7] = [
+    ("shadow", shader_source!("shadow")),
+    ("flat", shader_source!("flat")),
+    ("grid", shader_source!("grid")),
+    ("mesh", shader_source!("mesh")),
+    ("decal", shader_source!("decal")),
+    ("overlay", shader_source!("overlay")),
+    ("feedback", shader_source!("feedback")),
+];
+
+#[derive(Debug)]
+pub struct Pipelines {
+    /// Group 0 of the main pass: uniforms, shadow map, comparison sampler.
+    pub frame_layout: wgpu::BindGroupLayout,
+    /// Group 0 of the shadow pass: uniforms only (the shadow map is the
+    /// attachment there, so it cannot also be bound).
+    pub shadow_pass_layout: wgpu::BindGroupLayout,
+    /// Group 1 of the overlay pipeline: contact image and its sampler.
+    pub overlay_layout: wgpu::BindGroupLayout,
+
+    pub shadow_solid: wgpu::RenderPipeline,
+    pub shadow_two_sided: wgpu::RenderPipeline,
+    /// The table and boxes (flat faces, lit per face).
+    pub flat: wgpu::RenderPipeline,
+    pub grid: wgpu::RenderPipeline,
+    pub mesh_solid: wgpu::RenderPipeline,
+    pub mesh_two_sided: wgpu::RenderPipeline,
+    pub decal: wgpu::RenderPipeline,
+    pub overlay: wgpu::RenderPipeline,
+    pub feedback_lines_hidden: wgpu::RenderPipeline,
+    pub feedback_lines_visible: wgpu::RenderPipeline,
+    pub feedback_cubes_hidden: wgpu::RenderPipeline,
+    pub feedback_cubes_visible: wgpu::RenderPipeline,
+}
+
+/// What the pipelines are compiled against.
+#[derive(Debug, Clone, Copy)]
+pub struct PipelineConfig {
+    pub color_format: wgpu::TextureFormat,
+    pub sample_count: u32,
+}
+
+/// Depth state of one pipeline: test, write, bias.
+struct Depth {
+    compare: wgpu::CompareFunction,
+    write: bool,
+    bias: wgpu::DepthBiasState,
+}
+
+impl Depth {
+    fn opaque() -> Self {
+        Self { compare: wgpu::CompareFunction::Less, write: true, bias: wgpu::DepthBiasState::default() }
+    }
+
+    fn test_only(compare: wgpu::CompareFunction) -> Self {
+        Self { compare, write: false, bias: wgpu::DepthBiasState::default() }
+    }
+
+    fn state(self) -> wgpu::DepthStencilState {
+        wgpu::DepthStencilState {
+            format: DEPTH_FORMAT,
+            depth_write_enabled: Some(self.write),
+            depth_compare: Some(self.compare),
+            stencil: wgpu::StencilState::default(),
+            bias: self.bias,
+        }
+    }
+}
+
+/// One pipeline's description, turned into a `RenderPipelineDescriptor`.
+struct Spec<'a> {
+    label: &'a str,
+    layout: &'a wgpu::PipelineLayout,
+    module: &'a wgpu::ShaderModule,
+    vs: &'a str,
+    /// `None`: depth only.
+    fs: Option<&'a str>,
+    buffers: &'a [Option<wgpu::VertexBufferLayout<'a>>],
+    cull: Option<wgpu::Face>,
+    depth: Depth,
+    blend: Option<wgpu::BlendState>,
+    sample_count: u32,
+}
+
+fn build(device: &wgpu::Device, color_format: wgpu::TextureFormat, spec: Spec<'_>) -> wgpu::RenderPipeline {
+    let targets =
+        [Some(wgpu::ColorTargetState { format: color_format, blend: spec.blend, write_mask: wgpu::ColorWrites::ALL })];
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(spec.label),
+        layout: Some(spec.layout),
+        vertex: wgpu::VertexState {
+            module: spec.module,
+            entry_point: Some(spec.vs),
+            compilation_options: wgpu::PipelineCompilationOptions::default(),
+            buffers: spec.buffers,
+        },
+        primitive: wgpu::PrimitiveState {
+            topology: wgpu::PrimitiveTopology::TriangleList,
+            front_face: wgpu::FrontFace::Ccw,
+            cull_mode: spec.cull,
+            ..Default::default()
+        },
+        depth_stencil: Some(spec.depth.state()),
+        multisample: wgpu::MultisampleState { count: spec.sample_count, ..Default::default() },
+        fragment: spec.fs.map(|entry| wgpu::FragmentState {
+            module: spec.module,
+            entry_point: Some(entry),
+            compilation_options: wgpu::PipelineCompilationOptions::default(),
+            targets: &targets,
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+fn shader(device: &wgpu::Device, (name, source): (&str, &'static str)) -> wgpu::ShaderModule {
+    device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(&format!("{name}.wgsl")),
+        source: wgpu::ShaderSource::Wgsl(source.into()),
+    })
+}
+
+fn layout_entry(binding: u32, visibility: wgpu::ShaderStages, ty: wgpu::BindingType) -> wgpu::BindGroupLayoutEntry {
+    wgpu::BindGroupLayoutEntry { binding, visibility, ty, count: None }
+}
+
+fn uniform_entry() -> wgpu::BindGroupLayoutEntry {
+    layout_entry(
+        0,
+        wgpu::ShaderStages::VERTEX_FRAGMENT,
+        wgpu::BindingType::Buffer {
+            ty: wgpu::BufferBindingType::Uniform,
+            has_dynamic_offset: false,
+            min_binding_size: None,
+        },
+    )
+}
+
+impl Pipelines {
+    pub fn new(device: &wgpu::Device, config: PipelineConfig) -> Self {
+        use wgpu::CompareFunction::{Greater, LessEqual};
+        let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("frame bind group layout"),
+            entries: &[
+                uniform_entry(),
+                layout_entry(
+                    1,
+                    wgpu::ShaderStages::FRAGMENT,
+                    wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Depth,
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                ),
+                layout_entry(
+                    2,
+                    wgpu::ShaderStages::FRAGMENT,
+                    wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
+                ),
+            ],
+        });
+        let shadow_pass_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("shadow pass bind group layout"),
+            entries: &[uniform_entry()],
+        });
+        let overlay_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("contact image bind group layout"),
+            entries: &[
+                layout_entry(
+                    0,
+                    wgpu::ShaderStages::FRAGMENT,
+                    wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
+                ),
+                layout_entry(
+                    1,
+                    wgpu::ShaderStages::FRAGMENT,
+                    wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+                ),
+            ],
+        });
+        let pipeline_layout = |label: &str, groups: &[Option<&wgpu::BindGroupLayout>]| {
+            device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+                label: Some(label),
+                bind_group_layouts: groups,
+                immediate_size: 0,
+            })
+        };
+        let shadow_layout = pipeline_layout("shadow pipeline layout", &[Some(&shadow_pass_layout)]);
+        let main_layout = pipeline_layout("main pass pipeline layout", &[Some(&frame_layout)]);
+        let overlay_pipeline_layout =
+            pipeline_layout("overlay pipeline layout", &[Some(&frame_layout), Some(&overlay_layout)]);
+
+        let [shadow_module, flat_module, grid_module, mesh_module, decal_module, overlay_module, feedback_module] =
+            SHADERS.map(|named| shader(device, named));
+
+        let mesh_buffers = [Some(Vertex::layout()), Some(ObjectInstance::layout())];
+        let samples = config.sample_count;
+        let format = config.color_format;
+        let alpha = Some(wgpu::BlendState::ALPHA_BLENDING);
+
+        let shadow = |label, cull| {
+            build(
+                device,
+                format,
+                Spec {
+                    label,
+                    layout: &shadow_layout,
+                    module: &shadow_module,
+                    vs: "vs_main",
+                    fs: None,
+                    buffers: &mesh_buffers,
+                    cull,
+                    // Slope-scaled bias against acne on surfaces grazing the
+                    // light; the shader's normal offset does the rest.
+                    depth: Depth {
+                        bias: wgpu::DepthBiasState { constant: 2, slope_scale: 2.0, clamp: 0.0 },
+                        ..Depth::opaque()
+                    },
+                    blend: None,
+                    sample_count: 1,
+                },
+            )
+        };
+        let mesh = |label, cull| {
+            build(
+                device,
+                format,
+                Spec {
+                    label,
+                    layout: &main_layout,
+                    module: &mesh_module,
+                    vs: "vs_main",
+                    fs: Some("fs_main"),
+                    buffers: &mesh_buffers,
+                    cull,
+                    depth: Depth::opaque(),
+                    blend: None,
+                    sample_count: samples,
+                },
+            )
+        };
+        let line_buffers = [Some(LineInstance::layout())];
+        let cube_buffers = [Some(Vertex::layout()), Some(CubeInstance::layout())];
+        let feedback = |label, vs, fs, buffers, compare, write| {
+            build(
+                device,
+                format,
+                Spec {
+                    label,
+                    layout: &main_layout,
+                    module: &feedback_module,
+                    vs,
+                    fs: Some(fs),
+                    buffers,
+                    cull: Some(wgpu::Face::Back),
+                    depth: Depth { write, ..Depth::test_only(compare) },
+                    blend: alpha,
+                    sample_count: samples,
+                },
+            )
+        };
+        Self {
+            shadow_solid: shadow("shadow pipeline (solid)", Some(wgpu::Face::Back)),
+            shadow_two_sided: shadow("shadow pipeline (two-sided)", None),
+            flat: build(
+                device,
+                format,
+                Spec {
+                    label: "flat pipeline",
+                    layout: &main_layout,
+                    module: &flat_module,
+                    vs: "vs_main",
+                    fs: Some("fs_main"),
+                    buffers: &mesh_buffers,
+                    cull: Some(wgpu::Face::Back),
+                    depth: Depth::opaque(),
+                    blend: None,
+                    sample_count: samples,
+                },
+            ),
+            grid: build(
+                device,
+                format,
+                Spec {
+                    label: "grid pipeline",
+                    layout: &main_layout,
+                    module: &grid_module,
+                    vs: "vs_main",
+                    fs: Some("fs_main"),
+                    buffers: &[Some(StripInstance::layout())],
+                    cull: None,
+                    depth: Depth::test_only(LessEqual),
+                    // Multiplicative: the strip darkens what the table shows.
+                    blend: Some(wgpu::BlendState {
+                        color: wgpu::BlendComponent {
+                            src_factor: wgpu::BlendFactor::Dst,
+                            dst_factor: wgpu::BlendFactor::Zero,
+                            operation: wgpu::BlendOperation::Add,
+                        },
+                        alpha: wgpu::BlendComponent {
+                            src_factor: wgpu::BlendFactor::Zero,
+                            dst_factor: wgpu::BlendFactor::One,
+                            operation: wgpu::BlendOperation::Add,
+                        },
+                    }),
+                    sample_count: samples,
+                },
+            ),
+            mesh_solid: mesh("mesh pipeline (solid)", Some(wgpu::Face::Back)),
+            mesh_two_sided: mesh("mesh pipeline (two-sided)", None),
+            decal: build(
+                device,
+                format,
+                Spec {
+                    label: "decal pipeline",
+                    layout: &main_layout,
+                    module: &decal_module,
+                    vs: "vs_main",
+                    fs: Some("fs_main"),
+                    buffers: &[Some(DecalInstance::layout())],
+                    cull: None,
+                    depth: Depth::test_only(LessEqual),
+                    blend: alpha,
+                    sample_count: samples,
+                },
+            ),
+            overlay: build(
+                device,
+                format,
+                Spec {
+                    label: "overlay pipeline",
+                    layout: &overlay_pipeline_layout,
+                    module: &overlay_module,
+                    vs: "vs_main",
+                    fs: Some("fs_main"),
+                    buffers: &[Some(OverlayRegion::layout())],
+                    cull: None,
+                    depth: Depth::test_only(LessEqual),
+                    blend: alpha,
+                    sample_count: samples,
+                },
+            ),
+            // Lines are quads whose winding depends on the screen direction:
+            // no culling.
+            feedback_lines_hidden: build(
+                device,
+                format,
+                Spec {
+                    label: "feedback lines pipeline (hidden parts)",
+                    layout: &main_layout,
+                    module: &feedback_module,
+                    vs: "vs_line",
+                    fs: Some("fs_hidden"),
+                    buffers: &line_buffers,
+                    cull: None,
+                    depth: Depth::test_only(Greater),
+                    blend: alpha,
+                    sample_count: samples,
+                },
+            ),
+            feedback_lines_visible: build(
+                device,
+                format,
+                Spec {
+                    label: "feedback lines pipeline (visible parts)",
+                    layout: &main_layout,
+                    module: &feedback_module,
+                    vs: "vs_line",
+                    fs: Some("fs_visible"),
+                    buffers: &line_buffers,
+                    cull: None,
+                    depth: Depth { write: true, ..Depth::test_only(LessEqual) },
+                    blend: alpha,
+                    sample_count: samples,
+                },
+            ),
+            feedback_cubes_hidden: feedback(
+                "feedback cubes pipeline (hidden parts)",
+                "vs_cube",
+                "fs_hidden",
+                &cube_buffers,
+                Greater,
+                false,
+            ),
+            feedback_cubes_visible: feedback(
+                "feedback cubes pipeline (visible parts)",
+                "vs_cube",
+                "fs_visible",
+                &cube_buffers,
+                LessEqual,
+                true,
+            ),
+            frame_layout,
+            shadow_pass_layout,
+            overlay_layout,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::SHADERS;
+    use wgpu::naga;
+
+    /// Every shader parses and validates without a GPU, so a broken shader
+    /// fails here with a readable message, not at pipeline creation.
+    #[test]
+    fn shaders_validate() {
+        for (name, source) in SHADERS {
+            let module = naga::front::wgsl::parse_str(source)
+                .unwrap_or_else(|e| panic!("{name}.wgsl: {}", e.emit_to_string(source)));
+            naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::default())
+                .validate(&module)
+                .unwrap_or_else(|e| panic!("{name}.wgsl: {}", e.emit_to_string(source)));
+        }
+    }
+}

@@ -1,0 +1,47 @@
+//! The shadow map: depth of the casters seen from the light, sampled with a
+//! comparison sampler by every lit shader.
+//!
+//! Why a shadow map and not planar projected shadows: shadows here fall on
+//! several receivers (the table, the raised steering platform, other objects,
+//! draped cloth), and planar shadows need one projection (and a stencil pass
+//! against double blending) per receiving plane and cannot shadow curved
+//! receivers at all. The map's projection (see [`crate::render::light`]) is
+//! aligned with the table, and its 1024² depth-only pass costs about a
+//! millisecond on lavapipe (see `benches/render.rs`).
+
+use crate::render::targets::DEPTH_FORMAT;
+
+#[derive(Debug)]
+pub struct ShadowMap {
+    pub view: wgpu::TextureView,
+    pub sampler: wgpu::Sampler,
+}
+
+impl ShadowMap {
+    pub fn new(device: &wgpu::Device, size: u32) -> Self {
+        let texture = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("shadow map"),
+            size: wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format: DEPTH_FORMAT,
+            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+            view_formats: &[],
+        });
+        let view =
+            texture.create_view(&wgpu::TextureViewDescriptor { label: Some("shadow map view"), ..Default::default() });
+        let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
+            label: Some("shadow comparison sampler"),
+            address_mode_u: wgpu::AddressMode::ClampToEdge,
+            address_mode_v: wgpu::AddressMode::ClampToEdge,
+            address_mode_w: wgpu::AddressMode::ClampToEdge,
+            // Linear filtering of the comparison results: 2x2 PCF for free.
+            mag_filter: wgpu::FilterMode::Linear,
+            min_filter: wgpu::FilterMode::Linear,
+            compare: Some(wgpu::CompareFunction::LessEqual),
+            ..Default::default()
+        });
+        Self { view, sampler }
+    }
+}

@@ -1,0 +1,131 @@
+//! Golden images of the real task scenes, drawn through the same
+//! session → draw-list path as the demo and `surfacelab screenshot`.
+//!
+//! References live in `tests/snapshots/`; a failing run writes
+//! `NAME.new.png` and `NAME.diff.png` beside them; `UPDATE_SNAPSHOTS=1`
+//! refreshes them. A machine with no GPU adapter fails with the Mesa
+//! install hint (it never skips).
+
+use surfacelab::render::snapshot::{SnapshotDir, Tolerance};
+use surfacelab::render::{self, GpuContext, ViewOptions};
+use surfacelab::scene;
+use surfacelab::session::{Session, SessionOptions};
+use surfacelab::surface::Gesture;
+use surfacelab::technique::TechniqueKind;
+
+/// Set on lavapipe, "llvmpipe (LLVM 15.0.6, 256 bits)": 12/255 per channel,
+/// at most 0.5% of pixels (antialiased edges and shadow-map texels differ
+/// slightly between drivers and LLVM versions).
+const TOLERANCE: Tolerance = Tolerance { per_pixel: 12, max_differing_share: 0.005 };
+const SIZE: (u32, u32) = (480, 360);
+
+fn root(p: &str) -> String {
+    format!("{}/{p}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn gpu() -> GpuContext {
+    GpuContext::new_headless().unwrap_or_else(|e| panic!("these tests need a GPU adapter: {e}"))
+}
+
+fn snapshots() -> SnapshotDir {
+    SnapshotDir::new(root("tests/snapshots"))
+}
+
+/// A fingertip landing on the sorting scene's big red box (5 cm tall, so
+/// it appears 4% further out on screen) and dragging it left.
+const DRAG_RED_BOX: &str = r#"
+format = "surfacelab-gesture"
+version = 1
+[[hands]]
+id = 1
+kind = "fingertips"
+[[hands.keys]]
+t = 0.0
+pos = [0.052, 0.167]
+[[hands.keys]]
+t = 1.0
+pos = [-0.1, 0.167]
+"#;
+
+fn session_at(task: &str, kind: TechniqueKind, gesture: Option<&str>, at: f64) -> Session {
+    let scene = scene::load(&root(task)).expect("scene");
+    let mut s = Session::new(&scene, kind, SessionOptions::default()).expect("session");
+    match gesture {
+        Some(g) => {
+            let g = if g.trim_start().starts_with("format") { Gesture::from_str(g, "inline") } else { Gesture::load(root(g)) }.expect("gesture");
+            s.replay_until(&g, at).expect("replay");
+        }
+        None => {
+            while s.time() < at {
+                s.step(&[]).expect("step");
+            }
+        }
+    }
+    s
+}
+
+#[test]
+fn each_task_scene_matches_its_golden_image() {
+    let gpu = gpu();
+    for task in ["positioning", "sorting", "steering"] {
+        let s = session_at(&format!("tasks/{task}.toml"), TechniqueKind::Proxy, None, 0.25);
+        let img = render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1).expect("render");
+        snapshots().check(&format!("task_{task}"), &img, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
+    }
+}
+
+#[test]
+fn feedback_on_and_off_differ_exactly_by_red_feedback_for_every_technique() {
+    let gpu = gpu();
+    for kind in TechniqueKind::ALL {
+        // Mid-gesture: a fingertip dragging a box.
+        let s = session_at("tasks/sorting.toml", kind, Some(DRAG_RED_BOX), 0.6);
+        let off = render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions { feedback: false, contact_overlay: false }), SIZE.0, SIZE.1).expect("render");
+        let on_list = render::draw_list(&s, ViewOptions { feedback: true, contact_overlay: false });
+        assert!(!on_list.feedback.is_empty() || kind == TechniqueKind::Direct, "{kind}: no feedback geometry mid-gesture");
+        let on = render::render_to_image(&gpu, &on_list, SIZE.0, SIZE.1).expect("render");
+        let mut differing = 0;
+        let mut red = 0;
+        for (a, b) in off.pixels().zip(on.pixels()) {
+            if a.0.iter().zip(b.0.iter()).any(|(x, y)| x.abs_diff(*y) > 12) {
+                differing += 1;
+                let [r, g, bl, _] = b.0;
+                if u16::from(r) > u16::from(g) + 40 && u16::from(r) > u16::from(bl) + 40 {
+                    red += 1;
+                }
+            }
+        }
+        if !on_list.feedback.is_empty() {
+            assert!(differing > 20, "{kind}: feedback changed only {differing} pixels");
+            assert!(red * 100 >= differing * 90, "{kind}: {red} of {differing} changed pixels are red");
+        }
+        snapshots().check(&format!("feedback_{kind}"), &on, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
+    }
+}
+
+#[test]
+fn the_contact_overlay_shadows_where_the_hands_are() {
+    let gpu = gpu();
+    let s = session_at("tasks/sorting.toml", TechniqueKind::Particle, Some("assets/gestures/flat_hand_sweep.toml"), 0.5);
+    let plain = render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1).expect("render");
+    let shadow = render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true }), SIZE.0, SIZE.1).expect("render");
+    // Darker where the surface senses a hand, unchanged elsewhere.
+    let img = s.image();
+    let mut darker = 0;
+    let mut sensed = 0;
+    for (x, y, p) in shadow.enumerate_pixels() {
+        let c = (x as usize * img.width / SIZE.0 as usize, y as usize * img.height / SIZE.1 as usize);
+        let q = plain.get_pixel(x, y);
+        let lum = |v: &image::Rgba<u8>| u32::from(v.0[0]) + u32::from(v.0[1]) + u32::from(v.0[2]);
+        if img.pixels[c.1 * img.width + c.0] > 200 {
+            sensed += 1;
+            if lum(p) + 30 < lum(q) {
+                darker += 1;
+            }
+        } else if img.pixels[c.1 * img.width + c.0] == 0 {
+            assert!(lum(p).abs_diff(lum(q)) < 40, "overlay changed an untouched pixel at ({x}, {y})");
+        }
+    }
+    assert!(sensed > 100 && darker * 100 >= sensed * 60, "{darker} of {sensed} sensed pixels darker");
+    snapshots().check("contact_overlay", &shadow, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
+}
