@@ -7,6 +7,7 @@ mod doctor;
 mod run;
 mod screenshot;
 mod study;
+mod tradeoff;
 
 use crate::technique::TechniqueKind;
 use clap::{Args, Parser, Subcommand};
@@ -232,30 +233,36 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
         Command::Study(args) => study::run(&args),
         Command::Screenshot(args) => screenshot::run(&args),
         Command::Contact(args) => contact::run(&args),
-        Command::Tradeoff(_) => Ok(not_yet("tradeoff", "the accuracy-versus-time report")),
+        Command::Tradeoff(args) => tradeoff::run(&args),
     }
 }
 
 /// What `surfacelab` does with no display: the headless job, so the
-/// README's main command is useful on a server or in CI.
+/// README's main command is useful on a server or in CI — a one-participant
+/// scripted study (18 measured trials) with its CSVs and figure.
 fn headless_main() -> anyhow::Result<ExitCode> {
-    eprintln!("surfacelab: no display, so no demo window; running the headless job instead");
-    doctor::run();
-    for task in ["positioning", "sorting", "steering"] {
-        let scene = crate::scene::load(task)?;
-        let mut world = crate::world::World::new(&scene);
-        for _ in 0..120 {
-            world.step();
-        }
-        println!(
-            "scene {task}: {} objects, effects {}, 120 steps, mean step {:.1} us ({})",
-            scene.objects.len(),
-            scene.effects,
-            world.stats().mean_step_us(),
-            scene.origin
-        );
-    }
-    Ok(ExitCode::SUCCESS)
+    eprintln!("surfacelab: no display, so no demo window; running a small scripted study headless instead");
+    let _ = doctor::run();
+    let stamp = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
+    let out = PathBuf::from(format!("out/headless-study-{stamp}"));
+    let args = StudyArgs {
+        action: None,
+        out,
+        participants: Some(1),
+        seed: None,
+        reps: Some(1),
+        techniques: None,
+        tasks: None,
+        no_practice: true,
+        time_limit: None,
+        from: None,
+        resume: None,
+        shard: None,
+        jobs: 0,
+        replay: None,
+        no_progress: false,
+    };
+    study::run(&args)
 }
 
 /// A subcommand whose issue has not landed: say so plainly, exit 2.

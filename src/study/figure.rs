@@ -18,12 +18,11 @@ use plotters::coord::Shift;
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::prelude::*;
 use std::path::Path;
-use std::sync::OnceLock;
 
 /// Colour of the bars with visual feedback ("FB" in the paper's figure).
 const FEEDBACK_ON: RGBColor = RGBColor(31, 119, 180);
 const FEEDBACK_OFF: RGBColor = RGBColor(255, 127, 14);
-const FONT: &str = "sans-serif";
+use crate::plot_font::FONT;
 const PANEL_WIDTH: u32 = 440;
 const HEIGHT: u32 = 600;
 // Text sizes. plotters' ab_glyph renderer drops each glyph's left side
@@ -47,10 +46,7 @@ pub fn write_figure(design: &StudyDesign, summary: &[SummaryRow], png: &Path, sv
 }
 
 fn ensure_font(path: &Path) -> Result<(), StudyError> {
-    static REGISTERED: OnceLock<bool> = OnceLock::new();
-    let ok =
-        *REGISTERED.get_or_init(|| plotters::style::register_font(FONT, FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT).is_ok());
-    if ok { Ok(()) } else { Err(StudyError::Plot { path: path.to_owned(), message: "the bundled font did not load".into() }) }
+    if crate::plot_font::ensure_font() { Ok(()) } else { Err(StudyError::Plot { path: path.to_owned(), message: "the bundled font did not load".into() }) }
 }
 
 /// `sorting` → `Sorting`, for panel captions.

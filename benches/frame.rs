@@ -1,0 +1,65 @@
+//! Goal P1: one frame from surface to physics — two flat hands on a
+//! 640×480 contact image → vision → ~1000 particles → one step of the
+//! sorting scene — with the paper's create/destroy particles against
+//! pooled particles. Prints a table of per-stage means.
+//!
+//! `cargo bench --bench frame`
+
+use surfacelab::scene;
+use surfacelab::session::{Session, SessionOptions, StageTimes};
+use surfacelab::surface::{Hand, HandKind};
+use surfacelab::technique::{TechniqueConfig, TechniqueKind};
+
+const WARMUP: usize = 60;
+const FRAMES: usize = 600;
+
+fn hands(k: usize) -> Vec<Hand> {
+    // Two flat hands sliding slowly over the sorting objects.
+    let t = k as f32 / 60.0;
+    vec![
+        Hand::new(1, HandKind::FlatHand, -0.12 + 0.04 * (t * 0.7).sin(), 0.02).with_pressure(1.0),
+        Hand::new(2, HandKind::FlatHand, 0.12 - 0.04 * (t * 0.7).sin(), -0.05).with_angle(0.4).with_pressure(1.0),
+    ]
+}
+
+fn run(pooled: bool) -> (StageTimes, usize) {
+    let scene = scene::load("sorting").expect("scene");
+    let config = TechniqueConfig { particle_pooled: pooled, particle_stride: 2, ..TechniqueConfig::default() };
+    let mut s = Session::new(&scene, TechniqueKind::Particle, SessionOptions { config: Some(config), ..SessionOptions::default() }).expect("session");
+    for k in 0..WARMUP {
+        s.step(&hands(k)).expect("step");
+    }
+    let mut sum = StageTimes::default();
+    let mut particles = 0;
+    for k in WARMUP..WARMUP + FRAMES {
+        s.step(&hands(k)).expect("step");
+        let t = s.last_times();
+        sum.rasterize_us += t.rasterize_us;
+        sum.vision_us += t.vision_us;
+        sum.technique_us += t.technique_us;
+        sum.step_us += t.step_us;
+        particles += s.counts().bodies;
+    }
+    let n = FRAMES as f64;
+    (
+        StageTimes { rasterize_us: sum.rasterize_us / n, vision_us: sum.vision_us / n, technique_us: sum.technique_us / n, step_us: sum.step_us / n },
+        particles / FRAMES,
+    )
+}
+
+fn main() {
+    // `cargo test` runs benches with --bench absent; do nothing then.
+    if !std::env::args().any(|a| a == "--bench") {
+        return;
+    }
+    println!("| variant | particles | rasterize µs | vision µs | technique µs | step µs | total ms |");
+    println!("|---|---|---|---|---|---|---|");
+    let mut totals = Vec::new();
+    for pooled in [false, true] {
+        let (t, n) = run(pooled);
+        let name = if pooled { "pooled" } else { "create/destroy (paper)" };
+        println!("| {name} | {n} | {:.0} | {:.0} | {:.0} | {:.0} | {:.2} |", t.rasterize_us, t.vision_us, t.technique_us, t.step_us, t.total_us() / 1000.0);
+        totals.push(t.total_us());
+    }
+    println!("\npooled is {:.2}x faster than create/destroy per frame (goal: <= 2 ms and >= 5x)", totals[0] / totals[1]);
+}
