@@ -2,7 +2,7 @@
 //! circle, and the entrance block against the brute force and parry2d at
 //! equal accuracy.
 
-use super::report::Row;
+use super::row::Row;
 use crate::contact::{self, CircleFit, ConvexPolygon, EntranceBlock, Vec2, discretize_circle};
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query;

@@ -6,6 +6,8 @@ mod geometry;
 mod pareto;
 mod pipeline;
 mod report;
+mod row;
 
 pub use pareto::{Point, pareto_front};
-pub use report::{Row, TradeoffOptions, run_tradeoff};
+pub use report::{TradeoffOptions, run_tradeoff};
+pub use row::Row;

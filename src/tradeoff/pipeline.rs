@@ -3,7 +3,7 @@
 //! technique: the paper's most resolution-hungry condition) and compared
 //! against a high-accuracy reference run of the same input.
 
-use super::report::Row;
+use super::row::Row;
 use crate::participant::{Skill, run_scripted};
 use crate::scene::{self, Scene};
 use crate::session::{Session, SessionOptions};
