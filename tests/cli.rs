@@ -1,0 +1,134 @@
+//! The command-line contract, driven through the real binary.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+fn bin() -> Command {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_surfacelab"));
+    c.current_dir(env!("CARGO_MANIFEST_DIR"));
+    c
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("surfacelab-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("temp dir");
+    d
+}
+
+fn text(o: &Output) -> String {
+    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
+}
+
+#[test]
+fn run_writes_the_documented_report() {
+    let dir = tmp("run");
+    let report = dir.join("r.json");
+    let o = bin()
+        .args(["run", "--task", "tasks/cases/one_box.toml", "--technique", "proxy", "--gesture", "assets/gestures/fingertip_drag.toml", "--report"])
+        .arg(&report)
+        .output()
+        .expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&report).expect("report")).expect("json");
+    for key in ["steps", "wall_time_s", "objects", "max_speed", "max_penetration", "nan_count", "completion", "stage_means_us"] {
+        assert!(r.get(key).is_some(), "report lacks {key}: {r}");
+    }
+    assert_eq!(r["nan_count"], 0);
+    let x = r["objects"][0]["position"][0].as_f64().expect("x");
+    assert!(x > 0.08, "the proxy drag moved the box {x} m");
+}
+
+#[test]
+fn bad_inputs_exit_2_and_name_the_file_and_field() {
+    let dir = tmp("bad");
+    let scene = dir.join("broken.toml");
+    std::fs::write(&scene, "name = \"x\"\neffects = [\"gravity\"]\n[table]\nsize = [1.0, 0.75]\n[[objects]]\nname = \"a\"\nshape = \"box\"\nsize = [0.1, 0.1, 0.1]\nmass = -1.0\ncolor = \"red\"\nposition = [0.0, 0.0]\n").expect("write");
+    let o = bin().args(["run", "--technique", "joint", "--gesture", "assets/gestures/flick.toml", "--task"]).arg(&scene).output().expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("broken.toml") && text(&o).contains("objects[0].mass"), "{}", text(&o));
+
+    let gesture = dir.join("g.toml");
+    std::fs::write(&gesture, "format = \"surfacelab-gesture\"\nversion = 1\n[[hands]]\nid = 1\nkind = \"tentacle\"\n[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\n").expect("write");
+    let o = bin().args(["run", "--task", "positioning", "--technique", "joint", "--gesture"]).arg(&gesture).output().expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("g.toml") && text(&o).contains("tentacle"), "{}", text(&o));
+
+    let o = bin().args(["run", "--task", "positioning", "--technique", "telekinesis", "--gesture", "x"]).output().expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+
+    let mut child = bin().args(["contact", "-"]).stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().expect("spawn");
+    std::io::Write::write_all(child.stdin.as_mut().expect("stdin"), br#"{"a": [[0,0],[1,0],[1,1],[0.9,0.2]], "b": [[3,0],[4,0],[3,1]]}"#).expect("write");
+    let o = child.wait_with_output().expect("wait");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("polygon `a`"), "{}", text(&o));
+}
+
+#[test]
+fn contact_answers_one_line_of_json() {
+    let dir = tmp("contact");
+    let f = dir.join("q.json");
+    std::fs::write(&f, r#"{"a": [[0,0],[1,0],[1,1],[0,1]], "b": [[0.5,0.5],[2,0.5],[2,2],[0.5,2]]}"#).expect("write");
+    let o = bin().arg("contact").arg(&f).output().expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert_eq!(out.trim().lines().count(), 1);
+    let v: serde_json::Value = serde_json::from_str(out.trim()).expect("json");
+    assert_eq!(v["relation"], "intersecting");
+    assert!((v["distance"].as_f64().expect("d") + 0.5).abs() < 1e-9, "{v}");
+}
+
+#[test]
+fn screenshot_writes_a_png_headless() {
+    let dir = tmp("shot");
+    let png = dir.join("s.png");
+    let o = bin()
+        .args(["screenshot", "--task", "steering", "--technique", "proxy", "--feedback", "--size", "320x240", "--out"])
+        .arg(&png)
+        .output()
+        .expect("runs");
+    assert!(o.status.success(), "needs a GPU adapter (apt-get install mesa-vulkan-drivers libvulkan1): {}", text(&o));
+    let img = image::open(&png).expect("png").to_rgba8();
+    assert_eq!(img.dimensions(), (320, 240));
+    let o = bin().args(["screenshot", "--size", "big", "--out"]).arg(&png).output().expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+}
+
+fn study_args(out: &Path) -> Command {
+    let mut c = bin();
+    c.args(["study", "--participants", "2", "--reps", "1", "--no-practice", "--tasks", "steering", "--no-progress", "--jobs", "1", "--seed", "7", "--out"]).arg(out);
+    c
+}
+
+#[test]
+fn a_study_killed_with_sigkill_resumes_to_the_same_trials() {
+    let full = tmp("study-full");
+    let o = study_args(&full.join("run")).output().expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let expected = std::fs::read_to_string(full.join("run/trials.csv")).expect("trials");
+    assert_eq!(expected.lines().count(), 1 + 2 * 3 * 2, "{expected}");
+
+    // Kill it once a few rows are on disk, then resume.
+    let killed = tmp("study-killed");
+    let run = killed.join("run");
+    let mut child = study_args(&run).stdout(Stdio::null()).stderr(Stdio::null()).spawn().expect("spawn");
+    let t0 = Instant::now();
+    loop {
+        let rows = std::fs::read_to_string(run.join("trials.csv")).map_or(0, |s| s.lines().count());
+        if rows >= 3 || t0.elapsed() > Duration::from_secs(120) {
+            break;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.kill().expect("SIGKILL"); // kill(2) with SIGKILL on Unix
+    let _ = child.wait();
+    let partial = std::fs::read_to_string(run.join("trials.csv")).unwrap_or_default();
+    assert!(partial.lines().count() < expected.lines().count(), "the kill came too late to test anything");
+    let o = bin().args(["study", "--no-progress", "--resume"]).arg(&run).output().expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    assert_eq!(std::fs::read_to_string(run.join("trials.csv")).expect("trials"), expected, "resumed run differs from the uninterrupted one");
+    for f in ["summary.csv", "figure.png", "figure.svg", "run.toml"] {
+        assert!(run.join(f).is_file(), "{f} missing");
+    }
+}
