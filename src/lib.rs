@@ -20,6 +20,7 @@
 //! - [`render`]: the wgpu renderer, on screen or off screen.
 //! - [`cli`]: the command line, which only wires these together.
 
+pub mod app;
 pub mod cli;
 pub mod contact;
 pub mod goal;

@@ -3,6 +3,7 @@
 //! library modules, this layer only wires them together.
 
 mod contact;
+mod demo;
 mod doctor;
 mod run;
 mod screenshot;
@@ -50,6 +51,42 @@ pub struct DemoArgs {
     /// Show the technique's feedback (joint lines, proxy cubes, particles).
     #[arg(long)]
     pub feedback: bool,
+    /// Start with the contact-image overlay (the hand shadow) off.
+    #[arg(long)]
+    pub no_contact_overlay: bool,
+    /// Listen for TUIO 1.1 over UDP on PORT (default 3333).
+    #[arg(long, value_name = "PORT", num_args = 0..=1, default_missing_value = "3333")]
+    pub tuio: Option<u16>,
+    /// Address the TUIO socket binds to (default 127.0.0.1; 0.0.0.0 for a tracker on another machine).
+    #[arg(long, value_name = "ADDR")]
+    pub tuio_bind: Option<std::net::IpAddr>,
+    /// Replay a gesture file as live input, from the start of the session.
+    #[arg(long, value_name = "GESTURE_FILE")]
+    pub script: Option<PathBuf>,
+    /// Save a PNG of the window once SECONDS have passed.
+    #[arg(long, num_args = 2, value_names = ["SECONDS", "PATH"])]
+    pub screenshot_after: Option<Vec<String>>,
+    /// Close the window after SECONDS.
+    #[arg(long, value_name = "SECONDS", value_parser = parse_seconds)]
+    pub quit_after: Option<f32>,
+    /// Window size in logical pixels, width x height (default 1280x800).
+    #[arg(long, value_name = "WxH", value_parser = screenshot::parse_size)]
+    pub window: Option<(u32, u32)>,
+    /// Folder for recordings (gestures/) and screenshots (screenshots/).
+    #[arg(long, default_value = "out")]
+    pub out: PathBuf,
+    /// Participant mode: no panel; the task runs as study trials of this participant (1-based ID).
+    #[arg(long, value_name = "ID")]
+    pub participant: Option<u32>,
+    /// Participant mode's condition, e.g. particle:on.
+    #[arg(long, value_name = "TECHNIQUE:on|off", conflicts_with_all = ["technique", "feedback"])]
+    pub condition: Option<String>,
+    /// Participant mode: trials.csv to append rows to (default out/participants/trials.csv).
+    #[arg(long, value_name = "FILE")]
+    pub trials_csv: Option<PathBuf>,
+    /// Participant mode: trials in this sitting (default 2).
+    #[arg(long, value_name = "N")]
+    pub reps: Option<u32>,
 }
 
 #[derive(Debug, Args)]
@@ -192,11 +229,7 @@ pub const EXIT_USAGE: u8 = 2;
 pub fn main() -> ExitCode {
     init_tracing();
     let cli = Cli::parse();
-    let command = cli.command.unwrap_or(Command::Demo(DemoArgs {
-        task: "positioning".into(),
-        technique: TechniqueKind::Particle,
-        feedback: false,
-    }));
+    let command = cli.command.unwrap_or_else(|| Command::Demo(DemoArgs::default()));
     match run(command) {
         Ok(code) => code,
         Err(e) => {
@@ -228,7 +261,7 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
     match command {
         Command::Doctor => Ok(doctor::run()),
         Command::Demo(_) if !doctor::has_display() => headless_main(),
-        Command::Demo(_) => Ok(not_yet("demo", "the desktop demo")),
+        Command::Demo(args) => demo::run(&args),
         Command::Run(args) => run::run(&args),
         Command::Study(args) => study::run(&args),
         Command::Screenshot(args) => screenshot::run(&args),
@@ -263,10 +296,4 @@ fn headless_main() -> anyhow::Result<ExitCode> {
         no_progress: false,
     };
     study::run(&args)
-}
-
-/// A subcommand whose issue has not landed: say so plainly, exit 2.
-fn not_yet(cmd: &str, needs: &str) -> ExitCode {
-    eprintln!("surfacelab {cmd}: not available yet (it needs {needs}, which has not landed)");
-    ExitCode::from(EXIT_USAGE)
 }

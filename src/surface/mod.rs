@@ -7,6 +7,7 @@ mod mouse;
 mod raster;
 mod sensor;
 mod shape;
+pub mod tuio;
 
 pub use gesture::{FORMAT, Gesture, GestureError, GestureRecorder, Key, Track, VERSION};
 pub use hand::{Hand, HandKind, Pose};

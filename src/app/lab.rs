@@ -1,0 +1,451 @@
+//! The demo's state apart from the window: the running session and what
+//! the panel changes, the merged input, the physics clock, recording,
+//! participant trials and statistics. The window only feeds it events and
+//! time, and draws what it holds; nothing here needs a display.
+
+use super::DemoOptions;
+use super::clock::Clock;
+use super::input::Input;
+use super::participant::{Phase, Trials};
+use super::record::{Recording, timestamped};
+use super::stats::Stats;
+use super::tuio::TuioListener;
+use crate::render::{self, DrawList, GpuContext, ViewOptions};
+use crate::scene::{self, Goal, Scene};
+use crate::session::{Session, SessionOptions};
+use crate::study::TrialResult;
+use crate::technique::{TechniqueConfig, TechniqueKind};
+use anyhow::Context;
+use std::path::PathBuf;
+
+/// At most this many physics steps per frame (see [`Clock`]): real time
+/// is kept down to 10 frames per second (software rendering manages 15-25).
+const MAX_STEPS_PER_FRAME: u32 = 6;
+/// Seconds the scene's hint stays over the view after a task opens.
+const HINT_SECONDS: f64 = 10.0;
+/// Seconds a participant sees a trial's result before the next one.
+pub const BETWEEN_TRIALS_S: f64 = 3.0;
+/// Room around the table in the view, as a factor on its half size.
+const VIEW_MARGIN: f32 = 1.03;
+/// Seconds a status message stays in the panel.
+const STATUS_SECONDS: f64 = 8.0;
+
+/// Everything the demo shows and changes.
+#[derive(Debug)]
+pub struct Lab {
+    pub session: Session,
+    /// The task as given: a name under `tasks/` or a path.
+    pub task: String,
+    pub view: ViewOptions,
+    pub paused: bool,
+    step_requests: u32,
+    clock: Clock,
+    pub input: Input,
+    recording: Option<Recording>,
+    /// Folder under which gestures/ and screenshots/ are written.
+    pub out_dir: PathBuf,
+    pub stats: Stats,
+    status: Option<(String, f64)>,
+    pub participant: Option<Trials>,
+    /// Wall-clock seconds since the demo opened (set by the window).
+    pub wall: f64,
+    hint_until: f64,
+}
+
+impl Lab {
+    pub fn new(options: &DemoOptions) -> anyhow::Result<Self> {
+        let scene = scene::load(&options.task)?;
+        let session = Session::new(&scene, options.technique, SessionOptions::default())?;
+        let tuio = options
+            .tuio
+            .map(|addr| {
+                TuioListener::bind(addr)
+                    .with_context(|| format!("--tuio: cannot listen on UDP {addr}"))
+            })
+            .transpose()?;
+        let participant = options
+            .participant
+            .clone()
+            .map(|p| Trials::open(p, &options.task))
+            .transpose()?;
+        Ok(Self {
+            session,
+            task: options.task.clone(),
+            view: ViewOptions {
+                feedback: options.feedback,
+                contact_overlay: options.contact_overlay,
+            },
+            paused: false,
+            step_requests: 0,
+            clock: Clock::new(f64::from(scene.physics.dt), MAX_STEPS_PER_FRAME),
+            input: Input::new(options.script.clone(), tuio),
+            recording: None,
+            out_dir: options.out_dir.clone(),
+            stats: Stats::default(),
+            status: None,
+            participant,
+            wall: 0.0,
+            hint_until: HINT_SECONDS,
+        })
+    }
+
+    pub fn scene(&self) -> &Scene {
+        self.session.scene()
+    }
+
+    /// Table [width, depth] in metres.
+    pub fn table(&self) -> [f32; 2] {
+        let t = &self.scene().table;
+        [t.width, t.depth]
+    }
+
+    pub fn technique(&self) -> TechniqueKind {
+        self.session.technique_kind()
+    }
+
+    /// Opens another task with its own technique defaults.
+    pub fn load_task(&mut self, task: &str) -> anyhow::Result<()> {
+        let scene = scene::load(task)?;
+        let session = Session::new(&scene, self.technique(), SessionOptions::default())?;
+        self.stop_recording();
+        self.session = session;
+        task.clone_into(&mut self.task);
+        self.clock = Clock::new(f64::from(scene.physics.dt), MAX_STEPS_PER_FRAME);
+        self.hint_until = self.wall + HINT_SECONDS;
+        self.say(format!("opened {}", scene.origin));
+        Ok(())
+    }
+
+    /// Switches technique, keeping the tuned parameters; the scene restarts.
+    pub fn set_technique(&mut self, kind: TechniqueKind) -> anyhow::Result<()> {
+        let config = self.session.config_mut().clone();
+        self.restart(kind, Some(config))
+    }
+
+    /// A fresh session of the same scene (time 0, objects back, a running
+    /// script from its start); tuned parameters are kept.
+    pub fn reset(&mut self) -> anyhow::Result<()> {
+        self.set_technique(self.technique())
+    }
+
+    /// Technique parameters back to the scene's defaults; the scene restarts.
+    pub fn default_parameters(&mut self) -> anyhow::Result<()> {
+        self.restart(self.technique(), None)
+    }
+
+    fn restart(
+        &mut self,
+        kind: TechniqueKind,
+        config: Option<TechniqueConfig>,
+    ) -> anyhow::Result<()> {
+        let scene = self.scene().clone();
+        self.session = Session::new(
+            &scene,
+            kind,
+            SessionOptions {
+                config,
+                ..SessionOptions::default()
+            },
+        )?;
+        self.clock.clear();
+        // A recording restarts with the scene, so it replays from this state.
+        if let Some(r) = self.recording.take() {
+            self.recording = Some(Recording::new(r.path().to_path_buf()));
+        }
+        Ok(())
+    }
+
+    /// Steps once on the next frame (while paused).
+    pub fn request_step(&mut self) {
+        self.step_requests += 1;
+    }
+
+    pub fn toggle_pause(&mut self) {
+        self.paused = !self.paused;
+        self.clock.clear();
+    }
+
+    /// Runs the physics steps real time asks for; returns how many ran.
+    pub fn advance(&mut self, elapsed_s: f64) -> u32 {
+        let due = if self.paused {
+            self.clock.clear();
+            std::mem::take(&mut self.step_requests)
+        } else {
+            self.clock.advance(elapsed_s)
+        };
+        if !self.participant_gate() {
+            return 0;
+        }
+        let table = self.table();
+        let mut ran = 0;
+        for _ in 0..due {
+            let t = self.session.time();
+            let hands = self.input.hands(t, table);
+            if let Err(e) = self.session.step(&hands) {
+                self.paused = true;
+                self.say(format!("physics stopped: {e:#}"));
+                break;
+            }
+            ran += 1;
+            self.stats.push_stages(&self.session.last_times());
+            if let Some(r) = &mut self.recording {
+                r.record(t, &hands);
+            }
+            if self.participant.is_some() && self.end_trial_if_over() {
+                break;
+            }
+        }
+        ran
+    }
+
+    /// Participant mode: whether the session may step now, moving through
+    /// the trial phases. Always true otherwise.
+    fn participant_gate(&mut self) -> bool {
+        let table = self.table();
+        let Some(trials) = &mut self.participant else {
+            return true;
+        };
+        match trials.phase {
+            Phase::Running => true,
+            Phase::Ready => {
+                if self.input.hands(self.session.time(), table).is_empty() {
+                    return false;
+                }
+                trials.phase = Phase::Running;
+                if let Some(path) = trials.gesture_path() {
+                    self.recording = Some(Recording::new(path));
+                }
+                true
+            }
+            Phase::Finished { at, .. } => {
+                if self.wall - at >= BETWEEN_TRIALS_S {
+                    trials.next();
+                    if trials.phase == Phase::Ready
+                        && let Err(e) = self.restart(self.technique(), None)
+                    {
+                        self.say(format!("could not start the next trial: {e:#}"));
+                    }
+                }
+                false
+            }
+            Phase::Done => false,
+        }
+    }
+
+    /// Participant mode: after a step, ends the trial if the goal is met or
+    /// the scene's time limit has passed (the study's rules).
+    fn end_trial_if_over(&mut self) -> bool {
+        let p = self.session.progress();
+        let limit = f64::from(self.scene().time_limit_s);
+        if !p.complete && self.session.time() < limit {
+            return false;
+        }
+        let result = TrialResult {
+            completion_time_s: p.completed_at.unwrap_or(self.session.time()),
+            completed: p.complete,
+            restarts: p.restarts,
+            objects_placed: p.placed as u32,
+            steps: self.session.frames(),
+        };
+        self.stop_recording();
+        let wall = self.wall;
+        if let Some(trials) = &mut self.participant
+            && let Err(e) = trials.finish(&result, wall)
+        {
+            // The row could not be written: say so and stop, never lose it silently.
+            self.say(format!("{e:#}"));
+            self.paused = true;
+        }
+        true
+    }
+
+    /// True when participant mode has run all its trials.
+    pub fn finished(&self) -> bool {
+        self.participant
+            .as_ref()
+            .is_some_and(|t| t.phase == Phase::Done)
+    }
+
+    /// What to draw into a view of `size` pixels: the session's draw list
+    /// with the field of view fitted so the whole table shows, with a small
+    /// margin, whatever the view's shape.
+    pub fn draw_list(&self, size: [u32; 2]) -> DrawList {
+        let mut list = render::draw_list(&self.session, self.view);
+        let [w, d] = self.table();
+        let aspect = size[0].max(1) as f32 / size[1].max(1) as f32;
+        let height = list.camera.eye.z;
+        if height > 0.0 {
+            let half = (0.5 * d).max(0.5 * w / aspect) * VIEW_MARGIN;
+            list.camera.fov_y_deg = (2.0 * (half / height).atan()).to_degrees();
+        }
+        list
+    }
+
+    pub fn recording(&self) -> Option<&Recording> {
+        self.recording.as_ref()
+    }
+
+    /// Starts recording to `path` (default `out/gestures/<task>_<time>.toml`)
+    /// from a freshly reset scene.
+    pub fn start_recording(&mut self, path: Option<PathBuf>) -> anyhow::Result<()> {
+        self.stop_recording();
+        self.reset()?;
+        let path =
+            path.unwrap_or_else(|| timestamped(&self.out_dir.join("gestures"), &self.task, "toml"));
+        self.say(format!(
+            "recording to {} (the scene restarted)",
+            path.display()
+        ));
+        self.recording = Some(Recording::new(path));
+        Ok(())
+    }
+
+    /// Saves the recording, if one is running.
+    pub fn stop_recording(&mut self) {
+        let Some(r) = self.recording.take() else {
+            return;
+        };
+        let message = match r.save() {
+            Ok((path, g)) => format!(
+                "saved {:.1} s, {} touches to {}; replay: surfacelab run --task {} --technique {} --gesture {}",
+                g.duration(),
+                g.tracks().len(),
+                path.display(),
+                self.task,
+                self.technique(),
+                path.display()
+            ),
+            Err(e) => format!("recording not saved: {e:#}"),
+        };
+        tracing::info!("{message}");
+        self.say(message);
+    }
+
+    /// Drops the recording, if one is running, without writing it.
+    pub fn discard_recording(&mut self) {
+        self.recording = None;
+    }
+
+    /// Renders the current draw list off-screen at `size` and writes
+    /// `out/screenshots/<task>_<time>.png`.
+    pub fn screenshot(&mut self, gpu: &GpuContext, size: [u32; 2]) {
+        let path = timestamped(&self.out_dir.join("screenshots"), &self.task, "png");
+        let result =
+            render::render_to_image(gpu, &self.draw_list(size), size[0].max(16), size[1].max(16))
+                .and_then(|image| render::save_png(&image, &path));
+        self.say(match result {
+            Ok(()) => format!("screenshot: {}", path.display()),
+            Err(e) => format!("screenshot failed: {e}"),
+        });
+    }
+
+    /// Shows a message in the panel (and the log) for a few seconds.
+    pub fn say(&mut self, message: impl Into<String>) {
+        let message = message.into();
+        tracing::info!("{message}");
+        self.status = Some((message, self.wall));
+    }
+
+    pub fn status(&self) -> Option<&str> {
+        self.status
+            .as_ref()
+            .filter(|(_, at)| self.wall - at < STATUS_SECONDS)
+            .map(|(m, _)| m.as_str())
+    }
+
+    /// The scene's hint while it should still be shown over the view.
+    pub fn hint(&self) -> Option<&str> {
+        (self.wall < self.hint_until && !self.scene().hint.is_empty())
+            .then_some(self.scene().hint.as_str())
+    }
+
+    /// Waypoints of a steering goal (0 otherwise).
+    pub fn waypoints(&self) -> usize {
+        match &self.scene().goal {
+            Goal::Steering(g) => g.waypoints.len(),
+            _ => 0,
+        }
+    }
+
+    /// Real seconds the physics has fallen behind since the start.
+    pub fn behind_s(&self) -> f64 {
+        self.clock.dropped()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::surface::{Button, Gesture, MouseEvent};
+
+    /// What the record button writes replays, through `run`'s path, to
+    /// the very state the demo showed.
+    #[test]
+    fn a_recorded_drag_replays_to_the_same_state() {
+        let dir = std::env::temp_dir().join(format!("surfacelab-lab-{}", std::process::id()));
+        let path = dir.join("drag.toml");
+        let mut lab = Lab::new(&DemoOptions::new(
+            "tasks/cases/one_box.toml",
+            TechniqueKind::Proxy,
+        ))
+        .expect("opens");
+        // Some time passes first: the recording restarts the scene anyway.
+        lab.advance(0.5);
+        lab.start_recording(Some(path.clone())).expect("starts");
+        assert_eq!(lab.session.frames(), 0);
+        let dt = lab.clock.dt();
+        lab.input.mouse.handle(MouseEvent::Moved([-0.05, 0.0]));
+        lab.input.mouse.handle(MouseEvent::Pressed(Button::Left));
+        for i in 0..90 {
+            lab.input.mouse.handle(MouseEvent::Moved([
+                -0.05 + 0.002 * i as f32,
+                0.001 * i as f32,
+            ]));
+            assert_eq!(lab.advance(dt), 1);
+        }
+        lab.input.mouse.handle(MouseEvent::Released(Button::Left));
+        lab.advance(dt);
+        let live = lab.session.world().object_pose(0).position;
+        assert!(live.x > 0.05, "the drag moved the box: {live}");
+        lab.stop_recording();
+        assert!(
+            lab.status().is_some_and(|s| s.contains("saved")),
+            "{:?}",
+            lab.status()
+        );
+
+        let gesture = Gesture::load(&path).expect("a gesture file");
+        let scene = crate::scene::load("tasks/cases/one_box.toml").expect("scene");
+        let mut replay =
+            Session::new(&scene, TechniqueKind::Proxy, SessionOptions::default()).expect("session");
+        while replay.frames() < lab.session.frames() {
+            let hands = gesture.sample(replay.time());
+            replay.step(&hands).expect("steps");
+        }
+        let replayed = replay.world().object_pose(0).position;
+        assert!(
+            (replayed - live).length() < 1e-4,
+            "live {live}, replayed {replayed}"
+        );
+        let _ = std::fs::remove_dir_all(dir);
+    }
+
+    #[test]
+    fn the_view_always_fits_the_whole_table() {
+        let lab = Lab::new(&DemoOptions::new("positioning", TechniqueKind::Joint)).expect("opens");
+        for size in [[960, 800], [1280, 800], [400, 900], [1600, 400]] {
+            let list = lab.draw_list(size);
+            let camera = crate::render::CameraMatrices::for_draw_list(&list, size);
+            let [w, d] = lab.table();
+            for corner in [[-w, -d], [w, d], [-w, d], [w, -d]] {
+                let p = camera
+                    .world_to_pixel(size, glam::Vec3::new(corner[0] / 2.0, corner[1] / 2.0, 0.0))
+                    .expect("in front");
+                assert!(
+                    p.x >= 0.0 && p.y >= 0.0 && p.x <= size[0] as f32 && p.y <= size[1] as f32,
+                    "{size:?}: corner at {p}"
+                );
+            }
+        }
+    }
+}

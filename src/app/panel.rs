@@ -1,0 +1,343 @@
+//! The side panel: task, technique, view and hand choices, technique
+//! parameters, run controls, recording, and live statistics. It changes
+//! simple settings in place and returns [`Action`]s for the rest, which the
+//! window applies after the frame's UI pass.
+
+use super::lab::Lab;
+use super::view::progress_line;
+use crate::surface::{DEGREES_PER_NOTCH, HandKind, MouseEvent, SPREAD_PER_NOTCH};
+use crate::technique::TechniqueKind;
+use egui::{Color32, RichText, Slider};
+use std::path::{Path, PathBuf};
+
+/// Width of the panel in points.
+pub const WIDTH: f32 = 320.0;
+
+/// The hand modes a plain left drag can put down, with their keys 1..9.
+pub const HAND_MODES: [(HandKind, &str); 9] = [
+    (HandKind::Fingertips(1), "fingertip"),
+    (HandKind::Fingertips(2), "two fingers"),
+    (HandKind::FlatHand, "flat hand"),
+    (HandKind::Edge, "edge of hand"),
+    (HandKind::Fist, "fist"),
+    (HandKind::Forearm, "forearm"),
+    (HandKind::Ruler, "ruler"),
+    (HandKind::Cup, "cup"),
+    (HandKind::Card, "card"),
+];
+
+/// What the panel asks the window to do.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Action {
+    LoadTask(String),
+    Technique(TechniqueKind),
+    /// A parameter that only takes effect in a new session changed.
+    Restart,
+    DefaultParameters,
+    Reset,
+    Screenshot,
+    StartRecording(Option<PathBuf>),
+    StopRecording,
+}
+
+/// Panel state that is not the lab's.
+#[derive(Debug, Clone, Default)]
+pub struct PanelState {
+    tasks: Vec<String>,
+    path: String,
+    record_path: String,
+}
+
+impl PanelState {
+    pub fn new() -> Self {
+        Self {
+            tasks: task_choices(),
+            ..Self::default()
+        }
+    }
+}
+
+/// positioning, sorting, steering, then every other `tasks/*.toml` and
+/// `tasks/cases/*.toml`, as names `scene::load` resolves.
+pub fn task_choices() -> Vec<String> {
+    let mut names: Vec<String> = ["positioning", "sorting", "steering"]
+        .map(String::from)
+        .to_vec();
+    let mut found = Vec::new();
+    for root in [
+        PathBuf::from("tasks"),
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("tasks"),
+    ] {
+        for (sub, prefix) in [(root.clone(), ""), (root.join("cases"), "cases/")] {
+            let Ok(dir) = std::fs::read_dir(&sub) else {
+                continue;
+            };
+            for entry in dir.flatten() {
+                let p = entry.path();
+                if p.extension().is_some_and(|e| e == "toml")
+                    && let Some(stem) = p.file_stem()
+                {
+                    found.push(format!("{prefix}{}", stem.to_string_lossy()));
+                }
+            }
+        }
+    }
+    found.sort();
+    for f in found {
+        if !names.contains(&f) {
+            names.push(f);
+        }
+    }
+    names
+}
+
+/// Draws the panel; returns what must happen after this frame.
+pub fn show(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState) -> Vec<Action> {
+    let mut actions = Vec::new();
+    egui::ScrollArea::vertical()
+        .auto_shrink([false, false])
+        .show(ui, |ui| {
+            ui.heading("surfacelab");
+            ui.label(RichText::new(&lab.scene().description).small());
+            if !lab.scene().hint.is_empty() {
+                ui.label(RichText::new(&lab.scene().hint).color(Color32::from_rgb(255, 210, 120)));
+            }
+            ui.separator();
+            task_section(ui, lab, state, &mut actions);
+            ui.separator();
+            view_section(ui, lab);
+            ui.separator();
+            parameters(ui, lab, &mut actions);
+            ui.separator();
+            controls(ui, lab, state, &mut actions);
+            if let Some(status) = lab.status() {
+                ui.label(RichText::new(status).color(Color32::from_rgb(140, 200, 255)));
+            }
+            ui.separator();
+            statistics(ui, lab);
+            ui.separator();
+            help(ui);
+        });
+    actions
+}
+
+fn task_section(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, actions: &mut Vec<Action>) {
+    egui::Grid::new("task grid").num_columns(2).show(ui, |ui| {
+        ui.label("Task");
+        let mut chosen = lab.task.clone();
+        egui::ComboBox::from_id_salt("task")
+            .width(190.0)
+            .selected_text(&lab.task)
+            .show_ui(ui, |ui| {
+                for t in &state.tasks {
+                    ui.selectable_value(&mut chosen, t.clone(), t);
+                }
+            });
+        if chosen != lab.task {
+            actions.push(Action::LoadTask(chosen));
+        }
+        ui.end_row();
+        ui.label("File");
+        ui.horizontal(|ui| {
+            let edit = ui.add(
+                egui::TextEdit::singleline(&mut state.path)
+                    .hint_text("path/to/scene.toml")
+                    .desired_width(140.0),
+            );
+            let enter = edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+            if (ui.button("Open").clicked() || enter) && !state.path.trim().is_empty() {
+                actions.push(Action::LoadTask(state.path.trim().to_owned()));
+            }
+        });
+        ui.end_row();
+        ui.label("Technique");
+        let mut kind = lab.technique();
+        ui.horizontal_wrapped(|ui| {
+            for k in TechniqueKind::ALL {
+                ui.radio_value(&mut kind, k, k.name());
+            }
+        });
+        if kind != lab.technique() {
+            actions.push(Action::Technique(kind));
+        }
+        ui.end_row();
+    });
+}
+
+fn view_section(ui: &mut egui::Ui, lab: &mut Lab) {
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut lab.view.feedback, "feedback (F)");
+        ui.checkbox(&mut lab.view.contact_overlay, "contact image (O)");
+    });
+    ui.horizontal(|ui| {
+        ui.label("Left drag puts down");
+        let mut mode = lab.input.mouse.mode();
+        let name = HAND_MODES.iter().find(|m| m.0 == mode).map_or("?", |m| m.1);
+        egui::ComboBox::from_id_salt("hand mode")
+            .selected_text(name)
+            .show_ui(ui, |ui| {
+                for (i, (kind, label)) in HAND_MODES.iter().enumerate() {
+                    ui.selectable_value(&mut mode, *kind, format!("{} {label}", i + 1));
+                }
+            });
+        if mode != lab.input.mouse.mode() {
+            lab.input.mouse.handle(MouseEvent::Mode(mode));
+        }
+    });
+    ui.label(
+        RichText::new("Shift flat hand, Ctrl edge, Alt two fingers; wheel turns; right click pins a hand (more below).")
+            .small()
+            .weak(),
+    );
+}
+
+fn parameters(ui: &mut egui::Ui, lab: &mut Lab, actions: &mut Vec<Action>) {
+    egui::CollapsingHeader::new("Technique parameters").default_open(true).show(ui, |ui| {
+        let kind = lab.technique();
+        let c = lab.session.config_mut();
+        let stride = c.particle_stride;
+        let strong = |on: bool, text: &str| if on { RichText::new(text).strong() } else { RichText::new(text).weak() };
+        ui.add(Slider::new(&mut c.proxy_mass, 0.05..=5.0).logarithmic(true).suffix(" kg").text(strong(kind == TechniqueKind::Proxy, "proxy mass")));
+        ui.add(Slider::new(&mut c.proxy_weight, 0.1..=10.0).logarithmic(true).suffix(" N").text(strong(kind == TechniqueKind::Proxy, "proxy weight")));
+        ui.add(Slider::new(&mut c.friction, 0.0..=3.0).text(strong(matches!(kind, TechniqueKind::Proxy | TechniqueKind::Particle | TechniqueKind::Joint), "finger friction")));
+        ui.add(Slider::new(&mut c.joint_stiffness, 5.0..=1000.0).logarithmic(true).suffix(" N/m").text(strong(kind == TechniqueKind::Joint, "joint stiffness")));
+        ui.add(Slider::new(&mut c.particle_stride, 1..=8).suffix(" px").text(strong(kind == TechniqueKind::Particle, "particle stride")));
+        let stride_changed = c.particle_stride != stride;
+        ui.label(RichText::new("Mass, weight and friction apply to new touches; the stride restarts the scene.").small().weak());
+        if stride_changed {
+            actions.push(Action::Restart);
+        }
+        if ui.button("Scene defaults").clicked() {
+            actions.push(Action::DefaultParameters);
+        }
+    });
+}
+
+fn controls(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState, actions: &mut Vec<Action>) {
+    ui.horizontal_wrapped(|ui| {
+        if ui.button("Reset (R)").clicked() {
+            actions.push(Action::Reset);
+        }
+        if ui
+            .button(if lab.paused {
+                "Resume (space)"
+            } else {
+                "Pause (space)"
+            })
+            .clicked()
+        {
+            lab.toggle_pause();
+        }
+        if ui
+            .add_enabled(lab.paused, egui::Button::new("Step (N)"))
+            .clicked()
+        {
+            lab.request_step();
+        }
+        if ui.button("Screenshot (S)").clicked() {
+            actions.push(Action::Screenshot);
+        }
+    });
+    ui.horizontal(|ui| {
+        if let Some(r) = lab.recording() {
+            let text = RichText::new(format!("Stop recording ({:.1} s)", r.duration()))
+                .color(Color32::from_rgb(255, 90, 90));
+            if ui.button(text).clicked() {
+                actions.push(Action::StopRecording);
+            }
+        } else {
+            if ui.button("Record").clicked() {
+                let path = state.record_path.trim();
+                actions.push(Action::StartRecording(
+                    (!path.is_empty()).then(|| PathBuf::from(path)),
+                ));
+            }
+            ui.add(
+                egui::TextEdit::singleline(&mut state.record_path)
+                    .hint_text("out/gestures/<task>_<time>.toml")
+                    .desired_width(200.0),
+            );
+        }
+    });
+}
+
+fn statistics(ui: &mut egui::Ui, lab: &Lab) {
+    let s = &lab.stats;
+    let counts = lab.session.counts();
+    egui::Grid::new("stats")
+        .num_columns(2)
+        .striped(true)
+        .show(ui, |ui| {
+            let mut row = |name: &str, value: String| {
+                ui.label(name);
+                ui.monospace(value);
+                ui.end_row();
+            };
+            row(
+                "frame",
+                format!("{:5.1} ms  {:4.0} fps", s.frame_ms.mean(), s.fps()),
+            );
+            row("render", format!("{:5.1} ms", s.render_ms.mean()));
+            row("physics steps", format!("{:4.2} / frame", s.steps.mean()));
+            row("  rasterize", format!("{:5.2} ms", s.rasterize_ms.mean()));
+            row("  vision", format!("{:5.2} ms", s.vision_ms.mean()));
+            row("  technique", format!("{:5.2} ms", s.technique_ms.mean()));
+            row("  step", format!("{:5.2} ms", s.step_ms.mean()));
+            row("contacts", counts.contacts.to_string());
+            row(
+                match lab.technique() {
+                    TechniqueKind::Particle => "particles",
+                    TechniqueKind::Proxy => "proxies",
+                    TechniqueKind::Joint => "anchors",
+                    TechniqueKind::Direct => "bodies",
+                },
+                counts.bodies.to_string(),
+            );
+            if counts.joints > 0 || lab.technique() == TechniqueKind::Joint {
+                row("joints", counts.joints.to_string());
+            }
+            let limit = lab.scene().time_limit_s;
+            row(
+                "task time",
+                format!("{:5.1} s of {limit:.0}", lab.session.time()),
+            );
+            let progress = progress_line(lab);
+            row(
+                "progress",
+                if progress.is_empty() {
+                    "-".into()
+                } else {
+                    progress
+                },
+            );
+            if lab.behind_s() > 0.05 {
+                row("behind real time", format!("{:.1} s", lab.behind_s()));
+            }
+            if let Some(tuio) = &lab.input.tuio {
+                let t = tuio.stats();
+                let (cursors, blobs) = tuio.live_counts();
+                row("TUIO", format!("{}", tuio.local_addr()));
+                row("  live", format!("{cursors} cursors, {blobs} blobs"));
+                row(
+                    "  packets",
+                    format!("{} ({} malformed)", t.packets, t.malformed),
+                );
+            }
+        });
+}
+
+fn help(ui: &mut egui::Ui) {
+    egui::CollapsingHeader::new("Mouse and keys").default_open(false).show(ui, |ui| {
+        for line in [
+            "left drag: a hand of the chosen kind follows the cursor".to_owned(),
+            "Shift / Ctrl / Alt + drag: flat hand / edge / two fingers".to_owned(),
+            format!("wheel: turn the hand {DEGREES_PER_NOTCH:.0}° per notch"),
+            format!("Shift + wheel: spread the fingers ({SPREAD_PER_NOTCH} per notch)"),
+            "right click while dragging: pin that hand, drag another".to_owned(),
+            "right click: lift pinned hands (or pin one at the cursor)".to_owned(),
+            "keys: 1-9 hand kind, space pause, N step, R reset, F feedback, O contact image, S screenshot".to_owned(),
+        ] {
+            ui.label(RichText::new(line).small());
+        }
+    });
+}

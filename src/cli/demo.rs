@@ -1,0 +1,212 @@
+//! `surfacelab demo`: the flags, checked once, turned into the app's
+//! [`DemoOptions`]; the window itself is `crate::app`.
+
+use super::{DemoArgs, EXIT_USAGE};
+use crate::app::{self, DemoOptions, ParticipantOptions, Screenshot};
+use crate::surface::Gesture;
+use crate::technique::TechniqueKind;
+use clap::Parser;
+use std::net::{IpAddr, Ipv4Addr, SocketAddr};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+/// Default trials file of participant mode.
+pub const TRIALS_CSV: &str = "out/participants/trials.csv";
+/// Default trials per participant sitting: the paper's two per condition.
+pub const REPETITIONS: u32 = 2;
+
+impl Default for DemoArgs {
+    /// What `surfacelab` with no arguments runs: the flags' own defaults,
+    /// so the two cannot drift apart.
+    fn default() -> Self {
+        #[derive(Parser)]
+        struct Wrapper {
+            #[command(flatten)]
+            args: DemoArgs,
+        }
+        Wrapper::parse_from(["surfacelab"]).args
+    }
+}
+
+pub fn run(args: &DemoArgs) -> anyhow::Result<ExitCode> {
+    let options = match options(args) {
+        Ok(o) => o,
+        Err(message) => {
+            eprintln!("surfacelab demo: {message}");
+            return Ok(ExitCode::from(EXIT_USAGE));
+        }
+    };
+    app::run(options)?;
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Checks the flags; an `Err` is a usage error (exit 2).
+fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
+    let (technique, feedback) = match &args.condition {
+        Some(c) => parse_condition(c)?,
+        None => (args.technique, args.feedback),
+    };
+    let mut o = DemoOptions::new(args.task.clone(), technique);
+    o.feedback = feedback;
+    o.contact_overlay = !args.no_contact_overlay;
+    if let Some((w, h)) = args.window {
+        o.window_size = [w, h];
+    }
+    o.out_dir.clone_from(&args.out);
+    o.tuio = args.tuio.map(|port| {
+        SocketAddr::new(
+            args.tuio_bind.unwrap_or(IpAddr::V4(Ipv4Addr::LOCALHOST)),
+            port,
+        )
+    });
+    if args.tuio_bind.is_some() && args.tuio.is_none() {
+        return Err("--tuio-bind needs --tuio".into());
+    }
+    if let Some(path) = &args.script {
+        o.script = Some(Gesture::load(path).map_err(|e| format!("--script: {e}"))?);
+    }
+    if let Some(values) = &args.screenshot_after {
+        let [seconds, path] = values.as_slice() else {
+            return Err("--screenshot-after takes SECONDS PATH".into());
+        };
+        let after_s =
+            super::parse_seconds(seconds).map_err(|e| format!("--screenshot-after: {e}"))?;
+        o.screenshot_after = Some(Screenshot {
+            after_s: f64::from(after_s),
+            path: PathBuf::from(path),
+        });
+    }
+    o.quit_after = args.quit_after.map(f64::from);
+    match (args.participant, &args.condition) {
+        (Some(id), Some(_)) => {
+            if id == 0 {
+                return Err("--participant: IDs start at 1, as in the study's files".into());
+            }
+            // The participant sees the table and their own hands, not the sensor's image.
+            o.contact_overlay = false;
+            o.participant = Some(ParticipantOptions {
+                id,
+                technique,
+                feedback,
+                repetitions: args.reps.unwrap_or(REPETITIONS).max(1),
+                trials_csv: args
+                    .trials_csv
+                    .clone()
+                    .unwrap_or_else(|| PathBuf::from(TRIALS_CSV)),
+                gestures: Some(args.out.join("gestures")),
+            });
+        }
+        (Some(_), None) => return Err("--participant needs --condition TECHNIQUE:on|off".into()),
+        (None, _) if args.trials_csv.is_some() || args.reps.is_some() => {
+            return Err("--trials-csv and --reps belong to participant mode (--participant ID --condition T:on|off)".into());
+        }
+        (None, _) => {}
+    }
+    Ok(o)
+}
+
+/// `TECHNIQUE:on|off`, e.g. `particle:on`.
+pub fn parse_condition(s: &str) -> Result<(TechniqueKind, bool), String> {
+    let (t, f) = s
+        .split_once(':')
+        .ok_or_else(|| format!("--condition `{s}`: expected TECHNIQUE:on|off, e.g. particle:on"))?;
+    let technique: TechniqueKind = t
+        .trim()
+        .parse()
+        .map_err(|e| format!("--condition `{s}`: {e}"))?;
+    let feedback = match f.trim() {
+        "on" => true,
+        "off" => false,
+        other => {
+            return Err(format!(
+                "--condition `{s}`: feedback `{other}` must be on or off"
+            ));
+        }
+    };
+    Ok((technique, feedback))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::surface::tuio::DEFAULT_PORT;
+
+    fn parse(args: &[&str]) -> Result<DemoOptions, String> {
+        let cli = super::super::Cli::try_parse_from(
+            std::iter::once("surfacelab")
+                .chain(std::iter::once("demo"))
+                .chain(args.iter().copied()),
+        )
+        .map_err(|e| e.to_string())?;
+        match cli.command {
+            Some(super::super::Command::Demo(a)) => options(&a),
+            _ => Err("not demo".into()),
+        }
+    }
+
+    #[test]
+    fn defaults_are_the_flags_defaults() {
+        let d = DemoArgs::default();
+        assert_eq!(d.task, "positioning");
+        assert_eq!(d.technique, TechniqueKind::Particle);
+        assert!(d.tuio.is_none() && d.participant.is_none());
+    }
+
+    #[test]
+    fn flags_become_options() {
+        let o = parse(&["--tuio", "--task", "sorting"]).expect("valid");
+        assert_eq!(
+            o.tuio,
+            Some(SocketAddr::new(
+                IpAddr::V4(Ipv4Addr::LOCALHOST),
+                DEFAULT_PORT
+            ))
+        );
+        let o = parse(&["--tuio", "4000", "--tuio-bind", "0.0.0.0"]).expect("valid");
+        assert_eq!(o.tuio, Some("0.0.0.0:4000".parse().expect("address")));
+        let o =
+            parse(&["--screenshot-after", "2.5", "shot.png", "--quit-after", "4"]).expect("valid");
+        assert_eq!(
+            o.screenshot_after,
+            Some(Screenshot {
+                after_s: 2.5,
+                path: "shot.png".into()
+            })
+        );
+        assert_eq!(o.quit_after, Some(4.0));
+        assert!(parse(&["--screenshot-after", "soon", "shot.png"]).is_err());
+        assert!(parse(&["--tuio-bind", "0.0.0.0"]).is_err());
+    }
+
+    #[test]
+    fn participant_mode_takes_its_condition() {
+        let o = parse(&[
+            "--participant",
+            "4",
+            "--condition",
+            "joint:off",
+            "--task",
+            "steering",
+        ])
+        .expect("valid");
+        let p = o.participant.expect("participant mode");
+        assert_eq!(
+            (p.id, p.technique, p.feedback, p.repetitions),
+            (4, TechniqueKind::Joint, false, REPETITIONS)
+        );
+        assert_eq!(p.trials_csv, PathBuf::from(TRIALS_CSV));
+        assert!(!o.contact_overlay);
+        assert!(parse(&["--participant", "4"]).is_err());
+        assert!(parse(&["--participant", "0", "--condition", "joint:on"]).is_err());
+        assert!(parse(&["--reps", "3"]).is_err());
+        assert_eq!(
+            parse_condition("particle:on"),
+            Ok((TechniqueKind::Particle, true))
+        );
+        assert!(
+            parse_condition("particle").is_err()
+                && parse_condition("rope:on").is_err()
+                && parse_condition("proxy:maybe").is_err()
+        );
+    }
+}

@@ -1,0 +1,348 @@
+//! The desktop demo as a user gets it: the real binary in a real X window
+//! (Xvfb, software Vulkan), driven by a scripted gesture, looked at through
+//! two screenshots: the app's own read-back of its window, and the X
+//! server's root window (`xwd`), which shows what was actually presented.
+//!
+//! Needs `xvfb-run` and `xwd` (packages xvfb and x11-apps; `bash .ci/setup`
+//! installs them). Without them the tests fail and say so: they never skip.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+const BIN: &str = env!("CARGO_BIN_EXE_surfacelab");
+const SCREEN: [u32; 2] = [1280, 800];
+/// The panel's width in pixels (egui points at scale 1).
+const PANEL_W: u32 = 320;
+/// egui's dark panel fill.
+const PANEL: [u8; 3] = [27, 27, 27];
+/// The scenes' table, as rendered (sRGB).
+const TABLE: [u8; 3] = [223, 226, 229];
+
+/// A flat hand that sweeps from the middle to the left and stays down.
+const SWEEP: &str = r#"format = "surfacelab-gesture"
+version = 1
+
+[[hands]]
+id = 1
+kind = "flat_hand"
+keys = [{ t = 0.0, pos = [0.15, -0.05], angle_deg = 90.0 }, { t = 2.0, pos = [-0.15, -0.05] }, { t = 60.0, pos = [-0.15, -0.05] }]
+"#;
+
+fn work_dir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("test folder");
+    dir
+}
+
+fn require(tool: &str, package: &str) {
+    let found = Command::new("sh")
+        .args(["-c", &format!("command -v {tool}")])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    assert!(
+        found,
+        "`{tool}` is not installed, and the demo's window test needs it. Install the test set-up with \
+         `bash .ci/setup` (or `sudo apt-get install {package}`)."
+    );
+}
+
+/// `xvfb-run -a` picks a free display number racily: one Xvfb at a time.
+static XVFB: std::sync::Mutex<()> = std::sync::Mutex::new(());
+
+/// Runs a shell script under a fresh Xvfb screen, with a private
+/// `XDG_RUNTIME_DIR` (Vulkan's loader complains without one) and a time limit.
+fn under_xvfb(dir: &Path, script: &str) -> Output {
+    require("xvfb-run", "xvfb");
+    let runtime = dir.join("xdg");
+    std::fs::create_dir_all(&runtime).expect("runtime dir");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        std::fs::set_permissions(&runtime, std::fs::Permissions::from_mode(0o700)).expect("chmod");
+    }
+    let screen = format!("-screen 0 {}x{}x24", SCREEN[0], SCREEN[1]);
+    let _one_at_a_time = XVFB
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    Command::new("timeout")
+        .args(["180", "xvfb-run", "-a", "-s", &screen, "sh", "-c", script])
+        .env("XDG_RUNTIME_DIR", &runtime)
+        .env_remove("WAYLAND_DISPLAY")
+        .current_dir(dir)
+        .output()
+        .expect("runs xvfb-run")
+}
+
+/// An RGB image as rows of pixels.
+struct Image {
+    width: u32,
+    height: u32,
+    pixels: Vec<[u8; 3]>,
+}
+
+impl Image {
+    fn png(path: &Path) -> Image {
+        let img = image::open(path)
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+            .to_rgb8();
+        Image {
+            width: img.width(),
+            height: img.height(),
+            pixels: img.pixels().map(|p| p.0).collect(),
+        }
+    }
+
+    /// An XWD dump (what `xwd -root` writes) of a 24/32-bit `TrueColor` screen.
+    fn xwd(path: &Path) -> Image {
+        let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let field =
+            |i: usize| u32::from_be_bytes(bytes[i * 4..i * 4 + 4].try_into().expect("4 bytes"));
+        let (header, width, height, byte_order, bpp, line) =
+            (field(0), field(4), field(5), field(7), field(11), field(12));
+        let masks = [field(14), field(15), field(16)];
+        let colors = field(19);
+        assert_eq!(
+            bpp,
+            32,
+            "{}: expected a 32-bit XWD, got {bpp} bits per pixel",
+            path.display()
+        );
+        let data = &bytes[header as usize + colors as usize * 12..];
+        let mut pixels = Vec::with_capacity((width * height) as usize);
+        for y in 0..height as usize {
+            for x in 0..width as usize {
+                let at = y * line as usize + x * 4;
+                let raw: [u8; 4] = data[at..at + 4].try_into().expect("4 bytes");
+                let v = if byte_order == 0 {
+                    u32::from_le_bytes(raw)
+                } else {
+                    u32::from_be_bytes(raw)
+                };
+                pixels.push(masks.map(|m| ((v & m) >> m.trailing_zeros()) as u8));
+            }
+        }
+        Image {
+            width,
+            height,
+            pixels,
+        }
+    }
+
+    fn at(&self, x: u32, y: u32) -> [u8; 3] {
+        self.pixels[(y * self.width + x) as usize]
+    }
+
+    /// Share of the pixels of a rectangle that satisfy `test`.
+    fn share(
+        &self,
+        x: std::ops::Range<u32>,
+        y: std::ops::Range<u32>,
+        test: impl Fn([u8; 3]) -> bool,
+    ) -> f64 {
+        let total = (x.len() * y.len()) as f64;
+        let hits = y
+            .flat_map(|yy| x.clone().map(move |xx| (xx, yy)))
+            .filter(|&(xx, yy)| test(self.at(xx, yy)))
+            .count();
+        hits as f64 / total
+    }
+}
+
+fn near(a: [u8; 3], b: [u8; 3], tolerance: u8) -> bool {
+    a.iter().zip(b).all(|(p, q)| p.abs_diff(q) <= tolerance)
+}
+
+/// What a researcher sees: the panel on the left, the table with its red
+/// and blue objects and zones on the right, the scripted hand on it.
+fn check_window(name: &str, img: &Image, report: &str) {
+    assert_eq!(
+        [img.width, img.height],
+        SCREEN,
+        "{name}: screenshot size\n{report}"
+    );
+    let panel = img.share(4..PANEL_W - 4, 0..SCREEN[1], |p| p == PANEL);
+    assert!(
+        panel > 0.45,
+        "{name}: only {:.0}% of the panel is egui's dark panel colour {PANEL:?}\n{report}",
+        panel * 100.0
+    );
+    let view = PANEL_W + 8..SCREEN[0] - 8;
+    let table = img.share(view.clone(), 60..SCREEN[1] - 60, |p| near(p, TABLE, 3));
+    assert!(
+        table > 0.25,
+        "{name}: only {:.0}% of the view shows the table colour {TABLE:?}\n{report}",
+        table * 100.0
+    );
+    let red = img.share(view.clone(), 0..SCREEN[1], |[r, g, b]| {
+        r > 180 && g < 140 && b < 140
+    });
+    let blue = img.share(view.clone(), 0..SCREEN[1], |[r, g, b]| {
+        b > 180 && r < 140 && g < 190
+    });
+    assert!(
+        red > 0.01 && blue > 0.01,
+        "{name}: red {:.2}% and blue {:.2}% objects expected on the table\n{report}",
+        red * 100.0,
+        blue * 100.0
+    );
+    // The hand: the dark outline of the scripted flat hand, left of centre.
+    let outline = img.share(PANEL_W + 150..PANEL_W + 500, 250..550, |p| {
+        p.iter().all(|&c| c < 90)
+    });
+    assert!(
+        outline > 0.002,
+        "{name}: no hand outline where the script put the hand ({:.3}%)\n{report}",
+        outline * 100.0
+    );
+    // No stray pixels from an uninitialized window around the view.
+    let black = img.share(0..SCREEN[0], 0..SCREEN[1], |p| p == [0, 0, 0]);
+    assert!(
+        black < 0.01,
+        "{name}: {:.1}% pure black pixels: part of the window was never drawn\n{report}",
+        black * 100.0
+    );
+}
+
+#[test]
+fn the_demo_window_shows_the_panel_and_the_table_under_a_scripted_hand() {
+    require("xwd", "x11-apps");
+    let dir = work_dir("demo_window");
+    std::fs::write(dir.join("sweep.toml"), SWEEP).expect("gesture file");
+    // The app saves its own read-back at 3 s; as soon as that file exists
+    // the X server's root window is dumped too, while the app still runs.
+    let script = format!(
+        "'{BIN}' demo --task sorting --technique particle --feedback --script sweep.toml \
+            --screenshot-after 3 app.png --quit-after 8 --out out &
+        pid=$!
+        i=0; while [ ! -s app.png ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i+1)); done
+        sleep 0.3
+        xwd -root -silent > root.xwd
+        wait $pid"
+    );
+    let out = under_xvfb(&dir, &script);
+    let report = format!(
+        "exit: {:?}\nstdout: {}\nstderr: {}\nfiles in {}",
+        out.status,
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr),
+        dir.display()
+    );
+    assert!(out.status.success(), "the demo under Xvfb failed\n{report}");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("window screenshot 1280x800"), "{report}");
+    let steps: u64 = stderr
+        .lines()
+        .find_map(|l| {
+            l.split(" physics steps")
+                .next()
+                .filter(|_| l.contains("frames,"))?
+                .rsplit(' ')
+                .next()?
+                .parse()
+                .ok()
+        })
+        .unwrap_or_else(|| panic!("no run summary\n{report}"));
+    // 8 s of wall time; the physics keeps real time down to 10 frames per second.
+    assert!(steps >= 60, "only {steps} physics steps in 8 s\n{report}");
+
+    check_window(
+        "the app's read-back (app.png)",
+        &Image::png(&dir.join("app.png")),
+        &report,
+    );
+    check_window(
+        "the X server's root window (root.xwd)",
+        &Image::xwd(&dir.join("root.xwd")),
+        &report,
+    );
+}
+
+#[test]
+fn participant_mode_writes_study_rows_and_the_gestures_to_replay() {
+    let dir = work_dir("demo_participant");
+    std::fs::write(dir.join("sweep.toml"), SWEEP).expect("gesture file");
+    // The box starts inside its region: each trial completes after the dwell.
+    std::fs::write(
+        dir.join("box.toml"),
+        r#"name = "box"
+description = "A box already in its region."
+hint = "Nothing to do: wait."
+effects = ["gravity", "friction"]
+time_limit_s = 20
+
+[table]
+size = [1.0, 0.75]
+
+[[objects]]
+name = "box"
+shape = "box"
+size = [0.06, 0.06, 0.04]
+mass = 0.15
+color = "orange"
+position = [0.3, 0.2]
+
+[goal]
+kind = "region"
+object = "box"
+min = [0.2, 0.1]
+max = [0.4, 0.3]
+dwell_s = 0.5
+"#,
+    )
+    .expect("scene file");
+    let script = format!(
+        "'{BIN}' demo --participant 7 --condition proxy:on --task box.toml --reps 2 --trials-csv trials.csv \
+         --script sweep.toml --out out --quit-after 60"
+    );
+    let out = under_xvfb(&dir, &script);
+    let report = format!(
+        "exit: {:?}\nstderr: {}",
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.status.success(), "{report}");
+    let csv = std::fs::read_to_string(dir.join("trials.csv"))
+        .unwrap_or_else(|e| panic!("trials.csv: {e}\n{report}"));
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some(surfacelab::study::COLUMNS.join(",").as_str()),
+        "the study's header"
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 2, "two trials, two rows:\n{csv}");
+    for (i, row) in rows.iter().enumerate() {
+        // participant, order_index, task, technique, feedback, repetition, practice, time, completed, restarts, placed, steps, seed, version
+        assert_eq!(
+            &row[..7],
+            [
+                "7",
+                &i.to_string(),
+                "box.toml",
+                "proxy",
+                "true",
+                &(i + 1).to_string(),
+                "false"
+            ],
+            "{csv}"
+        );
+        let time: f64 = row[7].parse().expect("a completion time");
+        assert!(
+            (0.4..3.0).contains(&time),
+            "completed after the 0.5 s dwell, not {time}\n{csv}"
+        );
+        assert_eq!(
+            (row[8], row[12], row[13]),
+            ("true", "0", env!("CARGO_PKG_VERSION")),
+            "{csv}"
+        );
+    }
+    // Each trial's input was recorded where `study --replay` looks for it.
+    for r in 1..=2 {
+        let g = dir.join(format!("out/gestures/p7/box_proxy_on_r{r}.toml"));
+        let gesture =
+            surfacelab::surface::Gesture::load(&g).unwrap_or_else(|e| panic!("{e}\n{report}"));
+        assert_eq!(gesture.tracks().len(), 1, "the scripted flat hand");
+    }
+}
