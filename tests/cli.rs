@@ -116,7 +116,7 @@ fn a_study_killed_with_sigkill_resumes_to_the_same_trials() {
     let t0 = Instant::now();
     loop {
         let rows = std::fs::read_to_string(run.join("trials.csv")).map_or(0, |s| s.lines().count());
-        if rows >= 3 || t0.elapsed() > Duration::from_secs(120) {
+        if rows >= 3 || t0.elapsed() > Duration::from_mins(2) {
             break;
         }
         std::thread::sleep(Duration::from_millis(20));

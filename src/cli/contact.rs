@@ -5,12 +5,12 @@ use crate::contact;
 use std::io::Read;
 use std::process::ExitCode;
 
-pub fn run(args: &ContactArgs) -> anyhow::Result<ExitCode> {
+pub fn run(args: &ContactArgs) -> ExitCode {
     let input = if args.input == "-" {
         let mut s = String::new();
         if let Err(e) = std::io::stdin().read_to_string(&mut s) {
             eprintln!("surfacelab contact: cannot read standard input: {e}");
-            return Ok(ExitCode::from(EXIT_USAGE));
+            return ExitCode::from(EXIT_USAGE);
         }
         s
     } else {
@@ -18,18 +18,18 @@ pub fn run(args: &ContactArgs) -> anyhow::Result<ExitCode> {
             Ok(s) => s,
             Err(e) => {
                 eprintln!("surfacelab contact: cannot read {}: {e}", args.input);
-                return Ok(ExitCode::from(EXIT_USAGE));
+                return ExitCode::from(EXIT_USAGE);
             }
         }
     };
     match contact::answer_json(&input, args.concave) {
         Ok(line) => {
             println!("{line}");
-            Ok(ExitCode::SUCCESS)
+            ExitCode::SUCCESS
         }
         Err(e) => {
             eprintln!("surfacelab contact: {e}");
-            Ok(ExitCode::from(EXIT_USAGE))
+            ExitCode::from(EXIT_USAGE)
         }
     }
 }

@@ -195,7 +195,7 @@ pub struct ScreenshotArgs {
     /// Capture at this many seconds into the gesture (default: its end).
     #[arg(long, value_parser = parse_seconds, requires = "gesture")]
     pub at: Option<f32>,
-    /// Image size, WIDTHxHEIGHT.
+    /// Image size, `WIDTHxHEIGHT`.
     #[arg(long, default_value = "1024x768", value_parser = screenshot::parse_size)]
     pub size: (u32, u32),
     /// PNG file to write.
@@ -265,7 +265,7 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
         Command::Run(args) => run::run(&args),
         Command::Study(args) => study::run(&args),
         Command::Screenshot(args) => screenshot::run(&args),
-        Command::Contact(args) => contact::run(&args),
+        Command::Contact(args) => Ok(contact::run(&args)),
         Command::Tradeoff(args) => tradeoff::run(&args),
     }
 }
