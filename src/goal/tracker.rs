@@ -6,6 +6,8 @@ use glam::{Quat, Vec2, Vec3};
 
 /// Speed (m/s) below which an object counts as resting for a dwell.
 const REST_SPEED: f32 = 0.05;
+/// The same for a soft body's fastest particle: a cloth's edge flutters.
+const SOFT_REST_SPEED: f32 = 0.1;
 /// How far below the platform top the steered object may sink before it
 /// counts as dropped (m).
 const DROP_MARGIN: f32 = 0.02;
@@ -37,6 +39,8 @@ pub struct Tracker {
     /// Steering start pose, for restarts.
     start: Option<(usize, Vec3, Quat)>,
     platform_top: f32,
+    /// Seconds the soft body of a soft goal has met it.
+    soft_dwell: f32,
 }
 
 impl Tracker {
@@ -49,6 +53,7 @@ impl Tracker {
             progress: Progress::default(),
             start: None,
             platform_top: 0.0,
+            soft_dwell: 0.0,
         };
         t.progress.total = match &scene.goal {
             Goal::None => 0,
@@ -56,7 +61,8 @@ impl Tracker {
             Goal::Sorting { zones, .. } => scene.objects.iter().filter(|o| zones.iter().any(|z| z.color_name == o.color_name)).count(),
             Goal::Steering(g) => g.waypoints.len() + 1,
             Goal::Gather { .. } => scene.objects.iter().filter(|o| o.body == crate::scene::BodyKind::Dynamic).count(),
-            Goal::Region { .. } => 1,
+            Goal::Region { .. } | Goal::SoftRegion { .. } | Goal::ClothFlat { .. } => 1,
+            Goal::Torn { pieces, .. } => *pieces,
         };
         if let Goal::Steering(g) = &scene.goal {
             let o = &scene.objects[g.object];
@@ -149,6 +155,26 @@ impl Tracker {
                 self.progress.placed = usize::from(done);
                 done
             }
+            Goal::SoftRegion { body, min, max, dwell_s } => {
+                let ok = world.soft_center(*body).is_some_and(|c| c.x >= min.x && c.x <= max.x && c.y >= min.y && c.y <= max.y)
+                    && world.soft_max_speed(*body) < SOFT_REST_SPEED;
+                let done = self.soft_dwell_step(ok, dt, *dwell_s);
+                self.progress.placed = usize::from(done);
+                done
+            }
+            Goal::ClothFlat { body, min_area_fraction, dwell_s } => {
+                let ok = world.soft_max_speed(*body) < SOFT_REST_SPEED && world.soft_coverage(*body) >= *min_area_fraction;
+                let done = self.soft_dwell_step(ok, dt, *dwell_s);
+                self.progress.placed = usize::from(done);
+                done
+            }
+            Goal::Torn { body, pieces, min_piece_fraction } => {
+                let masses = world.soft_piece_masses(*body);
+                let total: f32 = masses.iter().sum();
+                let big = masses.iter().filter(|m| **m >= min_piece_fraction * total).count();
+                self.progress.placed = big.min(*pieces);
+                big >= *pieces
+            }
         };
         if done {
             self.progress.complete = true;
@@ -165,6 +191,11 @@ impl Tracker {
             self.dwell[i] = 0.0;
         }
         ok && self.dwell[i] >= need
+    }
+
+    fn soft_dwell_step(&mut self, ok: bool, dt: f32, need: f32) -> bool {
+        self.soft_dwell = if ok { self.soft_dwell + dt } else { 0.0 };
+        ok && self.soft_dwell >= need
     }
 
     fn steer(&mut self, world: &mut World, g: &SteeringGoal, poses: &[ObjectPose]) -> bool {

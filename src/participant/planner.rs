@@ -339,7 +339,8 @@ fn next_object(scene: &Scene, tracker: &Tracker, session: &Session, observed: &[
 /// Where the goal wants object `i` now, if anywhere.
 fn goal_for(scene: &Scene, tracker: &Tracker, i: usize, observed: &[Vec2]) -> Option<Vec2> {
     match &scene.goal {
-        Goal::None => None,
+        // Soft-body goals concern no rigid object.
+        Goal::None | Goal::SoftRegion { .. } | Goal::ClothFlat { .. } | Goal::Torn { .. } => None,
         Goal::Positioning { targets, .. } => targets.iter().find(|t| t.object == i && !tracker.is_placed(i)).map(|t| t.position),
         Goal::Sorting { zones, .. } => {
             let o = &scene.objects[i];

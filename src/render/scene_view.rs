@@ -2,7 +2,7 @@
 //! scene, its goal and a technique's feedback look. The demo, `screenshot`
 //! and the golden-image tests all draw through it.
 
-use super::draw_list::{Camera, ContactOverlay, Decal, DrawList, FeedbackDraw, MeshKind, ObjectDraw, Rgba, TableDraw};
+use super::draw_list::{Camera, ContactOverlay, Decal, DeformableDraw, DrawList, FeedbackDraw, MeshKind, ObjectDraw, Rgba, TableDraw};
 use crate::scene::{Goal, Scene, Shape};
 use crate::session::Session;
 use glam::{Mat4, Vec2, Vec3};
@@ -68,11 +68,26 @@ pub fn draw_list(session: &Session, options: ViewOptions) -> DrawList {
         clear_color: [0.12, 0.12, 0.13, 1.0],
         table: TableDraw { width: scene.table.width, depth: scene.table.depth, color: scene.table.color.rgba },
         objects,
-        deformables: Vec::new(),
+        deformables: deformables(session),
         decals: goal_decals(session),
         feedback,
         contact_overlay,
     }
+}
+
+/// Soft bodies as the simulation has them now: every piece a tear left,
+/// in its body's colour, straight from rapier's particles and surface.
+fn deformables(session: &Session) -> Vec<DeformableDraw> {
+    let world = session.world();
+    world
+        .soft_surfaces()
+        .into_iter()
+        .filter(|s| !s.triangles.is_empty() && s.positions.iter().all(|p| p.is_finite()))
+        .map(|s| {
+            let color = if s.body < world.soft_body_count() { world.soft_spec(s.body).color.rgba } else { [0.8, 0.8, 0.8, 1.0] };
+            DeformableDraw { positions: s.positions, triangles: s.triangles, color }
+        })
+        .collect()
 }
 
 /// Targets, zones, waypoints and the finish, as flat marks.
@@ -82,7 +97,8 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
     let lift = 0.0005;
     let mut out = Vec::new();
     match &scene.goal {
-        Goal::None => {}
+        // A cloth to smooth or tear carries its own goal; nothing to mark.
+        Goal::None | Goal::ClothFlat { .. } | Goal::Torn { .. } => {}
         Goal::Positioning { targets, .. } => {
             // Each target is the outline of its object, in its colour, so
             // the matching is visible; a placed object's target fades.
@@ -129,7 +145,7 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
             out.push(Decal::Disc { center: g.finish, z: top, radius: g.finish_radius, color: TARGET_RED, ring: None });
         }
         Goal::Gather { center, radius, .. } => out.push(Decal::Disc { center: *center, z: lift, radius: *radius, color: TARGET_RED, ring: Some(0.005) }),
-        Goal::Region { min, max, .. } => {
+        Goal::Region { min, max, .. } | Goal::SoftRegion { min, max, .. } => {
             out.push(Decal::Rect { center: (*min + *max) * 0.5, z: lift, half: (*max - *min) * 0.5, angle: 0.0, color: TARGET_RED, outline: Some(0.005) });
         }
     }

@@ -26,6 +26,8 @@ pub struct SceneFile {
     #[serde(default)]
     pub objects: Vec<Spanned<ObjectFile>>,
     #[serde(default)]
+    pub soft_bodies: Vec<Spanned<SoftBodyFile>>,
+    #[serde(default)]
     pub goal: Option<Spanned<GoalFile>>,
     /// Technique parameter overrides, validated by the technique module.
     #[serde(default)]
@@ -135,6 +137,47 @@ pub struct ObjectFile {
     pub row_step: Option<[f32; 2]>,
 }
 
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SoftKindFile {
+    Cloth,
+    Volume,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SoftBodyFile {
+    pub name: String,
+    pub kind: SoftKindFile,
+    /// Cloth: [x, y]; volume: [x, y, z] full extents (m).
+    pub size: Vec<f32>,
+    /// Particles per side: cloth [nu, nv]; volume [nx, ny, nz].
+    #[serde(default)]
+    pub resolution: Option<Vec<u32>>,
+    /// [x, y] (resting on the table) or [x, y, z] (centre).
+    pub position: Vec<f32>,
+    /// Total kg; or give `density` (kg/m² for cloth, kg/m³ for volumes).
+    #[serde(default)]
+    pub mass: Option<f32>,
+    #[serde(default)]
+    pub density: Option<f32>,
+    #[serde(default)]
+    pub stiffness: Option<f32>,
+    #[serde(default)]
+    pub bending: Option<f32>,
+    #[serde(default)]
+    pub tear_strain: Option<f32>,
+    #[serde(default)]
+    pub friction: Option<f32>,
+    #[serde(default)]
+    pub thickness: Option<f32>,
+    #[serde(default)]
+    pub damping: Option<f32>,
+    #[serde(default)]
+    pub crumple: Option<f32>,
+    pub color: String,
+}
+
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TargetFile {
@@ -161,6 +204,8 @@ pub enum GoalKind {
     Steering,
     Gather,
     Region,
+    ClothFlat,
+    Torn,
 }
 
 #[derive(Debug, Deserialize)]
@@ -198,4 +243,13 @@ pub struct GoalFile {
     pub min: Option<[f32; 2]>,
     #[serde(default)]
     pub max: Option<[f32; 2]>,
+    // cloth_flat / torn: the soft body
+    #[serde(default)]
+    pub body: Option<String>,
+    #[serde(default)]
+    pub min_area_fraction: Option<f32>,
+    #[serde(default)]
+    pub pieces: Option<u32>,
+    #[serde(default)]
+    pub min_piece_fraction: Option<f32>,
 }

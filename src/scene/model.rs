@@ -1,6 +1,6 @@
 //! The validated scene: plain values every other module reads.
 
-use super::effects::EffectSet;
+use super::effects::{Effect, EffectSet};
 use glam::{Quat, Vec2, Vec3};
 
 /// A validated scene. Units are metres, kilograms and seconds; z is up and the
@@ -18,6 +18,8 @@ pub struct Scene {
     pub camera: CameraSpec,
     pub physics: PhysicsSpec,
     pub objects: Vec<ObjectSpec>,
+    /// Deformable bodies (`[[soft_bodies]]`); each needs its effect declared.
+    pub soft_bodies: Vec<SoftBodySpec>,
     pub goal: Goal,
     /// Technique overrides (`[technique]`), checked by the technique config.
     pub technique: toml::Table,
@@ -27,6 +29,11 @@ impl Scene {
     /// Index of the object with this name.
     pub fn object_index(&self, name: &str) -> Option<usize> {
         self.objects.iter().position(|o| o.name == name)
+    }
+
+    /// Index of the soft body with this name.
+    pub fn soft_body_index(&self, name: &str) -> Option<usize> {
+        self.soft_bodies.iter().position(|o| o.name == name)
     }
 
     /// True when the table-plane point lies on the table.
@@ -188,6 +195,79 @@ pub struct ObjectSpec {
     pub angular_damping: f32,
 }
 
+/// What a soft body is made of.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SoftKind {
+    /// A sheet of particles with stretch, shear and bending springs (cloth,
+    /// paper): needs the `cloth` effect.
+    Cloth,
+    /// A tetrahedralised block that keeps its volume (jelly, foam): needs the
+    /// `soft_bodies` effect.
+    Volume,
+}
+
+impl SoftKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            SoftKind::Cloth => "cloth",
+            SoftKind::Volume => "volume",
+        }
+    }
+}
+
+/// One deformable body of a scene (`[[soft_bodies]]`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SoftBodySpec {
+    pub name: String,
+    pub kind: SoftKind,
+    /// Full extents (m); a cloth's `z` is 0.
+    pub size: Vec3,
+    /// Particles along each side (a cloth's third entry is 1).
+    pub resolution: [usize; 3],
+    /// Centre of the body at rest (a cloth lies `thickness` above the table).
+    pub position: Vec3,
+    /// Total mass (kg).
+    pub mass: f32,
+    /// Natural frequency (Hz) of the stretch (and, for volumes, volume)
+    /// constraints: higher is stiffer, up to what the solver resolves.
+    pub stiffness: f32,
+    /// Natural frequency (Hz) of a cloth's bending springs.
+    pub bending: f32,
+    /// Strain past which an edge tears (needs the `tearing` effect).
+    pub tear_strain: Option<f32>,
+    pub friction: f32,
+    /// Contact thickness: the particles' radius (m).
+    pub thickness: f32,
+    /// Air drag on the particles (1/s).
+    pub damping: f32,
+    /// 0 = starts flat; up to 0.6 = starts rumpled into this much less area.
+    pub crumple: f32,
+    pub color_name: String,
+    pub color: Color,
+}
+
+impl SoftBodySpec {
+    /// The effects a scene must declare for this body to exist.
+    pub fn required_effects(&self) -> EffectSet {
+        let mut e = EffectSet::empty().with(match self.kind {
+            SoftKind::Cloth => Effect::Cloth,
+            SoftKind::Volume => Effect::SoftBodies,
+        });
+        if self.tear_strain.is_some() {
+            e.insert(Effect::Tearing);
+        }
+        e
+    }
+
+    /// Rest area of a cloth (m²) or rest volume of a block (m³).
+    pub fn rest_measure(&self) -> f32 {
+        match self.kind {
+            SoftKind::Cloth => self.size.x * self.size.y,
+            SoftKind::Volume => self.size.x * self.size.y * self.size.z,
+        }
+    }
+}
+
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Target {
     /// Index into [`Scene::objects`].
@@ -235,4 +315,13 @@ pub enum Goal {
     Gather { center: Vec2, radius: f32, fraction: f32, dwell_s: f32 },
     /// The named object rests inside the rectangle.
     Region { object: usize, min: Vec2, max: Vec2, dwell_s: f32 },
+    /// The named soft body's centre of mass rests inside the rectangle
+    /// (`kind = "region"` naming a soft body).
+    SoftRegion { body: usize, min: Vec2, max: Vec2, dwell_s: f32 },
+    /// The named cloth, at rest, covers at least `min_area_fraction` of its
+    /// rest area on the table (crumpled cloth smoothed out).
+    ClothFlat { body: usize, min_area_fraction: f32, dwell_s: f32 },
+    /// The named soft body has come apart into at least `pieces` pieces,
+    /// each holding at least `min_piece_fraction` of its mass.
+    Torn { body: usize, pieces: usize, min_piece_fraction: f32 },
 }

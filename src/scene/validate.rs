@@ -1,12 +1,12 @@
 //! From TOML text to a validated [`Scene`]. Input is cleaned once, here, so
-//! everything downstream can trust it (a habit taken from Box2D).
+//! everything downstream can trust it.
 
 use super::effects::EffectSet;
 use super::error::SceneError;
-use super::file::{BodyKindFile, GoalFile, GoalKind, ObjectFile, SceneFile, ShapeKind};
+use super::file::{BodyKindFile, GoalFile, GoalKind, ObjectFile, SceneFile, ShapeKind, SoftBodyFile, SoftKindFile};
 use super::model::{
-    BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SortingZone,
-    SteeringGoal, Table, Target,
+    BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind,
+    SortingZone, SteeringGoal, Table, Target,
 };
 use glam::{EulerRot, Quat, Vec2, Vec3};
 use std::ops::Range;
@@ -179,6 +179,16 @@ impl Checker<'_> {
             }
         }
 
+        let mut soft_bodies = Vec::new();
+        for (i, b) in raw.soft_bodies.into_iter().enumerate() {
+            let span = b.span();
+            let spec = self.soft_body(i, b, &table, effects)?;
+            if soft_bodies.iter().any(|o: &SoftBodySpec| o.name == spec.name) || objects.iter().any(|o| o.name == spec.name) {
+                return Err(self.err(&span, format!("soft_bodies[{i}].name"), format!("`{}` is already the name of an object or soft body", spec.name)));
+            }
+            soft_bodies.push(spec);
+        }
+
         let time_limit_s = match raw.time_limit_s {
             Some(s) => {
                 let span = s.span();
@@ -188,7 +198,7 @@ impl Checker<'_> {
         };
 
         let goal = match raw.goal {
-            Some(g) => self.goal(g, &table, &objects)?,
+            Some(g) => self.goal(g, &table, &objects, &soft_bodies)?,
             None => Goal::None,
         };
 
@@ -203,6 +213,7 @@ impl Checker<'_> {
             camera,
             physics,
             objects,
+            soft_bodies,
             goal,
             technique: raw.technique.unwrap_or_default(),
         })
@@ -295,7 +306,116 @@ impl Checker<'_> {
         Ok(())
     }
 
-    fn goal(&self, g: Spanned<GoalFile>, table: &Table, objects: &[ObjectSpec]) -> Result<Goal, SceneError> {
+    /// One `[[soft_bodies]]` entry. Its effect must be declared: a scene
+    /// that does not ask for soft bodies never pays for them.
+    fn soft_body(&self, i: usize, b: Spanned<SoftBodyFile>, table: &Table, effects: EffectSet) -> Result<SoftBodySpec, SceneError> {
+        let span = b.span();
+        let b = b.into_inner();
+        let f = |field: &str| format!("soft_bodies[{i}].{field}");
+        let kind = match b.kind {
+            SoftKindFile::Cloth => SoftKind::Cloth,
+            SoftKindFile::Volume => SoftKind::Volume,
+        };
+        let dims = match kind {
+            SoftKind::Cloth => 2,
+            SoftKind::Volume => 3,
+        };
+        if b.size.len() != dims {
+            let want = if dims == 2 { "[x, y]" } else { "[x, y, z]" };
+            return Err(self.err(&span, f("size"), format!("a {} needs `size = {want}`", kind.name())));
+        }
+        let mut size = Vec3::ZERO;
+        for (k, v) in b.size.iter().enumerate() {
+            size[k] = self.positive(&span, &f(&format!("size[{k}]")), *v)?;
+        }
+        let thickness = self.positive(&span, &f("thickness"), b.thickness.unwrap_or(match kind {
+            SoftKind::Cloth => 0.002,
+            SoftKind::Volume => 0.003,
+        }))?;
+        if thickness > 0.05 {
+            return Err(self.err(&span, f("thickness"), format!("{thickness} is out of range (up to 0.05 m)")));
+        }
+        // About one particle every 2 cm (cloth) or 1.5 cm (volumes) by default.
+        let spacing = if kind == SoftKind::Cloth { 0.02 } else { 0.015 };
+        let resolution = if let Some(r) = &b.resolution {
+            if r.len() != dims {
+                return Err(self.err(&span, f("resolution"), format!("needs {dims} entries, one per side, got {}", r.len())));
+            }
+            let mut out = [1usize; 3];
+            for (k, n) in r.iter().enumerate() {
+                if !(2..=128).contains(n) {
+                    return Err(self.err(&span, f(&format!("resolution[{k}]")), format!("{n} is out of range (2..=128)")));
+                }
+                out[k] = *n as usize;
+            }
+            out
+        } else {
+            let n = |l: f32| ((l / spacing).round() as usize + 1).clamp(2, 48);
+            [n(size.x), n(size.y), if dims == 3 { n(size.z) } else { 1 }]
+        };
+        let particles = resolution.iter().product::<usize>();
+        if particles > 8192 {
+            return Err(self.err(&span, f("resolution"), format!("{particles} particles is too many (at most 8192)")));
+        }
+        let position = match b.position.as_slice() {
+            [x, y] => Vec3::new(*x, *y, if kind == SoftKind::Cloth { thickness } else { size.z / 2.0 + thickness }),
+            [x, y, z] => Vec3::new(*x, *y, *z),
+            _ => return Err(self.err(&span, f("position"), "must be [x, y] or [x, y, z]")),
+        };
+        for (k, v) in position.to_array().iter().enumerate() {
+            self.num(&span, &f(&format!("position[{k}]")), *v, -100.0, 100.0)?;
+        }
+        if !table_contains(table, position.truncate()) {
+            return Err(self.err(&span, f("position"), format!("({:.3}, {:.3}) lies off the table", position.x, position.y)));
+        }
+        let measure = if dims == 2 { size.x * size.y } else { size.x * size.y * size.z };
+        let mass = match (b.mass, b.density) {
+            (Some(m), None) => self.positive(&span, &f("mass"), m)?,
+            (None, Some(d)) => self.positive(&span, &f("density"), d)? * measure,
+            (Some(_), Some(_)) => return Err(self.err(&span, f("density"), "give `mass` or `density`, not both")),
+            (None, None) => return Err(self.err(&span, f("mass"), format!("a {} needs `mass` (kg) or `density`", kind.name()))),
+        };
+        if b.bending.is_some() && kind != SoftKind::Cloth {
+            return Err(self.err(&span, f("bending"), "only a cloth has bending springs"));
+        }
+        if b.crumple.is_some() && kind != SoftKind::Cloth {
+            return Err(self.err(&span, f("crumple"), "only a cloth can start crumpled"));
+        }
+        let tear_strain = match b.tear_strain {
+            Some(t) => Some(self.positive(&span, &f("tear_strain"), t).and_then(|t| self.num(&span, &f("tear_strain"), t, 0.0, 10.0))?),
+            None => None,
+        };
+        let color = Color::parse(&b.color).ok_or_else(|| self.err(&span, f("color"), format!("unknown colour `{}`", b.color)))?;
+        let spec = SoftBodySpec {
+            name: b.name,
+            kind,
+            size,
+            resolution,
+            position,
+            mass,
+            stiffness: self.num(&span, &f("stiffness"), b.stiffness.unwrap_or(DEFAULT_SOFT_STIFFNESS_HZ), 0.1, 10_000.0)?,
+            bending: self.num(&span, &f("bending"), b.bending.unwrap_or(DEFAULT_CLOTH_BENDING_HZ), 0.0, 10_000.0)?,
+            tear_strain,
+            friction: self.num(&span, &f("friction"), b.friction.unwrap_or(0.6), 0.0, 10.0)?,
+            thickness,
+            damping: self.num(&span, &f("damping"), b.damping.unwrap_or(0.5), 0.0, 100.0)?,
+            crumple: self.num(&span, &f("crumple"), b.crumple.unwrap_or(0.0), 0.0, 0.6)?,
+            color_name: b.color,
+            color,
+        };
+        for e in spec.required_effects().iter() {
+            if !effects.contains(e) {
+                let (field, what) = match e {
+                    super::Effect::Tearing => (f("tear_strain"), "tearing".to_string()),
+                    _ => (f("kind"), format!("a {}", kind.name())),
+                };
+                return Err(self.err(&span, field, format!("{what} needs the `{e}` effect: add it to `effects`")));
+            }
+        }
+        Ok(spec)
+    }
+
+    fn goal(&self, g: Spanned<GoalFile>, table: &Table, objects: &[ObjectSpec], soft: &[SoftBodySpec]) -> Result<Goal, SceneError> {
         let span = g.span();
         let g = g.into_inner();
         let dwell_s = self.num(&span, "goal.dwell_s", g.dwell_s.unwrap_or(0.5), 0.0, 60.0)?;
@@ -385,14 +505,46 @@ impl Checker<'_> {
                 dwell_s,
             },
             GoalKind::Region => {
-                let object = object_named(&g.object, "goal.object")?;
                 let min = on_table(g.min.ok_or_else(|| self.err(&span, "goal.min", "a region goal needs `min`"))?, &span, "goal.min")?;
                 let max = on_table(g.max.ok_or_else(|| self.err(&span, "goal.max", "a region goal needs `max`"))?, &span, "goal.max")?;
-                Goal::Region { object, min, max, dwell_s }
+                // The named thing may be a soft body (a block squeezed into a cavity).
+                if let Some(body) = g.object.as_ref().and_then(|n| soft.iter().position(|b| &b.name == n)) {
+                    Goal::SoftRegion { body, min, max, dwell_s }
+                } else {
+                    let object = object_named(&g.object, "goal.object")?;
+                    Goal::Region { object, min, max, dwell_s }
+                }
+            }
+            GoalKind::ClothFlat | GoalKind::Torn => {
+                let name = g.body.as_ref().ok_or_else(|| self.err(&span, "goal.body", "this goal needs `body`, the name of a soft body"))?;
+                let body = soft.iter().position(|b| &b.name == name).ok_or_else(|| self.err(&span, "goal.body", format!("no soft body named `{name}`")))?;
+                if g.kind == GoalKind::ClothFlat {
+                    if soft[body].kind != SoftKind::Cloth {
+                        return Err(self.err(&span, "goal.body", format!("`{name}` is not a cloth")));
+                    }
+                    let min_area_fraction = self.num(&span, "goal.min_area_fraction", g.min_area_fraction.unwrap_or(0.9), 0.01, 1.0)?;
+                    Goal::ClothFlat { body, min_area_fraction, dwell_s }
+                } else {
+                    if soft[body].tear_strain.is_none() {
+                        return Err(self.err(&span, "goal.body", format!("`{name}` cannot tear: give it a `tear_strain`")));
+                    }
+                    let pieces = g.pieces.unwrap_or(2);
+                    if !(2..=100).contains(&pieces) {
+                        return Err(self.err(&span, "goal.pieces", format!("{pieces} is out of range (2..=100)")));
+                    }
+                    let min_piece_fraction = self.num(&span, "goal.min_piece_fraction", g.min_piece_fraction.unwrap_or(0.1), 0.0, 1.0 / pieces as f32)?;
+                    Goal::Torn { body, pieces: pieces as usize, min_piece_fraction }
+                }
             }
         })
     }
 }
+
+/// Default stretch stiffness of soft bodies (Hz): stiff enough that a sheet
+/// dragged by a hand stretches by a few percent, not by half.
+pub const DEFAULT_SOFT_STIFFNESS_HZ: f32 = 60.0;
+/// Default bending stiffness of cloth (Hz): a sheet that drapes and folds.
+pub const DEFAULT_CLOTH_BENDING_HZ: f32 = 4.0;
 
 fn table_contains(table: &Table, p: Vec2) -> bool {
     p.x.abs() <= table.width / 2.0 + 1e-6 && p.y.abs() <= table.depth / 2.0 + 1e-6

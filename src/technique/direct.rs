@@ -14,12 +14,14 @@ pub struct DirectForce {
     config: TechniqueConfig,
     /// Points where a force was applied this frame (feedback: a cube each).
     touched: Vec<Vec3>,
+    /// Soft particles given a force this frame (cleared after the step).
+    soft_touched: Vec<(rapier3d::prelude::SoftBodyHandle, u32)>,
     contacts: usize,
 }
 
 impl DirectForce {
     pub fn new(config: TechniqueConfig) -> Self {
-        DirectForce { config, touched: Vec::new(), contacts: 0 }
+        DirectForce { config, touched: Vec::new(), soft_touched: Vec::new(), contacts: 0 }
     }
 }
 
@@ -34,12 +36,23 @@ impl Technique for DirectForce {
         for c in &input.frame.contacts {
             let p = table_point(input.sensor, c.blob.centroid);
             let Some(hit) = world.cast_contact_ray(p) else { continue };
-            let Some(obj) = hit.object else { continue };
             // A contact that just appeared has no velocity yet.
             if c.age_frames == 0 {
                 continue;
             }
             let v_hand = clamp_len(table_velocity(input.sensor, c.velocity_px, input.dt), self.config.max_contact_speed);
+            if let Some((h, i)) = hit.soft {
+                // On a soft body: the same drag on the touched particle.
+                let Some(b) = world.physics_mut().soft_bodies.get_mut(h) else { continue };
+                let particle = &b.particles()[i as usize];
+                let v = particle.velocity();
+                let force = (v_hand.extend(0.0) - Vec3::new(v.x, v.y, 0.0)) * (self.config.direct_gain * particle.mass());
+                b.add_particle_force(i as usize, force, true);
+                self.soft_touched.push((h, i));
+                self.touched.push(hit.point);
+                continue;
+            }
+            let Some(obj) = hit.object else { continue };
             let h = world.object_body(obj);
             let Some(body) = world.physics_mut().bodies.get_mut(h) else { continue };
             if !body.is_dynamic() {
@@ -63,6 +76,12 @@ impl Technique for DirectForce {
             if let Some(b) = world.physics_mut().bodies.get_mut(h) {
                 b.reset_forces(false);
                 b.reset_torques(false);
+            }
+        }
+        // Every piece: a tear this step may have carried a force to a new one.
+        if !std::mem::take(&mut self.soft_touched).is_empty() {
+            for (_, b) in world.physics_mut().soft_bodies.iter_mut() {
+                b.reset_forces(false);
             }
         }
     }

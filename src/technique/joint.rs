@@ -13,6 +13,13 @@
 //! hand-written 2D push (the contact module's exit vector) because rapier then
 //! resolves side pushes, stacking and friction consistently with everything
 //! else; the 2D module remains the exact footprint test used elsewhere.
+//!
+//! On a soft body (cloth, a soft block, a torn piece) the contact grabs the
+//! particle nearest to where its ray lands: rapier attaches that particle to
+//! the kinematic anchor (a point constraint, `SoftBody::attach_particle`),
+//! and the grab breaks like a joint when the attachment's force passes
+//! `joint_break_force`. Several contacts grab several particles, so two hands
+//! pulling apart stretch (and may tear) the sheet between them.
 
 use super::proxy::remove_body;
 use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
@@ -39,6 +46,22 @@ struct Grab {
     v_hand: Vec2,
 }
 
+/// A contact holding a soft-body particle through its kinematic anchor.
+/// The particle is found again through the attachment (a tear renumbers
+/// particles and may move it to another piece; the attachment follows).
+#[derive(Debug, Clone, Copy)]
+struct SoftGrab {
+    anchor: RigidBodyHandle,
+    /// Height the anchor moves at (the touched surface).
+    z: f32,
+}
+
+/// What a new contact took hold of.
+enum Hold {
+    Object(Grab),
+    Soft(SoftGrab),
+}
+
 #[derive(Debug, Clone, Copy)]
 struct Pusher {
     body: RigidBodyHandle,
@@ -50,6 +73,7 @@ struct Pusher {
 pub struct JointTechnique {
     config: TechniqueConfig,
     grabs: BTreeMap<u32, Grab>,
+    soft_grabs: BTreeMap<u32, SoftGrab>,
     pushers: BTreeMap<u32, Pusher>,
     /// Contacts whose joint broke: they grab nothing until lifted.
     broken: BTreeSet<u32>,
@@ -58,11 +82,18 @@ pub struct JointTechnique {
 
 impl JointTechnique {
     pub fn new(config: TechniqueConfig) -> Self {
-        JointTechnique { config, grabs: BTreeMap::new(), pushers: BTreeMap::new(), broken: BTreeSet::new(), contacts: 0 }
+        JointTechnique { config, grabs: BTreeMap::new(), soft_grabs: BTreeMap::new(), pushers: BTreeMap::new(), broken: BTreeSet::new(), contacts: 0 }
     }
 
-    fn try_grab(&self, world: &mut World, target: Vec2, v_hand: Vec2) -> Option<Grab> {
+    fn try_grab(&self, world: &mut World, target: Vec2, v_hand: Vec2) -> Option<Hold> {
         let hit = world.cast_contact_ray(target)?;
+        if let Some((h, particle)) = hit.soft {
+            let physics = world.physics_mut();
+            let at = physics.soft_bodies.get(h)?.particle_position(particle as usize);
+            let anchor = physics.bodies.insert(RigidBodyBuilder::kinematic_position_based().translation(at).build());
+            physics.soft_bodies.get_mut(h)?.attach_particle(particle as usize, anchor, &physics.bodies);
+            return Some(Hold::Soft(SoftGrab { anchor, z: at.z }));
+        }
         let object = hit.object?;
         let h = world.object_body(object);
         let physics = world.physics_mut();
@@ -77,7 +108,27 @@ impl JointTechnique {
             .local_anchor2(local)
             .build();
         let joint = physics.impulse_joints.insert(anchor, h, joint, true);
-        Some(Grab { anchor, joint, object, local, z: hit.point.z, v_hand })
+        Some(Hold::Object(Grab { anchor, joint, object, local, z: hit.point.z, v_hand }))
+    }
+
+    /// The soft particle held by `anchor` (its position) and the force (N)
+    /// the attachment applied over the last step; `None` once it is gone.
+    fn soft_held(world: &World, anchor: RigidBodyHandle, dt: f32) -> Option<(Vec3, f32)> {
+        world.physics().soft_bodies.iter().find_map(|(_, b)| {
+            let a = b.particle_attachments().iter().find(|a| a.body == anchor)?;
+            Some((b.particle_position(a.particle as usize), a.impulse().length() / dt))
+        })
+    }
+
+    fn release_soft(world: &mut World, g: SoftGrab) {
+        let physics = world.physics_mut();
+        for (_, b) in physics.soft_bodies.iter_mut() {
+            let held: Vec<u32> = b.particle_attachments().iter().filter(|a| a.body == g.anchor).map(|a| a.particle).collect();
+            for p in held {
+                b.detach_particle(p as usize);
+            }
+        }
+        remove_body(world, g.anchor);
     }
 
     fn release(world: &mut World, g: Grab) {
@@ -166,6 +217,22 @@ impl Technique for JointTechnique {
             seen.insert(c.id);
             let target = table_point(input.sensor, c.blob.centroid);
             let v_hand = clamp_len(table_velocity(input.sensor, c.velocity_px, dt), self.config.max_contact_speed);
+            if let Some(g) = self.soft_grabs.get(&c.id).copied() {
+                let goal = at_height(world, target, g.z);
+                let held = Self::soft_held(world, g.anchor, dt);
+                let physics = world.physics_mut();
+                let cur = physics.bodies.get(g.anchor).map_or(Vec3::ZERO, RigidBody::translation);
+                let next = cur.truncate() + clamp_len(goal - cur.truncate(), max_step);
+                if let Some(a) = physics.bodies.get_mut(g.anchor) {
+                    a.set_next_kinematic_translation(next.extend(g.z));
+                }
+                if held.is_none_or(|(_, force)| force > self.config.joint_break_force) {
+                    self.soft_grabs.remove(&c.id);
+                    self.broken.insert(c.id);
+                    Self::release_soft(world, g);
+                }
+                continue;
+            }
             if let Some(mut g) = self.grabs.get(&c.id).copied() {
                 g.v_hand = v_hand;
                 let object_body = world.object_body(g.object);
@@ -190,9 +257,12 @@ impl Technique for JointTechnique {
             }
             if !self.broken.contains(&c.id)
                 && !self.pushers.contains_key(&c.id)
-                && let Some(g) = self.try_grab(world, target, v_hand)
+                && let Some(hold) = self.try_grab(world, target, v_hand)
             {
-                self.grabs.insert(c.id, g);
+                match hold {
+                    Hold::Object(g) => self.grabs.insert(c.id, g).map(|_| ()),
+                    Hold::Soft(g) => self.soft_grabs.insert(c.id, g).map(|_| ()),
+                };
                 continue;
             }
             self.update_pusher(world, c, input, target);
@@ -201,6 +271,12 @@ impl Technique for JointTechnique {
         for id in lifted {
             if let Some(g) = self.grabs.remove(&id) {
                 Self::release(world, g);
+            }
+        }
+        let lifted: Vec<u32> = self.soft_grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
+        for id in lifted {
+            if let Some(g) = self.soft_grabs.remove(&id) {
+                Self::release_soft(world, g);
             }
         }
         let lifted: Vec<u32> = self.pushers.keys().copied().filter(|id| !seen.contains(id)).collect();
@@ -215,7 +291,7 @@ impl Technique for JointTechnique {
 
     fn feedback(&self, world: &World) -> Feedback {
         let physics = world.physics();
-        let lines = self
+        let mut lines: Vec<(Vec3, Vec3)> = self
             .grabs
             .values()
             .filter_map(|g| {
@@ -224,16 +300,25 @@ impl Technique for JointTechnique {
                 Some((a, o))
             })
             .collect();
+        lines.extend(self.soft_grabs.values().filter_map(|g| {
+            let a = physics.bodies.get(g.anchor)?.translation();
+            let (p, _) = Self::soft_held(world, g.anchor, world.dt())?;
+            Some((a, p))
+        }));
         Feedback { lines, cubes: Vec::new() }
     }
 
     fn counts(&self) -> TechniqueCounts {
-        TechniqueCounts { contacts: self.contacts, bodies: self.grabs.len() + self.pushers.len(), joints: self.grabs.len() }
+        let held = self.grabs.len() + self.soft_grabs.len();
+        TechniqueCounts { contacts: self.contacts, bodies: held + self.pushers.len(), joints: held }
     }
 
     fn clear(&mut self, world: &mut World) {
         for (_, g) in std::mem::take(&mut self.grabs) {
             Self::release(world, g);
+        }
+        for (_, g) in std::mem::take(&mut self.soft_grabs) {
+            Self::release_soft(world, g);
         }
         for (_, p) in std::mem::take(&mut self.pushers) {
             remove_body(world, p.body);

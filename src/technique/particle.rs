@@ -11,7 +11,7 @@
 //! rapier's broad phase keeps its pairs; PLATFORM.md measured that pooling
 //! without such coherence is *slower* than create/destroy.
 
-use super::proxy::{gravity_scale_for, pressure_weight, remove_body};
+use super::proxy::{gravity_scale_for, pressure_weight, remove_body, soft_mass};
 use super::surface_point::{clamp_len, project_flow, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::world::{Layer, World, WorldError};
@@ -38,6 +38,8 @@ struct Slot {
     /// Pixel position it sat on last frame.
     px: [f32; 2],
     active: bool,
+    /// The mass its collider was given.
+    mass: f32,
 }
 
 #[derive(Debug)]
@@ -92,14 +94,16 @@ impl ParticleTechnique {
             let vt = clamp_len(Vec2::new(v.x, v.y), self.config.max_contact_speed);
             let vz = if v.z.abs() > self.config.max_contact_speed { v.z.signum() * self.config.max_contact_speed } else { v.z };
             let offset = if self.config.particle_capsules { r * 3.0 } else { r };
+            let weight = pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey)) * share;
             out.push(Placement {
                 px: e.px,
                 // Just touching (0.1 mm in): a particle that starts in contact presses
                 // with its full weight within its one step.
                 center: hit.point + hit.normal * (offset - 0.0001),
                 velocity: Vec3::new(vt.x, vt.y, vz),
-                weight: pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey)) * share,
-                mass: self.config.particle_mass * share,
+                weight,
+                // On a soft body a particle weighs what it presses (see `soft_mass`).
+                mass: if hit.soft.is_some() { soft_mass(weight) } else { self.config.particle_mass * share },
             });
         }
         out
@@ -176,7 +180,7 @@ impl ParticleTechnique {
                 assignment[k] = i;
             } else {
                 let body = self.new_body(world, p);
-                self.slots.push(Slot { body, px: p.px, active: true });
+                self.slots.push(Slot { body, px: p.px, active: true, mass: p.mass });
                 taken.push(true);
                 assignment[k] = self.slots.len() - 1;
             }
@@ -193,7 +197,17 @@ impl ParticleTechnique {
                 b.set_enabled(true);
                 b.set_position(Pose::from_translation(p.center), true);
                 b.set_linvel(p.velocity, true);
-                b.set_gravity_scale(gravity_scale_for(b.mass(), p.weight), true);
+                b.set_gravity_scale(gravity_scale_for(p.mass, p.weight), true);
+                // Moving between a soft body and rigid ground changes its mass
+                // (see `soft_mass`); rapier applies it at the next step.
+                if (s.mass - p.mass).abs() > 1e-7 {
+                    s.mass = p.mass;
+                    if let Some(&c) = b.colliders().first()
+                        && let Some(col) = physics.colliders.get_mut(c)
+                    {
+                        col.set_mass(p.mass);
+                    }
+                }
             }
         }
         // Spare bodies are disabled (cheap) rather than removed.
@@ -228,7 +242,7 @@ impl Technique for ParticleTechnique {
             // The paper's way: every particle is created now and destroyed after the step.
             for p in &placements {
                 let body = self.new_body(world, p);
-                self.slots.push(Slot { body, px: p.px, active: true });
+                self.slots.push(Slot { body, px: p.px, active: true, mass: p.mass });
             }
         }
         Ok(())

@@ -15,6 +15,9 @@ pub enum Layer {
     Proxy,
     /// A technique's particles (one per edge pixel).
     Particle,
+    /// Soft bodies' deformable surfaces (cloth, volumes, torn pieces): part
+    /// of the scene for contacts and ray casts alike.
+    Soft,
 }
 
 impl Layer {
@@ -24,14 +27,16 @@ impl Layer {
             Layer::Object => Group::GROUP_2,
             Layer::Proxy => Group::GROUP_3,
             Layer::Particle => Group::GROUP_4,
+            Layer::Soft => Group::GROUP_5,
         }
     }
 
     /// The interaction groups a collider on this layer gets.
     pub fn groups(self) -> InteractionGroups {
-        let scene = Group::GROUP_1 | Group::GROUP_2;
+        // Soft bodies are scene too: proxies, particles and objects all meet them.
+        let scene = Group::GROUP_1 | Group::GROUP_2 | Group::GROUP_5;
         let filter = match self {
-            Layer::Environment | Layer::Object => scene | Group::GROUP_3 | Group::GROUP_4,
+            Layer::Environment | Layer::Object | Layer::Soft => scene | Group::GROUP_3 | Group::GROUP_4,
             // Proxies touch the scene and each other (two fingers can pinch).
             Layer::Proxy => scene | Group::GROUP_3,
             // Particles touch the scene only.
@@ -42,14 +47,16 @@ impl Layer {
 
     /// Groups for queries that should see the scene only.
     pub fn scene_query() -> InteractionGroups {
-        InteractionGroups::new(Group::ALL, Group::GROUP_1 | Group::GROUP_2, InteractionTestMode::And)
+        InteractionGroups::new(Group::ALL, Group::GROUP_1 | Group::GROUP_2 | Group::GROUP_5, InteractionTestMode::And)
     }
 }
 
 /// The layer a collider was created on.
 pub fn collider_layer(c: &Collider) -> Layer {
     let m = c.collision_groups().memberships;
-    if m.contains(Group::GROUP_4) {
+    if m.contains(Group::GROUP_5) {
+        Layer::Soft
+    } else if m.contains(Group::GROUP_4) {
         Layer::Particle
     } else if m.contains(Group::GROUP_3) {
         Layer::Proxy

@@ -1,11 +1,13 @@
 //! The physics world: a rapier3d simulation built from a [`crate::scene::Scene`].
 //!
 //! Fixed timestep, deterministic (same scene + same inputs → bit-identical
-//! state on one machine), and paying only for the effects the scene declares.
+//! state on one machine), and paying only for the effects the scene declares
+//! (soft bodies included: `soft.rs`).
 
 mod config;
 mod groups;
 mod ray;
+mod soft;
 mod stats;
 #[allow(clippy::module_inception)]
 mod world;
@@ -13,5 +15,6 @@ mod world;
 pub use config::WorldConfig;
 pub use groups::{Layer, collider_layer};
 pub use ray::RayHit;
+pub use soft::SoftSurface;
 pub use stats::{StepStats, WorldStats};
 pub use world::{ObjectPose, World, WorldError};

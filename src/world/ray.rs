@@ -1,6 +1,7 @@
 //! The result of a scene ray cast.
 
 use glam::Vec3;
+use rapier3d::prelude::SoftBodyHandle;
 
 /// Where a ray met the scene.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -13,4 +14,7 @@ pub struct RayHit {
     pub normal: Vec3,
     /// Distance along the (unit) ray.
     pub toi: f32,
+    /// The soft body hit (a cloth, a block or a torn piece of one) and its
+    /// particle nearest to `point`; `object` is `None` then.
+    pub soft: Option<(SoftBodyHandle, u32)>,
 }

@@ -3,6 +3,7 @@
 use super::config::WorldConfig;
 use super::groups::Layer;
 use super::ray::RayHit;
+use super::soft::{SOFT_TAG, SoftSlot};
 use super::stats::{StepStats, WorldStats};
 use crate::scene::{BodyKind, EffectSet, Scene, Shape};
 use glam::{Quat, Vec2, Vec3};
@@ -42,6 +43,8 @@ pub struct World {
     config: WorldConfig,
     scene: Scene,
     objects: Vec<ObjectSlot>,
+    /// Declared soft bodies (src/world/soft.rs); empty slots when their effect is off.
+    pub(super) soft: Vec<SoftSlot>,
     time: f64,
     stats: WorldStats,
     last: StepStats,
@@ -137,10 +140,13 @@ impl World {
             objects.push(ObjectSlot { body, collider, active: true });
         }
 
+        let mut world =
+            World { physics, config, scene: scene.clone(), objects, soft: Vec::new(), time: 0.0, stats: WorldStats::default(), last: StepStats::default() };
+        world.spawn_scene_soft_bodies();
         // Build the query structures now: a contact on the very first frame
         // must be able to ray-cast onto the scene before anything has stepped.
-        physics.detect_collisions(&(), &());
-        World { physics, config, scene: scene.clone(), objects, time: 0.0, stats: WorldStats::default(), last: StepStats::default() }
+        world.physics.detect_collisions(&(), &());
+        world
     }
 
     pub fn config(&self) -> &WorldConfig {
@@ -192,6 +198,9 @@ impl World {
     /// Advances one fixed step, then caps speeds and records health figures.
     pub fn step(&mut self) {
         let t0 = Instant::now();
+        if self.config.sleeping && !self.physics.soft_bodies.is_empty() {
+            self.wake_touched_soft_bodies();
+        }
         self.physics.step();
         let us = t0.elapsed().as_secs_f64() * 1e6;
         self.time += f64::from(self.config.dt);
@@ -296,7 +305,8 @@ impl World {
         }
     }
 
-    /// Puts every scene object back at its initial pose, at rest.
+    /// Puts every scene object back at its initial pose, at rest (soft
+    /// bodies whole again).
     pub fn reset_objects(&mut self) {
         for (i, o) in self.scene.objects.iter().enumerate() {
             let slot = &mut self.objects[i];
@@ -308,6 +318,7 @@ impl World {
                 b.set_angvel(Vec3::ZERO, true);
             }
         }
+        self.reset_soft_bodies();
         self.physics.detect_collisions(&(), &());
     }
 
@@ -343,15 +354,21 @@ impl World {
         (eye + (p - eye) * t).truncate()
     }
 
-    /// Casts a ray against the scene only (table, walls, objects; never
-    /// proxies or particles).
+    /// Casts a ray against the scene only (table, walls, objects, soft
+    /// bodies; never proxies or particles).
     pub fn cast_ray(&self, origin: Vec3, dir: Vec3, max_toi: f32) -> Option<RayHit> {
         let ray = Ray::new(origin, dir);
         let filter = QueryFilter { groups: Some(Layer::scene_query()), ..QueryFilter::default() };
         let (h, hit) = self.physics.cast_ray_and_get_normal(&ray, max_toi, true, filter)?;
         let c = &self.physics.colliders[h];
+        let point = ray.point_at(hit.time_of_impact);
+        if c.user_data == SOFT_TAG {
+            // A cloth is two-sided: its normal faces the ray.
+            let normal = if hit.normal.dot(dir) > 0.0 { -hit.normal } else { hit.normal };
+            return Some(RayHit { object: None, point, normal, toi: hit.time_of_impact, soft: self.soft_hit(c, point) });
+        }
         let object = if c.user_data == ENV_TAG { None } else { Some(c.user_data as usize) };
-        let mut out = RayHit { object, point: ray.point_at(hit.time_of_impact), normal: hit.normal, toi: hit.time_of_impact };
+        let mut out = RayHit { object, point, normal: hit.normal, toi: hit.time_of_impact, soft: None };
         if let Some(i) = object
             && let Shape::Cylinder { radius, half_height } = self.scene.objects[i].shape
         {
@@ -382,7 +399,8 @@ impl World {
         self.cast_ray(o, d, 100.0)
     }
 
-    /// Every body's pose and velocity as raw bits, for determinism checks.
+    /// Every body's pose and velocity (and every soft particle's) as raw
+    /// bits, for determinism checks.
     pub fn state_bits(&self) -> Vec<u32> {
         let mut out = Vec::new();
         let mut bodies: Vec<_> = self.physics.bodies.iter().collect();
@@ -393,6 +411,14 @@ impl World {
             out.extend(p.rotation.to_array().map(f32::to_bits));
             out.extend(b.linvel().to_array().map(f32::to_bits));
             out.extend(b.angvel().to_array().map(f32::to_bits));
+        }
+        let mut soft: Vec<_> = self.physics.soft_bodies.iter().collect();
+        soft.sort_by_key(|(h, _)| h.0.into_raw_parts());
+        for (_, b) in soft {
+            for (p, v) in b.particle_positions().zip(b.particle_velocities()) {
+                out.extend(p.to_array().map(f32::to_bits));
+                out.extend(v.to_array().map(f32::to_bits));
+            }
         }
         out
     }

@@ -1,0 +1,363 @@
+//! Soft bodies in the world: cloth sheets, soft volumes and the pieces a tear
+//! leaves, all simulated by rapier's `dynamics::soft_body` (no solver of our own).
+//!
+//! Soft bodies are an effect. A scene that declares none of `soft_bodies`,
+//! `cloth` or `tearing` has an empty `SoftBodySet`, and [`World::add_soft_body`]
+//! refuses to create one whose effect is off, naming the scene and the effect.
+//!
+//! Every piece of a body keeps the scene index of the body it came from in
+//! `SoftBody::user_data` (rapier copies it to the pieces a tear splits off),
+//! so "the sheet" is always the set of bodies carrying its index, however
+//! often it tore. Their surface colliders carry [`SOFT_TAG`] and sit on
+//! [`Layer::Soft`], which meets objects, proxies and particles alike, and
+//! which scene ray casts see.
+
+use super::groups::Layer;
+use super::world::{World, WorldError};
+use crate::scene::{Effect, SoftBodySpec, SoftKind};
+use glam::{Vec2, Vec3};
+use rapier3d::prelude::*;
+
+/// Extra internal PGS iterations for soft bodies and what touches them.
+const SOFT_PGS_ITERATIONS: usize = 12;
+
+/// `user_data` of every soft-body surface collider (pieces copy it).
+pub(super) const SOFT_TAG: u128 = u128::MAX - 1;
+
+/// One declared soft body: its description and the body first inserted for
+/// it (`None` while its effect is off).
+#[derive(Debug, Clone)]
+pub(super) struct SoftSlot {
+    spec: SoftBodySpec,
+    root: Option<SoftBodyHandle>,
+}
+
+/// A soft body's surface as the renderer wants it: world-space vertices and
+/// outward triangles (a cloth's two sides share them).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SoftSurface {
+    /// Index of the declared soft body this piece belongs to.
+    pub body: usize,
+    pub positions: Vec<Vec3>,
+    pub triangles: Vec<[u32; 3]>,
+}
+
+impl World {
+    /// Creates the scene's soft bodies whose effects this world simulates;
+    /// the others get an empty slot (the world "with that effect off").
+    pub(super) fn spawn_scene_soft_bodies(&mut self) {
+        for spec in self.scene().soft_bodies.clone() {
+            let index = self.soft.len();
+            self.soft.push(SoftSlot { spec: spec.clone(), root: None });
+            if self.missing_soft_effect(&spec).is_none() {
+                let h = self.insert_soft(index);
+                self.soft[index].root = Some(h);
+            }
+        }
+    }
+
+    /// The first effect `spec` needs that this world does not simulate.
+    fn missing_soft_effect(&self, spec: &SoftBodySpec) -> Option<Effect> {
+        spec.required_effects().iter().find(|e| !self.config().effects.contains(*e))
+    }
+
+    /// Adds a soft body (beyond the scene's own); returns its index for the
+    /// `soft_*` accessors. Refuses when its effect is off.
+    pub fn add_soft_body(&mut self, spec: &SoftBodySpec) -> Result<usize, WorldError> {
+        if let Some(e) = self.missing_soft_effect(spec) {
+            return Err(WorldError::EffectNotDeclared {
+                scene: self.scene().name.clone(),
+                effect: e.name(),
+                what: format!("the {} `{}`", spec.kind.name(), spec.name),
+            });
+        }
+        let index = self.soft.len();
+        self.soft.push(SoftSlot { spec: spec.clone(), root: None });
+        let h = self.insert_soft(index);
+        self.soft[index].root = Some(h);
+        self.physics_mut().detect_collisions(&(), &());
+        Ok(index)
+    }
+
+    fn insert_soft(&mut self, index: usize) -> SoftBodyHandle {
+        let spec = self.soft[index].spec.clone();
+        let builder = soft_builder(&spec, index, self.config().friction, self.config().sleeping);
+        let physics = self.physics_mut();
+        let h = physics.insert_soft_body(builder);
+        // The world refreshes its query structures (`detect_collisions`)
+        // before the first step, which would file the new root body as
+        // untouched: ask for a wake-up at the first step explicitly.
+        physics.soft_bodies[h].wake_up();
+        if spec.kind == SoftKind::Cloth && spec.crumple > 0.0 {
+            let sb = &mut physics.soft_bodies[h];
+            for (i, p) in crumpled(&spec).into_iter().enumerate() {
+                sb.set_particle_position(i, p);
+            }
+        }
+        h
+    }
+
+    /// Wakes every sleeping soft body that a moving rigid body touches.
+    /// rapier keeps a soft body asleep under a finger sliding slowly over it
+    /// (its contacts are solved outside the rigid contact graph that wakes
+    /// islands): a proxy circling at 3 cm/s on a sleeping cloth never moved
+    /// it. Called before every step; costs nothing when nothing sleeps.
+    pub(super) fn wake_touched_soft_bodies(&mut self) {
+        let physics = self.physics_mut();
+        let mut wake = Vec::new();
+        for (h, b) in physics.soft_bodies.iter().filter(|(_, b)| b.is_sleeping() && b.is_enabled()) {
+            let touched = b.meshes().filter(|m| m.collision_enabled()).any(|m| {
+                physics.narrow_phase.contact_pairs_with(m.collider()).any(|pair| {
+                    let other = if pair.collider1 == m.collider() { pair.collider2 } else { pair.collider1 };
+                    pair.has_any_active_contact()
+                        && physics
+                            .colliders
+                            .get(other)
+                            .and_then(Collider::parent)
+                            .and_then(|p| physics.bodies.get(p))
+                            .is_some_and(|rb| (rb.is_dynamic() || rb.is_kinematic()) && !rb.is_sleeping() && !rb.is_soft_frame() && rb.linvel().length() > 1e-3)
+                })
+            });
+            if touched {
+                wake.push(h);
+            }
+        }
+        for h in wake {
+            physics.soft_bodies[h].wake_up();
+        }
+    }
+
+    /// Puts every soft body back as declared: torn pieces go, the bodies
+    /// return whole and at rest.
+    pub(super) fn reset_soft_bodies(&mut self) {
+        for index in 0..self.soft.len() {
+            if self.soft[index].root.is_none() {
+                continue;
+            }
+            let family: Vec<SoftBodyHandle> = self.soft_pieces(index).map(|(h, _)| h).collect();
+            for h in family {
+                self.physics_mut().remove_soft_body(h);
+            }
+            let h = self.insert_soft(index);
+            self.soft[index].root = Some(h);
+        }
+    }
+
+    /// Number of declared soft bodies (including those whose effect is off).
+    pub fn soft_body_count(&self) -> usize {
+        self.soft.len()
+    }
+
+    pub fn soft_spec(&self, index: usize) -> &SoftBodySpec {
+        &self.soft[index].spec
+    }
+
+    /// Whether the declared soft body `index` exists in this world.
+    pub fn soft_exists(&self, index: usize) -> bool {
+        self.soft[index].root.is_some()
+    }
+
+    /// The rapier bodies soft body `index` is made of now: the body itself,
+    /// or after tears the pieces it came apart into.
+    pub fn soft_pieces(&self, index: usize) -> impl Iterator<Item = (SoftBodyHandle, &SoftBody)> {
+        self.physics().soft_bodies.iter().filter(move |(_, b)| b.user_data == index as u128)
+    }
+
+    /// The mass of each piece of soft body `index`, largest first.
+    pub fn soft_piece_masses(&self, index: usize) -> Vec<f32> {
+        let mut m: Vec<f32> = self.soft_pieces(index).map(|(_, b)| b.mass()).collect();
+        m.sort_by(|a, b| b.total_cmp(a));
+        m
+    }
+
+    /// Centre of mass of soft body `index` (all its pieces).
+    pub fn soft_center(&self, index: usize) -> Option<Vec3> {
+        let (mut sum, mut mass) = (Vec3::ZERO, 0.0);
+        for (_, b) in self.soft_pieces(index) {
+            sum += b.center_of_mass() * b.mass();
+            mass += b.mass();
+        }
+        (mass > 0.0).then(|| sum / mass)
+    }
+
+    /// Fastest particle of soft body `index` (m/s); infinite if any is not finite.
+    pub fn soft_max_speed(&self, index: usize) -> f32 {
+        let mut top = 0.0f32;
+        for (_, b) in self.soft_pieces(index) {
+            for v in b.particle_velocities() {
+                if !v.is_finite() {
+                    return f32::INFINITY;
+                }
+                top = top.max(v.length());
+            }
+        }
+        top
+    }
+
+    /// Whether every particle of every soft body is finite.
+    pub fn soft_all_finite(&self) -> bool {
+        self.physics().soft_bodies.iter().all(|(_, b)| b.particle_positions().all(Vec3::is_finite) && b.particle_velocities().all(Vec3::is_finite))
+    }
+
+    /// Volume enclosed by soft body `index` now, and at rest (m³; 0 for a cloth).
+    pub fn soft_volume(&self, index: usize) -> (f32, f32) {
+        self.soft_pieces(index).fold((0.0, 0.0), |(v, r), (_, b)| (v + b.volume(), r + b.rest_volume()))
+    }
+
+    /// Share of its rest area that soft body `index` covers on the table,
+    /// seen from above (a crumpled or folded cloth covers less; a fold
+    /// counts once). Rasterised on a 2 mm grid.
+    pub fn soft_coverage(&self, index: usize) -> f32 {
+        const CELL: f32 = 0.002;
+        let mut tris: Vec<[Vec2; 3]> = Vec::new();
+        let (mut lo, mut hi) = (Vec2::splat(f32::MAX), Vec2::splat(f32::MIN));
+        for (_, b) in self.soft_pieces(index) {
+            let p: Vec<Vec2> = b.particle_positions().map(Vec3::truncate).collect();
+            for t in b.boundary() {
+                let tri = [p[t[0] as usize], p[t[1] as usize], p[t[2] as usize]];
+                for q in tri {
+                    lo = lo.min(q);
+                    hi = hi.max(q);
+                }
+                tris.push(tri);
+            }
+        }
+        if tris.is_empty() || !(lo.is_finite() && hi.is_finite()) {
+            return 0.0;
+        }
+        let n = ((hi - lo) / CELL).ceil().as_uvec2() + 1;
+        if n.x > 4096 || n.y > 4096 {
+            return 0.0;
+        }
+        let mut covered = vec![false; (n.x * n.y) as usize];
+        for [a, b, c] in tris {
+            let (tlo, thi) = (a.min(b).min(c), a.max(b).max(c));
+            let (i0, j0) = (((tlo.x - lo.x) / CELL).floor() as u32, ((tlo.y - lo.y) / CELL).floor() as u32);
+            let (i1, j1) = (((thi.x - lo.x) / CELL).ceil() as u32, ((thi.y - lo.y) / CELL).ceil() as u32);
+            let area = (b - a).perp_dot(c - a);
+            if area.abs() < 1e-12 {
+                continue;
+            }
+            for j in j0..=j1.min(n.y - 1) {
+                for i in i0..=i1.min(n.x - 1) {
+                    let q = lo + (Vec2::new(i as f32, j as f32) + 0.5) * CELL;
+                    let (w0, w1, w2) = ((c - b).perp_dot(q - b), (a - c).perp_dot(q - c), (b - a).perp_dot(q - a));
+                    let inside = if area > 0.0 { w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0 } else { w0 <= 0.0 && w1 <= 0.0 && w2 <= 0.0 };
+                    if inside {
+                        covered[(j * n.x + i) as usize] = true;
+                    }
+                }
+            }
+        }
+        let cells = covered.iter().filter(|c| **c).count() as f32;
+        let spec = &self.soft[index].spec;
+        cells * CELL * CELL / (spec.size.x * spec.size.y)
+    }
+
+    /// Every soft body's surface now, torn pieces included.
+    pub fn soft_surfaces(&self) -> Vec<SoftSurface> {
+        self.physics()
+            .soft_bodies
+            .iter()
+            .filter(|(_, b)| b.is_enabled())
+            .map(|(_, b)| SoftSurface {
+                body: b.user_data as usize,
+                positions: b.particle_positions().collect(),
+                triangles: b.boundary().to_vec(),
+            })
+            .collect()
+    }
+
+    /// The particle of soft body `h` nearest to `point`.
+    pub fn nearest_soft_particle(&self, h: SoftBodyHandle, point: Vec3) -> Option<u32> {
+        let b = self.physics().soft_bodies.get(h)?;
+        b.particle_positions()
+            .enumerate()
+            .min_by(|(_, a), (_, c)| (*a - point).length_squared().total_cmp(&(*c - point).length_squared()))
+            .map(|(i, _)| i as u32)
+    }
+
+    /// The soft particle a ray hit on collider `c` lands on, if `c` is a soft surface.
+    pub(super) fn soft_hit(&self, c: &Collider, point: Vec3) -> Option<(SoftBodyHandle, u32)> {
+        let mesh = c.deformable_mesh_ref()?;
+        Some((mesh.body, self.nearest_soft_particle(mesh.body, point)?))
+    }
+}
+
+/// The rapier builder for a declared soft body.
+fn soft_builder(spec: &SoftBodySpec, index: usize, friction: bool, sleeping: bool) -> SoftBodyBuilder {
+    let stretch = SpringCoefficients::new(spec.stiffness, 1.0);
+    let [nx, ny, nz] = spec.resolution;
+    let builder = match spec.kind {
+        SoftKind::Cloth => {
+            let origin = spec.position - Vec3::new(spec.size.x / 2.0, spec.size.y / 2.0, 0.0);
+            let du = Vec3::X * spec.size.x / (nx - 1) as f32;
+            let dv = Vec3::Y * spec.size.y / (ny - 1) as f32;
+            let mut material = SoftBodyMaterial::uniform(stretch);
+            material.bend_softness = SpringCoefficients::new(spec.bending.max(0.01), 1.0);
+            let mut cloth = SoftBodyBuilder::cloth(origin, du, dv, nx, ny).material(material);
+            // Cloth buckles freely and resists stretching only: its stretch
+            // and shear edges are tension-only, so a crumpled sheet stays
+            // crumpled until pulled out. The bending springs push both ways.
+            cloth.tension_only_edges = (0..cloth.edges.len() as u32).collect();
+            cloth
+        }
+        SoftKind::Volume => {
+            // Tetrahedra that keep their volume, plus one constraint on the
+            // whole: a squeezed block bulges instead of shrinking.
+            let mut material = SoftBodyMaterial::uniform(stretch);
+            // Volume held three times stiffer than shape: it changes shape
+            // under a hand, not size.
+            material.volume_softness = SpringCoefficients::new(spec.stiffness * 3.0, 1.0);
+            SoftBodyBuilder::cuboid(spec.position, spec.size / 2.0, nx, ny, nz)
+                .material(material)
+                .cell_model(SoftBodyCellModel::Volume)
+                .volume_preservation(true)
+        }
+    };
+    let mut builder = builder
+        .mass(spec.mass)
+        .particle_radius(spec.thickness)
+        .linear_damping(spec.damping)
+        .user_data(index as u128)
+        .surface_collider(
+            ColliderBuilder::ball(spec.thickness)
+                .friction(if friction { spec.friction } else { 0.0 })
+                .collision_groups(Layer::Soft.groups())
+                .user_data(SOFT_TAG),
+        );
+    builder.particle_settings.can_sleep = sleeping;
+    // Fingers weigh far more than a cloth's particles: extra internal
+    // iterations let the soft contacts hold them (measured: with rapier's
+    // default 3 a 0.2 kg box sank through a 0.05 kg, 256-particle cloth;
+    // with 20 it rested on it).
+    builder.particle_settings.additional_pgs_iterations = SOFT_PGS_ITERATIONS;
+    if let Some(t) = spec.tear_strain {
+        builder = builder.tear_strain(t);
+    }
+    builder
+}
+
+/// A cloth's particles rumpled into `1 - crumple` of its width and depth by
+/// waves whose arc length roughly keeps the edges at their rest length
+/// (a compressed sine, `z = A(1 - cos kx)/2`, has length ≈ `L'(1 + (Ak/2)²/4)`).
+fn crumpled(spec: &SoftBodySpec) -> Vec<Vec3> {
+    let [nu, nv, _] = spec.resolution;
+    let s = 1.0 - spec.crumple;
+    let amplitude = |len: f32, waves: f32| {
+        let k = std::f32::consts::TAU * waves / (len * s);
+        (4.0 * (1.0 / s - 1.0).sqrt() / k, k)
+    };
+    let (ax, kx) = amplitude(spec.size.x, 3.0);
+    let (ay, ky) = amplitude(spec.size.y, 2.0);
+    let mut out = Vec::with_capacity(nu * nv);
+    for i in 0..nu {
+        for j in 0..nv {
+            let x = (i as f32 / (nu - 1) as f32 - 0.5) * spec.size.x * s;
+            let y = (j as f32 / (nv - 1) as f32 - 0.5) * spec.size.y * s;
+            let z = 0.5 * ax * (1.0 - (kx * x).cos()) + 0.5 * ay * (1.0 - (ky * y).cos());
+            out.push(Vec3::new(spec.position.x + x, spec.position.y + y, spec.position.z + z));
+        }
+    }
+    out
+}
