@@ -132,3 +132,25 @@ fn a_study_killed_with_sigkill_resumes_to_the_same_trials() {
         assert!(run.join(f).is_file(), "{f} missing");
     }
 }
+
+#[test]
+fn study_frames_writes_every_frame_of_every_trial() {
+    let dir = tmp("frames");
+    let out = dir.join("run");
+    let o = bin()
+        .args(["study", "--participants", "1", "--reps", "1", "--no-practice", "--tasks", "steering", "--techniques", "joint", "--no-progress", "--frames", "--out"])
+        .arg(&out)
+        .output()
+        .expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let trials = std::fs::read_to_string(out.join("trials.csv")).expect("trials");
+    for (k, row) in trials.lines().skip(1).enumerate() {
+        let steps: usize = row.split(',').nth(11).expect("steps column").parse().expect("steps");
+        let frames = std::fs::read_to_string(out.join(format!("frames/p1_t{k}.csv"))).expect("frames file");
+        let mut lines = frames.lines();
+        assert_eq!(lines.next(), Some("step,time_s,contacts,technique_bodies,object,x,y,z,active"));
+        // Two objects (platform, cylinder) per frame.
+        assert_eq!(lines.count(), steps * 2, "trial {k}");
+    }
+    assert!(std::fs::read_to_string(out.join("run.toml")).expect("run.toml").contains("frames = true"));
+}

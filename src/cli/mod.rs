@@ -162,6 +162,10 @@ pub struct StudyArgs {
     /// No progress bar.
     #[arg(long)]
     pub no_progress: bool,
+    /// Also write every frame of every scripted trial (contacts, technique
+    /// bodies, object poses) to `frames/p<participant>_t<order>.csv`.
+    #[arg(long)]
+    pub frames: bool,
 }
 
 #[derive(Debug, Subcommand)]
@@ -294,6 +298,7 @@ fn headless_main() -> anyhow::Result<ExitCode> {
         jobs: 0,
         replay: None,
         no_progress: false,
+        frames: false,
     };
     study::run(&args)
 }

@@ -24,12 +24,12 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
     };
     let outcome = if let Some(dir) = &args.resume {
         let design = RunFile::load(&dir.join("run.toml")).with_context(|| format!("--resume {}", dir.display()))?.design;
-        let runner = runner_for(args, design)?;
+        let runner = runner_for(args, design, dir)?;
         study::resume_study(dir, runner.as_ref(), &options)?
     } else {
         let design = design_from(args)?;
         design.validate()?;
-        let runner = runner_for(args, design.clone())?;
+        let runner = runner_for(args, design.clone(), &args.out)?;
         study::run_study(&design, &args.out, runner.as_ref(), &options)?
     };
     println!(
@@ -45,14 +45,16 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-fn runner_for(args: &StudyArgs, design: StudyDesign) -> anyhow::Result<Box<dyn TrialRunner>> {
+fn runner_for(args: &StudyArgs, design: StudyDesign, out: &std::path::Path) -> anyhow::Result<Box<dyn TrialRunner>> {
+    let frames = design.settings.get("frames").and_then(toml::Value::as_bool).unwrap_or(false);
+    let frames_dir = frames.then(|| out.join("frames"));
     let replay = args.replay.clone().or_else(|| design.settings.get("replay").and_then(|v| v.as_str()).map(Into::into));
     Ok(match replay {
         Some(dir) => {
             anyhow::ensure!(dir.is_dir(), "--replay {}: not a folder of gesture files", dir.display());
             Box::new(ReplayRunner { dir, design })
         }
-        None => Box::new(ScriptedRunner { design }),
+        None => Box::new(ScriptedRunner { design, frames_dir }),
     })
 }
 
@@ -90,6 +92,9 @@ fn design_from(args: &StudyArgs) -> anyhow::Result<StudyDesign> {
     }
     if let Some(dir) = &args.replay {
         d.settings.insert("replay".into(), toml::Value::String(dir.display().to_string()));
+    }
+    if args.frames {
+        d.settings.insert("frames".into(), toml::Value::Boolean(true));
     }
     Ok(d)
 }

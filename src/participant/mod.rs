@@ -9,4 +9,4 @@ mod trial;
 pub use planner::{Intent, Planner};
 pub use runner::{ReplayRunner, ScriptedRunner, participant_skill, technique_kind};
 pub use skill::{HandMode, Skill};
-pub use trial::{TrialOutcome, run_scripted};
+pub use trial::{FrameLog, TrialOutcome, run_scripted, run_scripted_logged};

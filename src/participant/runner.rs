@@ -29,6 +29,8 @@ pub fn participant_skill(design: &StudyDesign, participant: u32) -> Skill {
 #[derive(Debug, Clone)]
 pub struct ScriptedRunner {
     pub design: StudyDesign,
+    /// Write every trial's frames here (`--frames`), one CSV per trial.
+    pub frames_dir: Option<PathBuf>,
 }
 
 impl TrialRunner for ScriptedRunner {
@@ -36,7 +38,18 @@ impl TrialRunner for ScriptedRunner {
         let scene = scene::load(&spec.task)?;
         let limit = self.design.time_limit_override.unwrap_or(f64::from(scene.time_limit_s));
         let skill = participant_skill(&self.design, spec.participant);
-        let o = super::run_scripted(&scene, technique_kind(spec.technique), spec.feedback, skill, spec.seed, limit)?;
+        let mut log = match &self.frames_dir {
+            Some(dir) => {
+                std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
+                let path = dir.join(format!("p{}_t{}.csv", spec.participant, spec.order_index));
+                Some(super::FrameLog::create(&path).with_context(|| format!("writing {}", path.display()))?)
+            }
+            None => None,
+        };
+        let o = super::run_scripted_logged(&scene, technique_kind(spec.technique), spec.feedback, skill, spec.seed, limit, log.as_mut())?;
+        if let Some(log) = log {
+            log.finish().context("writing the trial's frames")?;
+        }
         Ok(TrialResult {
             completion_time_s: o.completion_time_s,
             completed: o.completed,
