@@ -20,8 +20,8 @@ use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query;
 use parry2d_f64::shape::ConvexPolygon as ParryPolygon;
 use surfacelab::contact::{
-    CachedBlock, CircleFit, ConvexPolygon, EntranceBlock, Relation, Vec2, brute_force_report,
-    contact_report, discretize_circle, log_log_slope,
+    CachedBlock, CircleFit, ConvexPolygon, EntranceBlock, Relation, Vec2, brute_force_report, contact_report,
+    discretize_circle, log_log_slope,
 };
 
 const SIZES: [usize; 10] = [8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
@@ -41,8 +41,7 @@ fn record(method: &'static str, n: usize, ns: f64) {
 /// Two overlapping n-gons whose edges are never parallel.
 fn pair(n: usize) -> (ConvexPolygon, ConvexPolygon) {
     let a = discretize_circle(Vec2::ZERO, 1.0, n, CircleFit::Inscribed, 0.1).expect("n-gon");
-    let b =
-        discretize_circle(Vec2::new(0.6, 0.3), 1.0, n, CircleFit::Inscribed, 0.37).expect("n-gon");
+    let b = discretize_circle(Vec2::new(0.6, 0.3), 1.0, n, CircleFit::Inscribed, 0.37).expect("n-gon");
     (a, b)
 }
 
@@ -78,11 +77,7 @@ fn bench(
 fn benches(c: &mut Criterion) {
     bench(c, "build", &SIZES, |n| {
         let (a, b) = pair(n);
-        Box::new(move || {
-            EntranceBlock::new(black_box(&a), black_box(&b))
-                .edges()
-                .len() as f64
-        })
+        Box::new(move || EntranceBlock::new(black_box(&a), black_box(&b)).edges().len() as f64)
     });
     bench(c, "query", &SIZES, |n| {
         let (a, b) = pair(n);
@@ -91,11 +86,7 @@ fn benches(c: &mut Criterion) {
     });
     bench(c, "build+query", &SIZES, |n| {
         let (a, b) = pair(n);
-        Box::new(move || {
-            EntranceBlock::new(black_box(&a), black_box(&b))
-                .report()
-                .distance
-        })
+        Box::new(move || EntranceBlock::new(black_box(&a), black_box(&b)).report().distance)
     });
     bench(c, "one_shot", &SIZES, |n| {
         let (a, b) = pair(n);
@@ -114,9 +105,7 @@ fn benches(c: &mut Criterion) {
             // Overlapping translations around the start: O(log n) each.
             k = k.wrapping_add(1);
             let t = Vec2::new(0.1 * f64::from(k % 7), 0.1 * f64::from(k % 5));
-            f64::from(u8::from(
-                cached.relation(black_box(t)) == Relation::Intersecting,
-            ))
+            f64::from(u8::from(cached.relation(black_box(t)) == Relation::Intersecting))
         })
     });
     bench(c, "cached_distance_separated", &SIZES, |n| {
@@ -126,10 +115,7 @@ fn benches(c: &mut Criterion) {
         Box::new(move || {
             k = k.wrapping_add(1);
             let angle = f64::from(k % 64) * 0.098;
-            cached.signed_distance(black_box(Vec2::new(
-                0.6 + 4.0 * angle.cos(),
-                0.3 + 4.0 * angle.sin(),
-            )))
+            cached.signed_distance(black_box(Vec2::new(0.6 + 4.0 * angle.cos(), 0.3 + 4.0 * angle.sin())))
         })
     });
     bench(c, "parry_contact", &SIZES, |n| {
@@ -157,8 +143,7 @@ fn summary() {
     if samples.is_empty() {
         return;
     }
-    let medians: BTreeMap<(&str, usize), f64> =
-        samples.iter().map(|(&k, v)| (k, median(v))).collect();
+    let medians: BTreeMap<(&str, usize), f64> = samples.iter().map(|(&k, v)| (k, median(v))).collect();
     let methods = [
         "build",
         "query",
@@ -176,10 +161,8 @@ fn summary() {
     }
     println!("{:>12}{:>12}", "slope all", "slope n≥64");
     for method in methods {
-        let row: Vec<(f64, f64)> = SIZES
-            .iter()
-            .filter_map(|&n| medians.get(&(method, n)).map(|&t| (n as f64, t)))
-            .collect();
+        let row: Vec<(f64, f64)> =
+            SIZES.iter().filter_map(|&n| medians.get(&(method, n)).map(|&t| (n as f64, t))).collect();
         if row.is_empty() {
             continue;
         }
@@ -192,24 +175,17 @@ fn summary() {
         }
         let large: Vec<(f64, f64)> = row.iter().copied().filter(|&(n, _)| n >= 64.0).collect();
         let fmt = |s: Option<f64>| s.map_or_else(|| "-".to_owned(), |s| format!("{s:.2}"));
-        println!(
-            "{:>12}{:>12}",
-            fmt(log_log_slope(&row)),
-            fmt(log_log_slope(&large))
-        );
+        println!("{:>12}{:>12}", fmt(log_log_slope(&row)), fmt(log_log_slope(&large)));
     }
-    let ratio = |slow: &str, fast: &str, n: usize| {
-        Some(medians.get(&(slow, n))? / medians.get(&(fast, n))?)
-    };
+    let ratio = |slow: &str, fast: &str, n: usize| Some(medians.get(&(slow, n))? / medians.get(&(fast, n))?);
     if let Some(r) = ratio("brute_force", "build+query", 256) {
         println!("brute force / entrance block (build+query) at n = 256: {r:.1}x (goal >= 10x)");
     }
     for n in [8, 16, 64, 256, 1024, 4096] {
         let goal = if n == 64 { " (goal >= 2x)" } else { "" };
-        if let (Some(one), Some(both)) = (
-            ratio("parry_contact", "one_shot", n),
-            ratio("parry_contact", "build+query", n),
-        ) {
+        if let (Some(one), Some(both)) =
+            (ratio("parry_contact", "one_shot", n), ratio("parry_contact", "build+query", n))
+        {
             println!(
                 "parry2d contact / ours at n = {n}: one-shot {one:.2}x{goal}, stored block build+query {both:.2}x"
             );

@@ -70,7 +70,8 @@ fn bench_under_hand(c: &mut Criterion, group: &str, runs: Vec<(&str, Scene)>) {
             b.iter(|| {
                 k += 1;
                 let t = k as f32 / 60.0;
-                let hand = Hand::new(1, HandKind::FlatHand, at.x + 0.03 * (t * 0.7).cos(), at.y + 0.03 * (t * 0.7).sin());
+                let hand =
+                    Hand::new(1, HandKind::FlatHand, at.x + 0.03 * (t * 0.7).cos(), at.y + 0.03 * (t * 0.7).sin());
                 session.step(&[hand]).expect("step");
             });
         });
@@ -101,7 +102,11 @@ fn effects(c: &mut Criterion) {
     bench_pair(
         c,
         "effect/tearing",
-        vec![("declared", tear.clone(), tear.effects), ("off_same_sheet", plain, no_tearing), ("no_sheet", tear, no_sheet)],
+        vec![
+            ("declared", tear.clone(), tear.effects),
+            ("off_same_sheet", plain, no_tearing),
+            ("no_sheet", tear, no_sheet),
+        ],
     );
     // The rigid effects on the scenes that declare them.
     for (task, effect) in [("ball", Effect::Ccd), ("gather", Effect::Sleeping)] {

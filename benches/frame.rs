@@ -25,7 +25,12 @@ fn hands(k: usize) -> Vec<Hand> {
 fn run(pooled: bool) -> (StageTimes, usize) {
     let scene = scene::load("sorting").expect("scene");
     let config = TechniqueConfig { particle_pooled: pooled, particle_stride: 2, ..TechniqueConfig::default() };
-    let mut s = Session::new(&scene, TechniqueKind::Particle, SessionOptions { config: Some(config), ..SessionOptions::default() }).expect("session");
+    let mut s = Session::new(
+        &scene,
+        TechniqueKind::Particle,
+        SessionOptions { config: Some(config), ..SessionOptions::default() },
+    )
+    .expect("session");
     for k in 0..WARMUP {
         s.step(&hands(k)).expect("step");
     }
@@ -42,7 +47,12 @@ fn run(pooled: bool) -> (StageTimes, usize) {
     }
     let n = FRAMES as f64;
     (
-        StageTimes { rasterize_us: sum.rasterize_us / n, vision_us: sum.vision_us / n, technique_us: sum.technique_us / n, step_us: sum.step_us / n },
+        StageTimes {
+            rasterize_us: sum.rasterize_us / n,
+            vision_us: sum.vision_us / n,
+            technique_us: sum.technique_us / n,
+            step_us: sum.step_us / n,
+        },
         particles / FRAMES,
     )
 }
@@ -58,8 +68,18 @@ fn main() {
     for pooled in [false, true] {
         let (t, n) = run(pooled);
         let name = if pooled { "pooled" } else { "create/destroy (paper)" };
-        println!("| {name} | {n} | {:.0} | {:.0} | {:.0} | {:.0} | {:.2} |", t.rasterize_us, t.vision_us, t.technique_us, t.step_us, t.total_us() / 1000.0);
+        println!(
+            "| {name} | {n} | {:.0} | {:.0} | {:.0} | {:.0} | {:.2} |",
+            t.rasterize_us,
+            t.vision_us,
+            t.technique_us,
+            t.step_us,
+            t.total_us() / 1000.0
+        );
         totals.push(t.total_us());
     }
-    println!("\npooled is {:.2}x faster than create/destroy per frame (goal: <= 2 ms and >= 5x)", totals[0] / totals[1]);
+    println!(
+        "\npooled is {:.2}x faster than create/destroy per frame (goal: <= 2 ms and >= 5x)",
+        totals[0] / totals[1]
+    );
 }

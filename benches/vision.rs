@@ -8,12 +8,10 @@
 use std::hint::black_box;
 
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
-use surfacelab::surface::{
-    ContactImage, Hand, HandKind, RasterParams, Sensor, rasterize, rasterize_into,
-};
+use surfacelab::surface::{ContactImage, Hand, HandKind, RasterParams, Sensor, rasterize, rasterize_into};
 use surfacelab::vision::{
-    BlockMatcher, Mask, Pipeline, Tracker, TrackerParams, VisionParams, find_blobs, find_edges,
-    gradient_magnitude, rigid_guess, threshold_into,
+    BlockMatcher, Mask, Pipeline, Tracker, TrackerParams, VisionParams, find_blobs, find_edges, gradient_magnitude,
+    rigid_guess, threshold_into,
 };
 
 /// A scene at frame `k` of a 60 Hz motion: each hand moves ~1 cm/frame and
@@ -62,23 +60,12 @@ fn bench_scene(c: &mut Criterion, name: &str) {
     let mut primed = Tracker::new(TrackerParams::default());
     primed.update(&prev_blobs);
     group.bench_function("tracking", |b| {
-        b.iter_batched(
-            || primed.clone(),
-            |mut t| t.update(black_box(&blobs)),
-            BatchSize::SmallInput,
-        );
+        b.iter_batched(|| primed.clone(), |mut t| t.update(black_box(&blobs)), BatchSize::SmallInput);
     });
     let tracked = primed.clone().update(&blobs);
 
     group.bench_function("sobel", |b| {
-        b.iter(|| {
-            find_edges(
-                black_box(&cur),
-                &blobs,
-                params.edge_threshold,
-                params.stride,
-            )
-        });
+        b.iter(|| find_edges(black_box(&cur), &blobs, params.edge_threshold, params.stride));
     });
     group.bench_function("sobel_whole_frame", |b| {
         b.iter(|| gradient_magnitude(black_box(&cur)));
@@ -92,12 +79,8 @@ fn bench_scene(c: &mut Criterion, name: &str) {
                 .iter()
                 .map(|e| {
                     let t = &tracked[e.blob];
-                    let guess = rigid_guess(
-                        [e.x as f32, e.y as f32],
-                        blobs[e.blob].weighted_centroid,
-                        t.velocity,
-                        t.rotation,
-                    );
+                    let guess =
+                        rigid_guess([e.x as f32, e.y as f32], blobs[e.blob].weighted_centroid, t.velocity, t.rotation);
                     matcher.flow_at(&prev, black_box(&cur), [e.x, e.y], guess)
                 })
                 .collect::<Vec<_>>()
@@ -107,11 +90,7 @@ fn bench_scene(c: &mut Criterion, name: &str) {
     let mut pipeline = Pipeline::new(params);
     pipeline.process(&prev);
     group.bench_function("pipeline", |b| {
-        b.iter_batched(
-            || pipeline.clone(),
-            |mut p| p.process(black_box(&cur)),
-            BatchSize::SmallInput,
-        );
+        b.iter_batched(|| pipeline.clone(), |mut p| p.process(black_box(&cur)), BatchSize::SmallInput);
     });
     group.finish();
 
@@ -119,14 +98,7 @@ fn bench_scene(c: &mut Criterion, name: &str) {
     let mut runs: Vec<[f64; 6]> = (0..200)
         .map(|_| {
             let t = pipeline.clone().process(&cur).timings;
-            [
-                t.threshold_us,
-                t.components_us,
-                t.tracking_us,
-                t.sobel_us,
-                t.flow_us,
-                t.total_us,
-            ]
+            [t.threshold_us, t.components_us, t.tracking_us, t.sobel_us, t.flow_us, t.total_us]
         })
         .collect();
     let mut median = [0.0; 6];

@@ -31,7 +31,7 @@ pub mod scene;
 pub mod session;
 pub mod study;
 pub mod surface;
-pub mod vision;
 pub mod technique;
 pub mod tradeoff;
+pub mod vision;
 pub mod world;

@@ -26,13 +26,24 @@ fn run_writes_the_documented_report() {
     let dir = tmp("run");
     let report = dir.join("r.json");
     let o = bin()
-        .args(["run", "--task", "tasks/cases/one_box.toml", "--technique", "proxy", "--gesture", "assets/gestures/fingertip_drag.toml", "--report"])
+        .args([
+            "run",
+            "--task",
+            "tasks/cases/one_box.toml",
+            "--technique",
+            "proxy",
+            "--gesture",
+            "assets/gestures/fingertip_drag.toml",
+            "--report",
+        ])
         .arg(&report)
         .output()
         .expect("runs");
     assert!(o.status.success(), "{}", text(&o));
     let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&report).expect("report")).expect("json");
-    for key in ["steps", "wall_time_s", "objects", "max_speed", "max_penetration", "nan_count", "completion", "stage_means_us"] {
+    for key in
+        ["steps", "wall_time_s", "objects", "max_speed", "max_penetration", "nan_count", "completion", "stage_means_us"]
+    {
         assert!(r.get(key).is_some(), "report lacks {key}: {r}");
     }
     assert_eq!(r["nan_count"], 0);
@@ -45,21 +56,42 @@ fn bad_inputs_exit_2_and_name_the_file_and_field() {
     let dir = tmp("bad");
     let scene = dir.join("broken.toml");
     std::fs::write(&scene, "name = \"x\"\neffects = [\"gravity\"]\n[table]\nsize = [1.0, 0.75]\n[[objects]]\nname = \"a\"\nshape = \"box\"\nsize = [0.1, 0.1, 0.1]\nmass = -1.0\ncolor = \"red\"\nposition = [0.0, 0.0]\n").expect("write");
-    let o = bin().args(["run", "--technique", "joint", "--gesture", "assets/gestures/flick.toml", "--task"]).arg(&scene).output().expect("runs");
+    let o = bin()
+        .args(["run", "--technique", "joint", "--gesture", "assets/gestures/flick.toml", "--task"])
+        .arg(&scene)
+        .output()
+        .expect("runs");
     assert_eq!(o.status.code(), Some(2), "{}", text(&o));
     assert!(text(&o).contains("broken.toml") && text(&o).contains("objects[0].mass"), "{}", text(&o));
 
     let gesture = dir.join("g.toml");
     std::fs::write(&gesture, "format = \"surfacelab-gesture\"\nversion = 1\n[[hands]]\nid = 1\nkind = \"tentacle\"\n[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\n").expect("write");
-    let o = bin().args(["run", "--task", "positioning", "--technique", "joint", "--gesture"]).arg(&gesture).output().expect("runs");
+    let o = bin()
+        .args(["run", "--task", "positioning", "--technique", "joint", "--gesture"])
+        .arg(&gesture)
+        .output()
+        .expect("runs");
     assert_eq!(o.status.code(), Some(2), "{}", text(&o));
     assert!(text(&o).contains("g.toml") && text(&o).contains("tentacle"), "{}", text(&o));
 
-    let o = bin().args(["run", "--task", "positioning", "--technique", "telekinesis", "--gesture", "x"]).output().expect("runs");
+    let o = bin()
+        .args(["run", "--task", "positioning", "--technique", "telekinesis", "--gesture", "x"])
+        .output()
+        .expect("runs");
     assert_eq!(o.status.code(), Some(2), "{}", text(&o));
 
-    let mut child = bin().args(["contact", "-"]).stdin(Stdio::piped()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().expect("spawn");
-    std::io::Write::write_all(child.stdin.as_mut().expect("stdin"), br#"{"a": [[0,0],[1,0],[1,1],[0.9,0.2]], "b": [[3,0],[4,0],[3,1]]}"#).expect("write");
+    let mut child = bin()
+        .args(["contact", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawn");
+    std::io::Write::write_all(
+        child.stdin.as_mut().expect("stdin"),
+        br#"{"a": [[0,0],[1,0],[1,1],[0.9,0.2]], "b": [[3,0],[4,0],[3,1]]}"#,
+    )
+    .expect("write");
     let o = child.wait_with_output().expect("wait");
     assert_eq!(o.status.code(), Some(2), "{}", text(&o));
     assert!(text(&o).contains("polygon `a`"), "{}", text(&o));
@@ -97,7 +129,23 @@ fn screenshot_writes_a_png_headless() {
 
 fn study_args(out: &Path) -> Command {
     let mut c = bin();
-    c.args(["study", "--participants", "2", "--reps", "1", "--no-practice", "--tasks", "steering", "--no-progress", "--jobs", "1", "--seed", "7", "--out"]).arg(out);
+    c.args([
+        "study",
+        "--participants",
+        "2",
+        "--reps",
+        "1",
+        "--no-practice",
+        "--tasks",
+        "steering",
+        "--no-progress",
+        "--jobs",
+        "1",
+        "--seed",
+        "7",
+        "--out",
+    ])
+    .arg(out);
     c
 }
 
@@ -127,7 +175,11 @@ fn a_study_killed_with_sigkill_resumes_to_the_same_trials() {
     assert!(partial.lines().count() < expected.lines().count(), "the kill came too late to test anything");
     let o = bin().args(["study", "--no-progress", "--resume"]).arg(&run).output().expect("runs");
     assert!(o.status.success(), "{}", text(&o));
-    assert_eq!(std::fs::read_to_string(run.join("trials.csv")).expect("trials"), expected, "resumed run differs from the uninterrupted one");
+    assert_eq!(
+        std::fs::read_to_string(run.join("trials.csv")).expect("trials"),
+        expected,
+        "resumed run differs from the uninterrupted one"
+    );
     for f in ["summary.csv", "figure.png", "figure.svg", "run.toml"] {
         assert!(run.join(f).is_file(), "{f} missing");
     }
@@ -138,7 +190,21 @@ fn study_frames_writes_every_frame_of_every_trial() {
     let dir = tmp("frames");
     let out = dir.join("run");
     let o = bin()
-        .args(["study", "--participants", "1", "--reps", "1", "--no-practice", "--tasks", "steering", "--techniques", "joint", "--no-progress", "--frames", "--out"])
+        .args([
+            "study",
+            "--participants",
+            "1",
+            "--reps",
+            "1",
+            "--no-practice",
+            "--tasks",
+            "steering",
+            "--techniques",
+            "joint",
+            "--no-progress",
+            "--frames",
+            "--out",
+        ])
         .arg(&out)
         .output()
         .expect("runs");

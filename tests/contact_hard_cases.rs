@@ -5,8 +5,8 @@
 use std::f64::consts::{PI, SQRT_2};
 
 use surfacelab::contact::{
-    CircleFit, ContactReport, ConvexPolygon, CoverKind, EntranceBlock, Feature, PolygonError,
-    Relation, SimplePolygon, UnionBlock, Vec2, brute_force_report_at, discretize_circle,
+    CircleFit, ContactReport, ConvexPolygon, CoverKind, EntranceBlock, Feature, PolygonError, Relation, SimplePolygon,
+    UnionBlock, Vec2, brute_force_report_at, discretize_circle,
 };
 
 fn poly(points: &[[f64; 2]]) -> ConvexPolygon {
@@ -22,18 +22,9 @@ fn rect(x0: f64, y0: f64, x1: f64, y1: f64) -> ConvexPolygon {
 fn answer_at(a: &ConvexPolygon, b: &ConvexPolygon, t: Vec2, scale: f64) -> ContactReport {
     let walk = EntranceBlock::new(a, b).report_at(t);
     let brute = brute_force_report_at(a, b, t);
-    assert_eq!(
-        walk.relation, brute.relation,
-        "walk {walk:?}\nbrute {brute:?}"
-    );
-    assert!(
-        (walk.distance - brute.distance).abs() <= 1e-12 * scale,
-        "walk {walk:?}\nbrute {brute:?}"
-    );
-    assert!(
-        (walk.exit.length() - walk.distance.abs()).abs() <= 1e-12 * scale,
-        "{walk:?}"
-    );
+    assert_eq!(walk.relation, brute.relation, "walk {walk:?}\nbrute {brute:?}");
+    assert!((walk.distance - brute.distance).abs() <= 1e-12 * scale, "walk {walk:?}\nbrute {brute:?}");
+    assert!((walk.exit.length() - walk.distance.abs()).abs() <= 1e-12 * scale, "{walk:?}");
     walk
 }
 
@@ -64,20 +55,11 @@ fn exactly_touching_edge_on_edge() {
     assert_eq!(
         sorted(&r.features),
         sorted(&[
-            Feature::EdgeAngle {
-                a_edge: [1, 2],
-                b_vertex: 0
-            },
-            Feature::EdgeAngle {
-                a_edge: [1, 2],
-                b_vertex: 3
-            },
+            Feature::EdgeAngle { a_edge: [1, 2], b_vertex: 0 },
+            Feature::EdgeAngle { a_edge: [1, 2], b_vertex: 3 },
         ])
     );
-    assert!(
-        close(r.witness[0], 1.0, 0.5, 1e-15) && close(r.witness[1], 1.0, 0.5, 1e-15),
-        "{r:?}"
-    );
+    assert!(close(r.witness[0], 1.0, 0.5, 1e-15) && close(r.witness[1], 1.0, 0.5, 1e-15), "{r:?}");
 }
 
 #[test]
@@ -87,25 +69,13 @@ fn exactly_touching_vertex_on_edge() {
     let r = answer(&a, &b);
     assert_eq!(r.relation, Relation::Touching);
     assert_eq!(r.distance, 0.0);
-    assert_eq!(
-        r.features.as_slice(),
-        &[Feature::AngleEdge {
-            a_vertex: 2,
-            b_edge: [0, 1]
-        }]
-    );
+    assert_eq!(r.features.as_slice(), &[Feature::AngleEdge { a_vertex: 2, b_edge: [0, 1] }]);
     assert_eq!(r.witness, [Vec2::ZERO, Vec2::ZERO]);
     // A hair below: separated by exactly that hair, same feature.
     let r = answer_at(&a, &b, Vec2::new(0.0, -1e-3), 1.0);
     assert_eq!(r.relation, Relation::Separated);
     assert!((r.distance - 1e-3).abs() < 1e-15);
-    assert_eq!(
-        r.features.as_slice(),
-        &[Feature::AngleEdge {
-            a_vertex: 2,
-            b_edge: [0, 1]
-        }]
-    );
+    assert_eq!(r.features.as_slice(), &[Feature::AngleEdge { a_vertex: 2, b_edge: [0, 1] }]);
 }
 
 #[test]
@@ -114,14 +84,8 @@ fn overlapping_parallel_edges_report_both_ends_of_the_overlap() {
     let b = rect(1.0, 0.5, 2.0, 1.5);
     let ends = sorted(&[
         // B's corner (1, 0.5) on A's right edge, A's corner (1, 1) on B's left edge.
-        Feature::EdgeAngle {
-            a_edge: [1, 2],
-            b_vertex: 0,
-        },
-        Feature::AngleEdge {
-            a_vertex: 2,
-            b_edge: [3, 0],
-        },
+        Feature::EdgeAngle { a_edge: [1, 2], b_vertex: 0 },
+        Feature::AngleEdge { a_vertex: 2, b_edge: [3, 0] },
     ]);
     let r = answer(&a, &b);
     assert_eq!(r.relation, Relation::Touching);
@@ -141,26 +105,14 @@ fn overlapping_parallel_edges_report_both_ends_of_the_overlap() {
 fn vertex_on_vertex() {
     let r = answer(&rect(0.0, 0.0, 1.0, 1.0), &rect(1.0, 1.0, 2.0, 2.0));
     assert_eq!(r.relation, Relation::Touching);
-    assert_eq!(
-        r.features.as_slice(),
-        &[Feature::AngleAngle {
-            a_vertex: 2,
-            b_vertex: 0
-        }]
-    );
+    assert_eq!(r.features.as_slice(), &[Feature::AngleAngle { a_vertex: 2, b_vertex: 0 }]);
 
     let diamond = [[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]];
     let a = poly(&diamond);
     let b = poly(&diamond.map(|[x, y]| [x + 2.0, y]));
     let r = answer(&a, &b);
     assert_eq!(r.relation, Relation::Touching);
-    assert_eq!(
-        r.features.as_slice(),
-        &[Feature::AngleAngle {
-            a_vertex: 0,
-            b_vertex: 2
-        }]
-    );
+    assert_eq!(r.features.as_slice(), &[Feature::AngleAngle { a_vertex: 0, b_vertex: 2 }]);
     assert_eq!(r.witness, [Vec2::new(1.0, 0.0), Vec2::new(1.0, 0.0)]);
 }
 
@@ -180,8 +132,7 @@ fn deep_penetration() {
 fn identical_polygons() {
     // A regular hexagon of circumradius 1 is √3 wide between opposite edges:
     // that is the shortest way out of itself.
-    let hexagon = discretize_circle(Vec2::new(0.3, -0.2), 1.0, 6, CircleFit::Inscribed, 0.0)
-        .expect("hexagon");
+    let hexagon = discretize_circle(Vec2::new(0.3, -0.2), 1.0, 6, CircleFit::Inscribed, 0.0).expect("hexagon");
     let r = answer(&hexagon, &hexagon);
     assert_eq!(r.relation, Relation::Intersecting);
     assert!((r.distance + 3f64.sqrt()).abs() < 1e-12, "{r:?}");
@@ -233,20 +184,10 @@ fn polygons_a_micron_across() {
     let r = answer_at(&a, &rect(s, 0.5 * s, 2.0 * s, 1.5 * s), Vec2::ZERO, s);
     assert_eq!(r.relation, Relation::Touching);
     // A gap of a thousandth of the size is a gap, not a touch.
-    let r = answer_at(
-        &a,
-        &rect(1.001 * s, 0.5 * s, 2.0 * s, 1.5 * s),
-        Vec2::ZERO,
-        s,
-    );
+    let r = answer_at(&a, &rect(1.001 * s, 0.5 * s, 2.0 * s, 1.5 * s), Vec2::ZERO, s);
     assert_eq!(r.relation, Relation::Separated, "{r:?}");
     assert!((r.distance - 1e-3 * s).abs() < 1e-12 * s, "{r:?}");
-    let r = answer_at(
-        &a,
-        &rect(0.999 * s, 0.5 * s, 2.0 * s, 1.5 * s),
-        Vec2::ZERO,
-        s,
-    );
+    let r = answer_at(&a, &rect(0.999 * s, 0.5 * s, 2.0 * s, 1.5 * s), Vec2::ZERO, s);
     assert_eq!(r.relation, Relation::Intersecting, "{r:?}");
 }
 
@@ -254,100 +195,57 @@ fn polygons_a_micron_across() {
 fn polygons_a_micron_across_at_a_million() {
     let (o, s) = (1e6, 1e-6);
     let a = rect(o, o, o + s, o + s);
-    let r = answer_at(
-        &a,
-        &rect(o + s, o + 0.5 * s, o + 2.0 * s, o + 1.5 * s),
-        Vec2::ZERO,
-        s,
-    );
+    let r = answer_at(&a, &rect(o + s, o + 0.5 * s, o + 2.0 * s, o + 1.5 * s), Vec2::ZERO, s);
     assert_eq!(r.relation, Relation::Touching, "{r:?}");
     // 1e-7 is ~860 units in the last place at 1e6: clearly apart.
-    let r = answer_at(
-        &a,
-        &rect(o + 1.1 * s, o + 0.5 * s, o + 2.0 * s, o + 1.5 * s),
-        Vec2::ZERO,
-        s,
-    );
+    let r = answer_at(&a, &rect(o + 1.1 * s, o + 0.5 * s, o + 2.0 * s, o + 1.5 * s), Vec2::ZERO, s);
     assert_eq!(r.relation, Relation::Separated, "{r:?}");
     assert!((r.distance - 0.1 * s).abs() < 1e-9, "{r:?}");
 }
 
 #[test]
 fn triangle_against_a_4096_gon() {
-    let circle =
-        discretize_circle(Vec2::ZERO, 1.0, 4096, CircleFit::Inscribed, 0.0).expect("4096-gon");
+    let circle = discretize_circle(Vec2::ZERO, 1.0, 4096, CircleFit::Inscribed, 0.0).expect("4096-gon");
     assert_eq!(circle.len(), 4096);
     let triangle = poly(&[[1.5, 0.0], [2.5, -0.5], [2.5, 0.5]]);
     // The apex faces the circle's vertex 0 at (1, 0).
     let r = answer(&triangle, &circle);
     assert_eq!(r.relation, Relation::Separated);
     assert!((r.distance - 0.5).abs() < 1e-12, "{r:?}");
-    assert_eq!(
-        r.features.as_slice(),
-        &[Feature::AngleAngle {
-            a_vertex: 0,
-            b_vertex: 0
-        }]
-    );
+    assert_eq!(r.features.as_slice(), &[Feature::AngleAngle { a_vertex: 0, b_vertex: 0 }]);
     // Pushed 0.6 left, the apex is 0.1 inside, between the two edges that
     // meet at vertex 0: out along either edge's normal, by 0.1 cos(π/4096).
     let r = answer_at(&triangle, &circle, Vec2::new(-0.6, 0.0), 1.0);
     assert_eq!(r.relation, Relation::Intersecting);
-    assert!(
-        (r.distance + 0.1 * (PI / 4096.0).cos()).abs() < 1e-12,
-        "{r:?}"
-    );
+    assert!((r.distance + 0.1 * (PI / 4096.0).cos()).abs() < 1e-12, "{r:?}");
     // The same with the roles swapped (the 4096-gon moves).
     let r = answer(&circle, &triangle);
     assert!((r.distance - 0.5).abs() < 1e-12, "{r:?}");
-    assert_eq!(
-        EntranceBlock::new(&circle, &triangle).edges().len(),
-        4096 + 3
-    );
+    assert_eq!(EntranceBlock::new(&circle, &triangle).edges().len(), 4096 + 3);
 }
 
 #[test]
 fn nearly_collinear_vertices() {
     // Points within rounding of the square's edges, bulging out or in,
     // are straight angles: the square comes out.
-    let noisy = poly(&[
-        [0.0, 0.0],
-        [0.5, -1e-14],
-        [1.0, 0.0],
-        [1.0 + 1e-14, 0.5],
-        [1.0, 1.0],
-        [0.5, 1.0 - 1e-13],
-        [0.0, 1.0],
-    ]);
+    let noisy =
+        poly(&[[0.0, 0.0], [0.5, -1e-14], [1.0, 0.0], [1.0 + 1e-14, 0.5], [1.0, 1.0], [0.5, 1.0 - 1e-13], [0.0, 1.0]]);
     assert_eq!(noisy.source_indices(), &[0, 2, 4, 6]);
     let b = rect(1.5, 0.2, 2.5, 0.4);
     assert!((answer(&noisy, &b).distance - 0.5).abs() < 1e-15);
 
     // A bulge of 1e-10 is real geometry and is kept: B 5e-9 below the edge
     // is 4.9e-9 from the bulge.
-    let bulge = poly(&[
-        [0.0, 0.0],
-        [0.5, -1e-10],
-        [1.0, 0.0],
-        [1.0, 1.0],
-        [0.0, 1.0],
-    ]);
+    let bulge = poly(&[[0.0, 0.0], [0.5, -1e-10], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
     assert_eq!(bulge.len(), 5);
     let r = answer(&bulge, &rect(0.0, -2.0, 1.0, -5e-9));
     assert_eq!(r.relation, Relation::Separated);
     assert!((r.distance - 4.9e-9).abs() < 1e-17, "{r:?}");
-    assert_eq!(
-        r.features.as_slice(),
-        &[Feature::AngleEdge {
-            a_vertex: 1,
-            b_edge: [2, 3]
-        }]
-    );
+    assert_eq!(r.features.as_slice(), &[Feature::AngleEdge { a_vertex: 1, b_edge: [2, 3] }]);
 
     // A dent of 1e-6 is a reflex angle.
-    let err =
-        ConvexPolygon::from_xy(&[[0.0, 0.0], [0.5, 1e-6], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
-            .expect_err("must be rejected");
+    let err = ConvexPolygon::from_xy(&[[0.0, 0.0], [0.5, 1e-6], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+        .expect_err("must be rejected");
     assert_eq!(err, PolygonError::Reflex { vertex: 1 });
 }
 
@@ -359,32 +257,16 @@ fn paper_example_two_triangles_without_parallel_edges() {
     let b = poly(&[[4.0, 0.2], [6.0, 1.0], [4.5, 2.5]]);
     let block = EntranceBlock::new(&a, &b);
     let kinds: Vec<CoverKind> = block.edges().iter().map(|e| e.kind).collect();
-    assert_eq!(
-        kinds.iter().filter(|&&k| k == CoverKind::AngleEdge).count(),
-        3
-    );
-    assert_eq!(
-        kinds.iter().filter(|&&k| k == CoverKind::EdgeAngle).count(),
-        3
-    );
+    assert_eq!(kinds.iter().filter(|&&k| k == CoverKind::AngleEdge).count(), 3);
+    assert_eq!(kinds.iter().filter(|&&k| k == CoverKind::EdgeAngle).count(), 3);
     assert_eq!(answer(&a, &b).relation, Relation::Separated);
     // Figure 12(d): A placed on an edge–angle cover touches B with that
     // edge of A on that vertex of B.
-    let edge = block
-        .edges()
-        .iter()
-        .find(|e| e.kind == CoverKind::EdgeAngle)
-        .expect("an edge–angle cover");
+    let edge = block.edges().iter().find(|e| e.kind == CoverKind::EdgeAngle).expect("an edge–angle cover");
     let on_cover = edge.start + edge.direction * 0.5;
     let r = answer_at(&a, &b, on_cover, 1.0);
     assert_eq!(r.relation, Relation::Touching);
-    assert_eq!(
-        r.features.as_slice(),
-        &[Feature::EdgeAngle {
-            a_edge: edge.a,
-            b_vertex: edge.b[0]
-        }]
-    );
+    assert_eq!(r.features.as_slice(), &[Feature::EdgeAngle { a_edge: edge.a, b_vertex: edge.b[0] }]);
     // Backed off along the cover's normal by 0.01: separated by 0.01.
     let r = answer_at(&a, &b, on_cover + edge.normal * 0.01, 1.0);
     assert!((r.distance - 0.01).abs() < 1e-14, "{r:?}");
@@ -400,14 +282,7 @@ fn paper_example_circle_of_10_segments_with_parallel_edges() {
     let a = discretize_circle(Vec2::ZERO, 1.0, 10, CircleFit::Inscribed, 0.0).expect("10-gon");
     let b = rect(-3.0, -3.0, 3.0, -1.0);
     let block = EntranceBlock::new(&a, &b);
-    assert_eq!(
-        block
-            .edges()
-            .iter()
-            .filter(|e| e.kind == CoverKind::EdgeEdge)
-            .count(),
-        2
-    );
+    assert_eq!(block.edges().iter().filter(|e| e.kind == CoverKind::EdgeEdge).count(), 2);
     let v = a.vertices();
     let bottom = v[7].y;
     // Lowered onto B: the whole bottom edge lies on B's top edge.
@@ -416,14 +291,8 @@ fn paper_example_circle_of_10_segments_with_parallel_edges() {
     assert_eq!(
         sorted(&r.features),
         sorted(&[
-            Feature::AngleEdge {
-                a_vertex: 7,
-                b_edge: [2, 3]
-            },
-            Feature::AngleEdge {
-                a_vertex: 8,
-                b_edge: [2, 3]
-            },
+            Feature::AngleEdge { a_vertex: 7, b_edge: [2, 3] },
+            Feature::AngleEdge { a_vertex: 8, b_edge: [2, 3] },
         ])
     );
     // Slid right until vertex 7 sits on B's corner (3, -1): the two angle–
@@ -431,13 +300,7 @@ fn paper_example_circle_of_10_segments_with_parallel_edges() {
     let t = Vec2::new(3.0, -1.0) - v[7];
     let r = answer_at(&a, &b, t, 1.0);
     assert_eq!(r.relation, Relation::Touching, "{r:?}");
-    assert_eq!(
-        r.features.as_slice(),
-        &[Feature::AngleAngle {
-            a_vertex: 7,
-            b_vertex: 2
-        }]
-    );
+    assert_eq!(r.features.as_slice(), &[Feature::AngleAngle { a_vertex: 7, b_vertex: 2 }]);
     // Slid back left by 0.2, the bottom edge overlaps B's top from A's
     // vertex 7 to B's corner: those are the two ends.
     let r = answer_at(&a, &b, t - Vec2::new(0.2, 0.0), 1.0);
@@ -445,27 +308,15 @@ fn paper_example_circle_of_10_segments_with_parallel_edges() {
     assert_eq!(
         sorted(&r.features),
         sorted(&[
-            Feature::AngleEdge {
-                a_vertex: 7,
-                b_edge: [2, 3]
-            },
-            Feature::EdgeAngle {
-                a_edge: [7, 8],
-                b_vertex: 2
-            },
+            Feature::AngleEdge { a_vertex: 7, b_edge: [2, 3] },
+            Feature::EdgeAngle { a_edge: [7, 8], b_vertex: 2 },
         ])
     );
     // Slid right by 0.2 it leaves the corner: separated, edge 6→7 nearest
     // to the corner.
     let r = answer_at(&a, &b, t + Vec2::new(0.2, 0.0), 1.0);
     assert_eq!(r.relation, Relation::Separated, "{r:?}");
-    assert_eq!(
-        r.features.as_slice(),
-        &[Feature::EdgeAngle {
-            a_edge: [6, 7],
-            b_vertex: 2
-        }]
-    );
+    assert_eq!(r.features.as_slice(), &[Feature::EdgeAngle { a_edge: [6, 7], b_vertex: 2 }]);
 }
 
 #[test]
@@ -486,8 +337,7 @@ fn a_small_square_in_a_pocket_exits_into_the_pocket() {
         [0.0, 3.0],
     ])
     .expect("C shape");
-    let a =
-        SimplePolygon::from_xy(&[[1.1, 1.1], [1.9, 1.1], [1.9, 1.9], [1.1, 1.9]]).expect("square");
+    let a = SimplePolygon::from_xy(&[[1.1, 1.1], [1.9, 1.1], [1.9, 1.9], [1.1, 1.9]]).expect("square");
     let union = UnionBlock::new(&a, &b);
     let r = union.report();
     assert_eq!(r.relation, Relation::Separated);

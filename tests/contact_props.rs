@@ -17,8 +17,8 @@ use parry2d_f64::query;
 use parry2d_f64::shape::ConvexPolygon as ParryPolygon;
 use proptest::prelude::*;
 use surfacelab::contact::{
-    CachedBlock, ContactReport, ConvexPolygon, EntranceBlock, Relation, SimplePolygon, UnionBlock,
-    Vec2, brute_force_report, brute_force_report_at, contact_report,
+    CachedBlock, ContactReport, ConvexPolygon, EntranceBlock, Relation, SimplePolygon, UnionBlock, Vec2,
+    brute_force_report, brute_force_report_at, contact_report,
 };
 
 /// Strict convex hull (monotone chain), dropping collinear points.
@@ -28,9 +28,7 @@ fn hull(mut pts: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
     if pts.len() < 3 {
         return pts;
     }
-    let cross = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| {
-        (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
-    };
+    let cross = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
     let mut lower: Vec<[f64; 2]> = Vec::new();
     for &p in &pts {
         while lower.len() >= 2 && cross(lower[lower.len() - 2], lower[lower.len() - 1], p) <= 0.0 {
@@ -53,10 +51,7 @@ fn hull(mut pts: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
 
 fn area(p: &[[f64; 2]]) -> f64 {
     let n = p.len();
-    (0..n)
-        .map(|i| p[i][0] * p[(i + 1) % n][1] - p[(i + 1) % n][0] * p[i][1])
-        .sum::<f64>()
-        * 0.5
+    (0..n).map(|i| p[i][0] * p[(i + 1) % n][1] - p[(i + 1) % n][0] * p[i][1]).sum::<f64>() * 0.5
 }
 
 /// Random convex polygon around the origin, size about 1: either the hull
@@ -64,41 +59,24 @@ fn area(p: &[[f64; 2]]) -> f64 {
 fn convex() -> impl Strategy<Value = Vec<[f64; 2]>> {
     let from_points = prop::collection::vec((-1.0..1.0f64, -1.0..1.0f64), 3..24)
         .prop_map(|v| hull(v.into_iter().map(|(x, y)| [x, y]).collect()));
-    let on_ellipse = (
-        prop::collection::vec(0.0..std::f64::consts::TAU, 3..80),
-        0.2..1.0f64,
-        0.2..1.0f64,
-        0.0..3.2f64,
-    )
+    let on_ellipse = (prop::collection::vec(0.0..std::f64::consts::TAU, 3..80), 0.2..1.0f64, 0.2..1.0f64, 0.0..3.2f64)
         .prop_map(|(mut t, rx, ry, rot)| {
             t.sort_by(f64::total_cmp);
             let (s, c) = rot.sin_cos();
             hull(
                 t.into_iter()
-                    .map(|t| {
-                        [
-                            rx * t.cos() * c - ry * t.sin() * s,
-                            rx * t.cos() * s + ry * t.sin() * c,
-                        ]
-                    })
+                    .map(|t| [rx * t.cos() * c - ry * t.sin() * s, rx * t.cos() * s + ry * t.sin() * c])
                     .collect(),
             )
         });
-    prop_oneof![from_points, on_ellipse]
-        .prop_filter("a proper polygon", |p| p.len() >= 3 && area(p) > 1e-3)
+    prop_oneof![from_points, on_ellipse].prop_filter("a proper polygon", |p| p.len() >= 3 && area(p) > 1e-3)
 }
 
 /// Random convex polygon with small integer coordinates: parallel edges,
 /// exact touching and shared vertices are common.
 fn grid_convex() -> impl Strategy<Value = Vec<[f64; 2]>> {
     prop::collection::vec((-3i32..=3, -3i32..=3), 3..10)
-        .prop_map(|v| {
-            hull(
-                v.into_iter()
-                    .map(|(x, y)| [f64::from(x), f64::from(y)])
-                    .collect(),
-            )
-        })
+        .prop_map(|v| hull(v.into_iter().map(|(x, y)| [f64::from(x), f64::from(y)]).collect()))
         .prop_filter("a proper polygon", |p| p.len() >= 3 && area(p) > 0.4)
 }
 
@@ -119,10 +97,7 @@ fn regular() -> impl Strategy<Value = Vec<[f64; 2]>> {
 }
 
 fn shifted(p: &[[f64; 2]], scale: f64, dx: f64, dy: f64) -> ConvexPolygon {
-    let pts: Vec<[f64; 2]> = p
-        .iter()
-        .map(|q| [q[0] * scale + dx, q[1] * scale + dy])
-        .collect();
+    let pts: Vec<[f64; 2]> = p.iter().map(|q| [q[0] * scale + dx, q[1] * scale + dy]).collect();
     ConvexPolygon::from_xy(&pts).expect("hull is convex")
 }
 
@@ -149,56 +124,28 @@ fn check_self_consistent(
     scale: f64,
 ) -> Result<(), TestCaseError> {
     let eps = 1e-9 * scale;
-    prop_assert!(
-        (r.exit.length() - r.distance.abs()).abs() <= eps,
-        "|exit| != |distance|: {r:?}"
-    );
-    prop_assert_eq!(
-        r.relation,
-        Relation::from_signed_distance(r.distance, r.tolerance)
-    );
+    prop_assert!((r.exit.length() - r.distance.abs()).abs() <= eps, "|exit| != |distance|: {r:?}");
+    prop_assert_eq!(r.relation, Relation::from_signed_distance(r.distance, r.tolerance));
     let [wa, wb] = r.witness;
-    prop_assert!(
-        (wb - wa - r.exit).length() <= eps,
-        "witness does not span the exit: {r:?}"
-    );
+    prop_assert!((wb - wa - r.exit).length() <= eps, "witness does not span the exit: {r:?}");
     prop_assert!(boundary_distance(a, wa) <= eps, "witness a off A: {r:?}");
     prop_assert!(boundary_distance(b, wb) <= eps, "witness b off B: {r:?}");
     // Moving A by the exit leaves it touching B.
     let after = brute_force_report_at(a, b, r.exit);
-    prop_assert!(
-        after.distance.abs() <= eps,
-        "after the exit: {after:?} (from {r:?})"
-    );
+    prop_assert!(after.distance.abs() <= eps, "after the exit: {after:?} (from {r:?})");
     prop_assert!(!r.features.is_empty());
     Ok(())
 }
 
-fn check_against_brute_force(
-    a: &ConvexPolygon,
-    b: &ConvexPolygon,
-    scale: f64,
-) -> Result<(), TestCaseError> {
+fn check_against_brute_force(a: &ConvexPolygon, b: &ConvexPolygon, scale: f64) -> Result<(), TestCaseError> {
     let walk = EntranceBlock::new(a, b).report();
     // The one-shot query walks the same boundary without storing it.
     let one_shot = contact_report(a, b);
     prop_assert_eq!(one_shot.relation, walk.relation);
-    prop_assert!(
-        (one_shot.distance - walk.distance).abs() <= 1e-12 * scale,
-        "one-shot {one_shot:?} block {walk:?}"
-    );
+    prop_assert!((one_shot.distance - walk.distance).abs() <= 1e-12 * scale, "one-shot {one_shot:?} block {walk:?}");
     let brute = brute_force_report(a, b);
-    prop_assert_eq!(
-        walk.relation,
-        brute.relation,
-        "walk {:?} brute {:?}",
-        walk,
-        brute
-    );
-    prop_assert!(
-        (walk.distance - brute.distance).abs() <= 1e-9 * scale,
-        "walk {walk:?} brute {brute:?}"
-    );
+    prop_assert_eq!(walk.relation, brute.relation, "walk {:?} brute {:?}", walk, brute);
+    prop_assert!((walk.distance - brute.distance).abs() <= 1e-9 * scale, "walk {walk:?} brute {brute:?}");
     check_self_consistent(a, b, &walk, scale)?;
     check_self_consistent(a, b, &brute, scale)?;
     if (walk.exit - brute.exit).length() <= walk.tolerance {
@@ -216,8 +163,7 @@ fn check_against_brute_force(
 /// these polygons; `_unmodified` keeps our (already clean) vertices.
 fn parry_polygon(p: &ConvexPolygon) -> ParryPolygon {
     let pts = p.vertices().iter().map(|v| Vector::new(v.x, v.y)).collect();
-    ParryPolygon::from_convex_polyline_unmodified(pts)
-        .expect("parry accepts a clean convex polygon")
+    ParryPolygon::from_convex_polyline_unmodified(pts).expect("parry accepts a clean convex polygon")
 }
 
 proptest! {
@@ -374,9 +320,7 @@ fn star() -> impl Strategy<Value = Vec<[f64; 2]>> {
     prop::collection::vec((0.0..std::f64::consts::TAU, 0.3..1.0f64), 3..12).prop_map(|mut v| {
         v.sort_by(|p, q| p.0.total_cmp(&q.0));
         v.dedup_by(|p, q| (p.0 - q.0).abs() < 0.05);
-        v.into_iter()
-            .map(|(t, r)| [r * t.cos(), r * t.sin()])
-            .collect()
+        v.into_iter().map(|(t, r)| [r * t.cos(), r * t.sin()]).collect()
     })
 }
 

@@ -36,10 +36,8 @@ fn work_dir(name: &str) -> PathBuf {
 }
 
 fn require(tool: &str, package: &str) {
-    let found = Command::new("sh")
-        .args(["-c", &format!("command -v {tool}")])
-        .output()
-        .is_ok_and(|o| o.status.success());
+    let found =
+        Command::new("sh").args(["-c", &format!("command -v {tool}")]).output().is_ok_and(|o| o.status.success());
     assert!(
         found,
         "`{tool}` is not installed, and the demo's window test needs it. Install the test set-up with \
@@ -62,9 +60,7 @@ fn under_xvfb(dir: &Path, script: &str) -> Output {
         std::fs::set_permissions(&runtime, std::fs::Permissions::from_mode(0o700)).expect("chmod");
     }
     let screen = format!("-screen 0 {}x{}x24", SCREEN[0], SCREEN[1]);
-    let _one_at_a_time = XVFB
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    let _one_at_a_time = XVFB.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     Command::new("timeout")
         .args(["180", "xvfb-run", "-a", "-s", &screen, "sh", "-c", script])
         .env("XDG_RUNTIME_DIR", &runtime)
@@ -83,50 +79,30 @@ struct Image {
 
 impl Image {
     fn png(path: &Path) -> Image {
-        let img = image::open(path)
-            .unwrap_or_else(|e| panic!("{}: {e}", path.display()))
-            .to_rgb8();
-        Image {
-            width: img.width(),
-            height: img.height(),
-            pixels: img.pixels().map(|p| p.0).collect(),
-        }
+        let img = image::open(path).unwrap_or_else(|e| panic!("{}: {e}", path.display())).to_rgb8();
+        Image { width: img.width(), height: img.height(), pixels: img.pixels().map(|p| p.0).collect() }
     }
 
     /// An XWD dump (what `xwd -root` writes) of a 24/32-bit `TrueColor` screen.
     fn xwd(path: &Path) -> Image {
         let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let field =
-            |i: usize| u32::from_be_bytes(bytes[i * 4..i * 4 + 4].try_into().expect("4 bytes"));
+        let field = |i: usize| u32::from_be_bytes(bytes[i * 4..i * 4 + 4].try_into().expect("4 bytes"));
         let (header, width, height, byte_order, bpp, line) =
             (field(0), field(4), field(5), field(7), field(11), field(12));
         let masks = [field(14), field(15), field(16)];
         let colors = field(19);
-        assert_eq!(
-            bpp,
-            32,
-            "{}: expected a 32-bit XWD, got {bpp} bits per pixel",
-            path.display()
-        );
+        assert_eq!(bpp, 32, "{}: expected a 32-bit XWD, got {bpp} bits per pixel", path.display());
         let data = &bytes[header as usize + colors as usize * 12..];
         let mut pixels = Vec::with_capacity((width * height) as usize);
         for y in 0..height as usize {
             for x in 0..width as usize {
                 let at = y * line as usize + x * 4;
                 let raw: [u8; 4] = data[at..at + 4].try_into().expect("4 bytes");
-                let v = if byte_order == 0 {
-                    u32::from_le_bytes(raw)
-                } else {
-                    u32::from_be_bytes(raw)
-                };
+                let v = if byte_order == 0 { u32::from_le_bytes(raw) } else { u32::from_be_bytes(raw) };
                 pixels.push(masks.map(|m| ((v & m) >> m.trailing_zeros()) as u8));
             }
         }
-        Image {
-            width,
-            height,
-            pixels,
-        }
+        Image { width, height, pixels }
     }
 
     fn at(&self, x: u32, y: u32) -> [u8; 3] {
@@ -134,17 +110,9 @@ impl Image {
     }
 
     /// Share of the pixels of a rectangle that satisfy `test`.
-    fn share(
-        &self,
-        x: std::ops::Range<u32>,
-        y: std::ops::Range<u32>,
-        test: impl Fn([u8; 3]) -> bool,
-    ) -> f64 {
+    fn share(&self, x: std::ops::Range<u32>, y: std::ops::Range<u32>, test: impl Fn([u8; 3]) -> bool) -> f64 {
         let total = (x.len() * y.len()) as f64;
-        let hits = y
-            .flat_map(|yy| x.clone().map(move |xx| (xx, yy)))
-            .filter(|&(xx, yy)| test(self.at(xx, yy)))
-            .count();
+        let hits = y.flat_map(|yy| x.clone().map(move |xx| (xx, yy))).filter(|&(xx, yy)| test(self.at(xx, yy))).count();
         hits as f64 / total
     }
 }
@@ -156,11 +124,7 @@ fn near(a: [u8; 3], b: [u8; 3], tolerance: u8) -> bool {
 /// What a researcher sees: the panel on the left, the table with its red
 /// and blue objects and zones on the right, the scripted hand on it.
 fn check_window(name: &str, img: &Image, report: &str) {
-    assert_eq!(
-        [img.width, img.height],
-        SCREEN,
-        "{name}: screenshot size\n{report}"
-    );
+    assert_eq!([img.width, img.height], SCREEN, "{name}: screenshot size\n{report}");
     let panel = img.share(4..PANEL_W - 4, 0..SCREEN[1], |p| p == PANEL);
     assert!(
         panel > 0.45,
@@ -169,17 +133,9 @@ fn check_window(name: &str, img: &Image, report: &str) {
     );
     let view = PANEL_W + 8..SCREEN[0] - 8;
     let table = img.share(view.clone(), 60..SCREEN[1] - 60, |p| near(p, TABLE, 3));
-    assert!(
-        table > 0.25,
-        "{name}: only {:.0}% of the view shows the table colour {TABLE:?}\n{report}",
-        table * 100.0
-    );
-    let red = img.share(view.clone(), 0..SCREEN[1], |[r, g, b]| {
-        r > 180 && g < 140 && b < 140
-    });
-    let blue = img.share(view.clone(), 0..SCREEN[1], |[r, g, b]| {
-        b > 180 && r < 140 && g < 190
-    });
+    assert!(table > 0.25, "{name}: only {:.0}% of the view shows the table colour {TABLE:?}\n{report}", table * 100.0);
+    let red = img.share(view.clone(), 0..SCREEN[1], |[r, g, b]| r > 180 && g < 140 && b < 140);
+    let blue = img.share(view.clone(), 0..SCREEN[1], |[r, g, b]| b > 180 && r < 140 && g < 190);
     assert!(
         red > 0.01 && blue > 0.01,
         "{name}: red {:.2}% and blue {:.2}% objects expected on the table\n{report}",
@@ -187,9 +143,7 @@ fn check_window(name: &str, img: &Image, report: &str) {
         blue * 100.0
     );
     // The hand: the dark outline of the scripted flat hand, left of centre.
-    let outline = img.share(PANEL_W + 150..PANEL_W + 500, 250..550, |p| {
-        p.iter().all(|&c| c < 90)
-    });
+    let outline = img.share(PANEL_W + 150..PANEL_W + 500, 250..550, |p| p.iter().all(|&c| c < 90));
     assert!(
         outline > 0.002,
         "{name}: no hand outline where the script put the hand ({:.3}%)\n{report}",
@@ -234,28 +188,14 @@ fn the_demo_window_shows_the_panel_and_the_table_under_a_scripted_hand() {
     let steps: u64 = stderr
         .lines()
         .find_map(|l| {
-            l.split(" physics steps")
-                .next()
-                .filter(|_| l.contains("frames,"))?
-                .rsplit(' ')
-                .next()?
-                .parse()
-                .ok()
+            l.split(" physics steps").next().filter(|_| l.contains("frames,"))?.rsplit(' ').next()?.parse().ok()
         })
         .unwrap_or_else(|| panic!("no run summary\n{report}"));
     // 8 s of wall time; the physics keeps real time down to 10 frames per second.
     assert!(steps >= 60, "only {steps} physics steps in 8 s\n{report}");
 
-    check_window(
-        "the app's read-back (app.png)",
-        &Image::png(&dir.join("app.png")),
-        &report,
-    );
-    check_window(
-        "the X server's root window (root.xwd)",
-        &Image::xwd(&dir.join("root.xwd")),
-        &report,
-    );
+    check_window("the app's read-back (app.png)", &Image::png(&dir.join("app.png")), &report);
+    check_window("the X server's root window (root.xwd)", &Image::xwd(&dir.join("root.xwd")), &report);
 }
 
 #[test]
@@ -296,53 +236,28 @@ dwell_s = 0.5
          --script sweep.toml --out out --quit-after 60"
     );
     let out = under_xvfb(&dir, &script);
-    let report = format!(
-        "exit: {:?}\nstderr: {}",
-        out.status,
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let report = format!("exit: {:?}\nstderr: {}", out.status, String::from_utf8_lossy(&out.stderr));
     assert!(out.status.success(), "{report}");
-    let csv = std::fs::read_to_string(dir.join("trials.csv"))
-        .unwrap_or_else(|e| panic!("trials.csv: {e}\n{report}"));
+    let csv = std::fs::read_to_string(dir.join("trials.csv")).unwrap_or_else(|e| panic!("trials.csv: {e}\n{report}"));
     let mut lines = csv.lines();
-    assert_eq!(
-        lines.next(),
-        Some(surfacelab::study::COLUMNS.join(",").as_str()),
-        "the study's header"
-    );
+    assert_eq!(lines.next(), Some(surfacelab::study::COLUMNS.join(",").as_str()), "the study's header");
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 2, "two trials, two rows:\n{csv}");
     for (i, row) in rows.iter().enumerate() {
         // participant, order_index, task, technique, feedback, repetition, practice, time, completed, restarts, placed, steps, seed, version
         assert_eq!(
             &row[..7],
-            [
-                "7",
-                &i.to_string(),
-                "box.toml",
-                "proxy",
-                "true",
-                &(i + 1).to_string(),
-                "false"
-            ],
+            ["7", &i.to_string(), "box.toml", "proxy", "true", &(i + 1).to_string(), "false"],
             "{csv}"
         );
         let time: f64 = row[7].parse().expect("a completion time");
-        assert!(
-            (0.4..3.0).contains(&time),
-            "completed after the 0.5 s dwell, not {time}\n{csv}"
-        );
-        assert_eq!(
-            (row[8], row[12], row[13]),
-            ("true", "0", env!("CARGO_PKG_VERSION")),
-            "{csv}"
-        );
+        assert!((0.4..3.0).contains(&time), "completed after the 0.5 s dwell, not {time}\n{csv}");
+        assert_eq!((row[8], row[12], row[13]), ("true", "0", env!("CARGO_PKG_VERSION")), "{csv}");
     }
     // Each trial's input was recorded where `study --replay` looks for it.
     for r in 1..=2 {
         let g = dir.join(format!("out/gestures/p7/box_proxy_on_r{r}.toml"));
-        let gesture =
-            surfacelab::surface::Gesture::load(&g).unwrap_or_else(|e| panic!("{e}\n{report}"));
+        let gesture = surfacelab::surface::Gesture::load(&g).unwrap_or_else(|e| panic!("{e}\n{report}"));
         assert_eq!(gesture.tracks().len(), 1, "the scripted flat hand");
     }
 }

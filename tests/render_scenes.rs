@@ -52,7 +52,12 @@ fn session_at(task: &str, kind: TechniqueKind, gesture: Option<&str>, at: f64) -
     let mut s = Session::new(&scene, kind, SessionOptions::default()).expect("session");
     match gesture {
         Some(g) => {
-            let g = if g.trim_start().starts_with("format") { Gesture::from_str(g, "inline") } else { Gesture::load(root(g)) }.expect("gesture");
+            let g = if g.trim_start().starts_with("format") {
+                Gesture::from_str(g, "inline")
+            } else {
+                Gesture::load(root(g))
+            }
+            .expect("gesture");
             s.replay_until(&g, at).expect("replay");
         }
         None => {
@@ -69,7 +74,8 @@ fn each_task_scene_matches_its_golden_image() {
     let gpu = gpu();
     for task in ["positioning", "sorting", "steering"] {
         let s = session_at(&format!("tasks/{task}.toml"), TechniqueKind::Proxy, None, 0.25);
-        let img = render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1).expect("render");
+        let img = render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1)
+            .expect("render");
         snapshots().check(&format!("task_{task}"), &img, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
     }
 }
@@ -80,9 +86,18 @@ fn feedback_on_and_off_differ_exactly_by_red_feedback_for_every_technique() {
     for kind in TechniqueKind::ALL {
         // Mid-gesture: a fingertip dragging a box.
         let s = session_at("tasks/sorting.toml", kind, Some(DRAG_RED_BOX), 0.6);
-        let off = render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions { feedback: false, contact_overlay: false }), SIZE.0, SIZE.1).expect("render");
+        let off = render::render_to_image(
+            &gpu,
+            &render::draw_list(&s, ViewOptions { feedback: false, contact_overlay: false }),
+            SIZE.0,
+            SIZE.1,
+        )
+        .expect("render");
         let on_list = render::draw_list(&s, ViewOptions { feedback: true, contact_overlay: false });
-        assert!(!on_list.feedback.is_empty() || kind == TechniqueKind::Direct, "{kind}: no feedback geometry mid-gesture");
+        assert!(
+            !on_list.feedback.is_empty() || kind == TechniqueKind::Direct,
+            "{kind}: no feedback geometry mid-gesture"
+        );
         let on = render::render_to_image(&gpu, &on_list, SIZE.0, SIZE.1).expect("render");
         let mut differing = 0;
         let mut red = 0;
@@ -106,9 +121,17 @@ fn feedback_on_and_off_differ_exactly_by_red_feedback_for_every_technique() {
 #[test]
 fn the_contact_overlay_shadows_where_the_hands_are() {
     let gpu = gpu();
-    let s = session_at("tasks/sorting.toml", TechniqueKind::Particle, Some("assets/gestures/flat_hand_sweep.toml"), 0.5);
-    let plain = render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1).expect("render");
-    let shadow = render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true }), SIZE.0, SIZE.1).expect("render");
+    let s =
+        session_at("tasks/sorting.toml", TechniqueKind::Particle, Some("assets/gestures/flat_hand_sweep.toml"), 0.5);
+    let plain =
+        render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1).expect("render");
+    let shadow = render::render_to_image(
+        &gpu,
+        &render::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true }),
+        SIZE.0,
+        SIZE.1,
+    )
+    .expect("render");
     // Darker where the surface senses a hand, unchanged elsewhere.
     let img = s.image();
     let mut darker = 0;

@@ -54,7 +54,10 @@ fn the_new_tasks_load_with_hints_goals_and_their_effects() {
         assert!(s.time_limit_s > 0.0 && s.goal != Goal::None, "{name}: no timed goal");
         match needs {
             Some(e) => assert!(s.effects.contains(e) && !s.soft_bodies.is_empty(), "{name}: declares {}", s.effects),
-            None => assert!(!s.effects.any_soft() && s.soft_bodies.is_empty(), "{name}: pays for soft bodies it has none of"),
+            None => assert!(
+                !s.effects.any_soft() && s.soft_bodies.is_empty(),
+                "{name}: pays for soft bodies it has none of"
+            ),
         }
         let w = World::new(&s);
         assert_eq!(w.physics().soft_bodies.len(), s.soft_bodies.len(), "{name}: soft bodies created");
@@ -81,7 +84,9 @@ fn soft_bodies_exist_only_when_their_effect_is_declared() {
     let e = scene::parse(&text.replace(", \"tearing\"]", "]"), "tear.toml").expect_err("tearing undeclared");
     let e = e.to_string();
     assert!(e.contains("soft_bodies[0].tear_strain") && e.contains("`tearing`") && e.starts_with("tear.toml:"), "{e}");
-    let e = scene::parse(&text.replace("kind = \"cloth\"", "kind = \"jelly\""), "tear.toml").expect_err("bad kind").to_string();
+    let e = scene::parse(&text.replace("kind = \"cloth\"", "kind = \"jelly\""), "tear.toml")
+        .expect_err("bad kind")
+        .to_string();
     assert!(e.contains("jelly"), "{e}");
     let e = scene::parse(&text.replace("mass = 0.03", "mass = -1"), "tear.toml").expect_err("bad mass").to_string();
     assert!(e.contains("soft_bodies[0].mass") && e.contains("-1"), "{e}");
@@ -150,7 +155,11 @@ keys = [{ t = 0.0, pos = [0.05, -0.02] }, { t = 0.3 }, { t = 1.5, pos = [0.25, -
         let pieces = torn.world().soft_piece_masses(0);
         let dragged = replay(&scene, kind, &one, 0.5);
         let moved = dragged.world().soft_center(0).expect("sheet").x;
-        println!("{kind}: two hands -> pieces {pieces:.4?} (goal complete {}); one hand -> {} piece(s), sheet moved {moved:.3} m", torn.progress().complete, dragged.world().soft_piece_masses(0).len());
+        println!(
+            "{kind}: two hands -> pieces {pieces:.4?} (goal complete {}); one hand -> {} piece(s), sheet moved {moved:.3} m",
+            torn.progress().complete,
+            dragged.world().soft_piece_masses(0).len()
+        );
         if kind == TechniqueKind::Joint {
             // A contact holds one particle: pulling two particles apart tears
             // the sheet, but where it rips depends on which particles were grabbed.
@@ -210,7 +219,9 @@ fn cloth_under_a_flat_hand_stays_finite_for_ten_thousand_steps() {
             }
         }
     }
-    println!("cloth under a flat hand, 10000 steps: top particle speed {top_speed:.3} m/s, lowest particle z {lowest:.4} m");
+    println!(
+        "cloth under a flat hand, 10000 steps: top particle speed {top_speed:.3} m/s, lowest particle z {lowest:.4} m"
+    );
     assert!(s.world().soft_all_finite(), "a particle is not finite");
     assert_eq!(s.world().stats().nan_count, 0);
     assert!(top_speed < 2.0, "particles reached {top_speed} m/s under a hand moving at 0.03 m/s");
@@ -241,7 +252,9 @@ fn a_squished_soft_block_keeps_its_volume() {
                 lowest = lowest.min(centre_z(&s));
             }
         }
-        println!("{kind}: squished jelly centre {rest_z:.4} -> {lowest:.4} m high, volume {min_ratio:.3}..{max_ratio:.3} of rest");
+        println!(
+            "{kind}: squished jelly centre {rest_z:.4} -> {lowest:.4} m high, volume {min_ratio:.3}..{max_ratio:.3} of rest"
+        );
         assert!(lowest < rest_z - 0.0005, "{kind}: the hand did not press the block ({rest_z} -> {lowest})");
         assert!(min_ratio > 0.95 && max_ratio < 1.05, "{kind}: volume went to {min_ratio}..{max_ratio} of rest");
     }
@@ -262,8 +275,14 @@ fn a_two_arm_sweep_gathers_the_pieces() {
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy, TechniqueKind::Joint] {
         let s = replay(&scene, kind, &g, 1.0);
         let w = s.world();
-        let inside = (0..w.object_count()).filter(|&i| (w.object_pose(i).position.truncate() - center).length() <= radius).count();
-        println!("{kind}: {inside} of {} pieces inside the circle; goal complete: {}", w.object_count(), s.progress().complete);
+        let inside = (0..w.object_count())
+            .filter(|&i| (w.object_pose(i).position.truncate() - center).length() <= radius)
+            .count();
+        println!(
+            "{kind}: {inside} of {} pieces inside the circle; goal complete: {}",
+            w.object_count(),
+            s.progress().complete
+        );
         if kind == TechniqueKind::Particle {
             assert!(inside * 10 >= w.object_count() * 8, "particle gathered only {inside}");
         }
@@ -295,7 +314,12 @@ fn a_flat_hand_stops_a_rolling_ball() {
         }
         let end = s.world().object_pose(0);
         let travel = (end.position - landed).truncate().length();
-        println!("{kind}: ball at {:.3} m/s met the hand at x = {:.3}; it travelled {travel:.3} m more, now at {:.3} m/s", 0.5, landed.x, end.linvel.length());
+        println!(
+            "{kind}: ball at {:.3} m/s met the hand at x = {:.3}; it travelled {travel:.3} m more, now at {:.3} m/s",
+            0.5,
+            landed.x,
+            end.linvel.length()
+        );
         assert!(travel < 0.05, "{kind}: the ball rolled on {travel:.3} m");
         if kind == TechniqueKind::Particle {
             // Many particles on the ball hold it still; the single proxy
@@ -346,7 +370,11 @@ fn a_ruler_pushes_the_blocks_into_line() {
         let ys: Vec<f32> = (0..w.object_count()).map(|i| w.object_pose(i).position.y).collect();
         let lined = (0..w.object_count()).filter(|&i| zones[0].contains(w.object_pose(i).position.truncate())).count();
         let spread = ys.iter().copied().fold(f32::MIN, f32::max) - ys.iter().copied().fold(f32::MAX, f32::min);
-        println!("{kind}: {lined} of {} blocks in the strip, y spread {spread:.3} m, goal complete: {}", w.object_count(), s.progress().complete);
+        println!(
+            "{kind}: {lined} of {} blocks in the strip, y spread {spread:.3} m, goal complete: {}",
+            w.object_count(),
+            s.progress().complete
+        );
         if kind == TechniqueKind::Particle {
             assert_eq!(lined, w.object_count(), "particle: blocks at y = {ys:?}");
         }

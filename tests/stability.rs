@@ -44,9 +44,15 @@ fn run(case: &Case<'_>, steps: usize, mut hands: impl FnMut(usize, &Session) -> 
     run_with(case, steps, |_| {}, &mut hands)
 }
 
-fn run_with(case: &Case<'_>, steps: usize, setup: impl FnOnce(&mut Session), hands: &mut dyn FnMut(usize, &Session) -> Vec<Hand>) -> Session {
+fn run_with(
+    case: &Case<'_>,
+    steps: usize,
+    setup: impl FnOnce(&mut Session),
+    hands: &mut dyn FnMut(usize, &Session) -> Vec<Hand>,
+) -> Session {
     let scene = scene::load(&path(case.task)).expect("scene loads");
-    let options = SessionOptions { config: case.config.clone(), sensor_px: case.sensor_px, ..SessionOptions::default() };
+    let options =
+        SessionOptions { config: case.config.clone(), sensor_px: case.sensor_px, ..SessionOptions::default() };
     let mut s = Session::new(&scene, case.kind, options).expect("session");
     setup(&mut s);
     let (hw, hd) = (scene.table.width / 2.0 + 0.1, scene.table.depth / 2.0 + 0.1);
@@ -65,12 +71,24 @@ fn run_with(case: &Case<'_>, steps: usize, setup: impl FnOnce(&mut Session), han
             }
             let q = p.position;
             assert!(q.is_finite(), "{} {}: object {i} non-finite at step {k}", case.task, case.kind);
-            assert!(q.x.abs() < hw && q.y.abs() < hd && q.z > -0.2 && q.z < 1.0, "{} {}: object {i} left the world at step {k}: {q}", case.task, case.kind);
+            assert!(
+                q.x.abs() < hw && q.y.abs() < hd && q.z > -0.2 && q.z < 1.0,
+                "{} {}: object {i} left the world at step {k}: {q}",
+                case.task,
+                case.kind
+            );
         }
     }
     let st = s.world().stats();
     assert_eq!(st.nan_count, 0, "{} {}: NaN", case.task, case.kind);
-    assert!(st.max_speed_seen < case.speed_limit, "{} {}: max speed {} ≥ {}", case.task, case.kind, st.max_speed_seen, case.speed_limit);
+    assert!(
+        st.max_speed_seen < case.speed_limit,
+        "{} {}: max speed {} ≥ {}",
+        case.task,
+        case.kind,
+        st.max_speed_seen,
+        case.speed_limit
+    );
     assert!(worst_pen < MAX_PENETRATION, "{} {}: penetration {worst_pen}", case.task, case.kind);
     s
 }
@@ -88,7 +106,10 @@ fn lerp(a: Vec2, b: Vec2, k: usize, frames: usize) -> Vec2 {
 fn two_joints_pulling_one_box_apart() {
     let case = Case::new("tasks/cases/one_box.toml", TechniqueKind::Joint, 3.0);
     run(&case, STEPS, |k, _| {
-        vec![tip(1, lerp(Vec2::new(-0.04, 0.0), Vec2::new(-0.35, 0.05), k, 60)), tip(2, lerp(Vec2::new(0.04, 0.0), Vec2::new(0.35, -0.05), k, 60))]
+        vec![
+            tip(1, lerp(Vec2::new(-0.04, 0.0), Vec2::new(-0.35, 0.05), k, 60)),
+            tip(2, lerp(Vec2::new(0.04, 0.0), Vec2::new(0.35, -0.05), k, 60)),
+        ]
     });
 }
 
@@ -277,7 +298,13 @@ fn contact_module_fed_degenerate_pairs_by_the_real_pipeline() {
             continue;
         }
         for c in &s.frame().contacts {
-            let pts: Vec<[f64; 2]> = c.blob.hull.iter().map(|p| s.sensor().to_table([p[0] as f32, p[1] as f32])).map(|q| [f64::from(q[0]), f64::from(q[1])]).collect();
+            let pts: Vec<[f64; 2]> = c
+                .blob
+                .hull
+                .iter()
+                .map(|p| s.sensor().to_table([p[0] as f32, p[1] as f32]))
+                .map(|q| [f64::from(q[0]), f64::from(q[1])])
+                .collect();
             let Ok(a) = ConvexPolygon::from_xy(&pts) else {
                 rejected += 1;
                 continue;
@@ -286,7 +313,12 @@ fn contact_module_fed_degenerate_pairs_by_the_real_pipeline() {
                 let r = contact::contact_report(&a, b);
                 let brute = contact::brute_force_report(&a, b);
                 assert!(r.distance.is_finite() && r.exit.x.is_finite() && r.exit.y.is_finite());
-                assert!((r.distance - brute.distance).abs() < 1e-6, "entrance block {} vs brute force {}", r.distance, brute.distance);
+                assert!(
+                    (r.distance - brute.distance).abs() < 1e-6,
+                    "entrance block {} vs brute force {}",
+                    r.distance,
+                    brute.distance
+                );
                 answered += 1;
             }
         }

@@ -9,8 +9,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 use surfacelab::study::output::{RUN_TOML, SUMMARY_CSV, TRIALS_CSV, read_trials};
 use surfacelab::study::{
-    COLUMNS, RunFile, RunOptions, Shard, StudyDesign, StudyError, Technique, TrialResult, TrialRow, TrialRunner, TrialSpec, describe,
-    merge, resume_study, run_study, summarize, t_quantile_975, trial_seed, williams_square,
+    COLUMNS, RunFile, RunOptions, Shard, StudyDesign, StudyError, Technique, TrialResult, TrialRow, TrialRunner,
+    TrialSpec, describe, merge, resume_study, run_study, summarize, t_quantile_975, trial_seed, williams_square,
 };
 
 /// Results that depend only on the spec. `jitter` sleeps a seed-dependent
@@ -484,7 +484,8 @@ fn summary_of_hand_made_rows() {
         practice,
         seed: 0,
     };
-    let done = |t: f64, completed| TrialResult { completion_time_s: t, completed, restarts: 0, objects_placed: 0, steps: 0 };
+    let done =
+        |t: f64, completed| TrialResult { completion_time_s: t, completed, restarts: 0, objects_placed: 0, steps: 0 };
     let rows = vec![
         TrialRow::new(&spec(1, 0, true), &done(500.0, true)), // practice: ignored
         TrialRow::new(&spec(1, 1, false), &done(10.0, true)),
@@ -512,7 +513,9 @@ fn summary_of_hand_made_rows() {
     surfacelab::study::summary::write_summary(&path, &summary).expect("write");
     assert_eq!(surfacelab::study::summary::read_summary(&path).expect("read"), summary);
     let text = std::fs::read_to_string(&path).expect("text");
-    assert!(text.starts_with("task,technique,feedback,participants,trials,completed,failed,mean_s,sd_s,ci95_low_s,ci95_high_s\n"));
+    assert!(text.starts_with(
+        "task,technique,feedback,participants,trials,completed,failed,mean_s,sd_s,ci95_low_s,ci95_high_s\n"
+    ));
 }
 
 // ---------------------------------------------------------------- shards
@@ -616,7 +619,11 @@ fn run_toml_round_trips() {
     assert_eq!(mine.design.tasks, StudyDesign::default().tasks);
 
     // Typos are errors, not silently ignored.
-    std::fs::write(dir.join("typo.toml"), "format = \"surfacelab-study/1\"\nversion = \"0\"\n[design]\nparticipant = 12\n").expect("write");
+    std::fs::write(
+        dir.join("typo.toml"),
+        "format = \"surfacelab-study/1\"\nversion = \"0\"\n[design]\nparticipant = 12\n",
+    )
+    .expect("write");
     assert!(matches!(RunFile::load(&dir.join("typo.toml")), Err(StudyError::TomlRead { .. })));
 }
 

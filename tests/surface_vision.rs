@@ -4,8 +4,8 @@
 use std::path::{Path, PathBuf};
 
 use surfacelab::surface::{
-    Button, ContactImage, Gesture, GestureRecorder, Hand, HandKind, Modifiers, Mouse, MouseEvent,
-    Patch, RasterParams, Sensor, Shape, rasterize, rasterize_patches,
+    Button, ContactImage, Gesture, GestureRecorder, Hand, HandKind, Modifiers, Mouse, MouseEvent, Patch, RasterParams,
+    Sensor, Shape, rasterize, rasterize_patches,
 };
 use surfacelab::vision::{
     BlockMatcher, Pipeline, VisionFrame, VisionParams, find_blobs, signed_area, sobel_at, threshold,
@@ -26,9 +26,7 @@ fn median(mut v: Vec<f32>) -> f32 {
 }
 
 fn gestures_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("assets")
-        .join("gestures")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("assets").join("gestures")
 }
 
 // --- surface: rasterization ------------------------------------------------
@@ -37,19 +35,8 @@ fn gestures_dir() -> PathBuf {
 fn rasterized_disc_has_the_right_area_and_centroid() {
     let s = sensor();
     let mpp = s.metres_per_pixel();
-    for (centre, radius) in [
-        ([0.0f32, 0.0f32], 0.02f32),
-        ([0.1234, -0.0567], 0.0111),
-        ([-0.31, 0.2], 0.05),
-    ] {
-        let disc = Patch {
-            shape: Shape::Ellipse {
-                centre,
-                radii: [radius, radius],
-                angle: 0.0,
-            },
-            level: 1.0,
-        };
+    for (centre, radius) in [([0.0f32, 0.0f32], 0.02f32), ([0.1234, -0.0567], 0.0111), ([-0.31, 0.2], 0.05)] {
+        let disc = Patch { shape: Shape::Ellipse { centre, radii: [radius, radius], angle: 0.0 }, level: 1.0 };
         let image = rasterize_patches(&[disc], &s, &RasterParams::default());
         // Half the touch level lies exactly on the outline.
         let blobs = find_blobs(&image, &threshold(&image, 128), 1);
@@ -63,17 +50,11 @@ fn rasterized_disc_has_the_right_area_and_centroid() {
         // a pixel for a small disc.
         let c = s.to_pixel(centre);
         for got in [b.centroid, b.weighted_centroid] {
-            assert!(
-                (got[0] - c[0]).abs() < 0.1 && (got[1] - c[1]).abs() < 0.1,
-                "{got:?} vs {c:?}"
-            );
+            assert!((got[0] - c[0]).abs() < 0.1 && (got[1] - c[1]).abs() < 0.1, "{got:?} vs {c:?}");
         }
         // A disc's ellipse is a circle of the same radius.
         let [major, minor] = b.ellipse.semi_axes;
-        assert!(
-            (major - r_px).abs() < 0.15 && (minor - r_px).abs() < 0.15,
-            "{major} {minor} vs {r_px}"
-        );
+        assert!((major - r_px).abs() < 0.15 && (minor - r_px).abs() < 0.15, "{major} {minor} vs {r_px}");
         // The hull is counter-clockwise on screen (negative area in pixel
         // coordinates); through the centres of the boundary pixels, it is
         // about half a pixel smaller in radius than the disc.
@@ -87,21 +68,13 @@ fn rasterized_disc_has_the_right_area_and_centroid() {
 fn fingertips_merge_when_closed_and_separate_when_spread() {
     let count = |spread: f32| {
         let image = draw(&[Hand::new(1, HandKind::Fingertips(2), 0.0, 0.0).with_spread(spread)]);
-        find_blobs(
-            &image,
-            &threshold(&image, VisionParams::default().threshold),
-            6,
-        )
-        .len()
+        find_blobs(&image, &threshold(&image, VisionParams::default().threshold), 6).len()
     };
     assert_eq!(count(0.0), 1);
     assert_eq!(count(1.0), 2);
     for n in 1..=5 {
         let image = draw(&[Hand::new(1, HandKind::Fingertips(n), 0.0, 0.0)]);
-        assert_eq!(
-            find_blobs(&image, &threshold(&image, 48), 6).len(),
-            usize::from(n)
-        );
+        assert_eq!(find_blobs(&image, &threshold(&image, 48), 6).len(), usize::from(n));
     }
 }
 
@@ -113,10 +86,7 @@ fn every_hand_kind_draws_one_contact_of_plausible_size() {
         let blobs = find_blobs(&image, &threshold(&image, 48), 6);
         assert_eq!(blobs.len(), 1, "{kind:?}");
         let area_m2 = blobs[0].area as f32 * mpp2;
-        assert!(
-            area_m2 > 1.5e-4 && area_m2 < 0.03,
-            "{kind:?}: {area_m2} m^2"
-        );
+        assert!(area_m2 > 1.5e-4 && area_m2 < 0.03, "{kind:?}: {area_m2} m^2");
     }
 }
 
@@ -145,25 +115,14 @@ fn flat_hand_motion(a: Hand, b: Hand) -> FlowCase {
             let p = s.to_table(e.px);
             let (sb, cb) = b.pose.angle.sin_cos();
             let local = [p[0] - b.pose.x, p[1] - b.pose.y];
-            let local = [
-                cb * local[0] + sb * local[1],
-                -sb * local[0] + cb * local[1],
-            ];
+            let local = [cb * local[0] + sb * local[1], -sb * local[0] + cb * local[1]];
             let (sa, ca) = a.pose.angle.sin_cos();
-            let was = [
-                a.pose.x + ca * local[0] - sa * local[1],
-                a.pose.y + sa * local[0] + ca * local[1],
-            ];
+            let was = [a.pose.x + ca * local[0] - sa * local[1], a.pose.y + sa * local[0] + ca * local[1]];
             let was_px = s.to_pixel(was);
             [e.px[0] - was_px[0], e.px[1] - was_px[1]]
         })
         .collect();
-    FlowCase {
-        frame,
-        truth,
-        prev,
-        cur,
-    }
+    FlowCase { frame, truth, prev, cur }
 }
 
 impl FlowCase {
@@ -187,9 +146,7 @@ impl FlowCase {
         let mut full = Vec::new();
         for (e, t) in self.frame.edges.iter().zip(&self.truth) {
             let [x, y] = [e.px[0] as u32, e.px[1] as u32];
-            let f = m
-                .flow_at(&self.prev, &self.cur, [x, y], [0.0, 0.0])
-                .expect("same size");
+            let f = m.flow_at(&self.prev, &self.cur, [x, y], [0.0, 0.0]).expect("same size");
             let g = sobel_at(&self.cur, x as usize, y as usize);
             let len = (g[0] as f32).hypot(g[1] as f32);
             let n = [g[0] as f32 / len, g[1] as f32 / len];
@@ -209,20 +166,14 @@ fn flow_recovers_a_known_translation_of_a_flat_hand() {
     b.pose.x += shift[0];
     b.pose.y += shift[1];
     let case = flat_hand_motion(a, b);
-    assert!(
-        case.frame.edges.len() > 250,
-        "{} edges",
-        case.frame.edges.len()
-    );
+    assert!(case.frame.edges.len() > 250, "{} edges", case.frame.edges.len());
     for t in &case.truth {
         assert!((t[0] - 3.3).abs() < 1e-3 && (t[1] + 2.1).abs() < 1e-3);
     }
     let err = case.median_error();
     assert!(err <= 0.5, "median flow error {err} px");
     let (normal, full) = case.unguided_errors(4);
-    eprintln!(
-        "translation: guided median error {err:.3} px; unguided normal {normal:.3} px, full {full:.3} px"
-    );
+    eprintln!("translation: guided median error {err:.3} px; unguided normal {normal:.3} px, full {full:.3} px");
     assert!(normal <= 0.5, "unguided normal-flow error {normal}");
 }
 
@@ -233,34 +184,20 @@ fn flow_recovers_a_known_rotation_of_a_flat_hand() {
     let case = flat_hand_motion(a, b);
     let c = &case.frame.contacts[0];
     // Counter-clockwise on the table is negative in image orientation.
-    assert!(
-        (c.rotation_rad + 3f32.to_radians()).abs() < 0.5f32.to_radians(),
-        "{}",
-        c.rotation_rad
-    );
-    let longest = case
-        .truth
-        .iter()
-        .map(|t| t[0].hypot(t[1]))
-        .fold(0.0, f32::max);
+    assert!((c.rotation_rad + 3f32.to_radians()).abs() < 0.5f32.to_radians(), "{}", c.rotation_rad);
+    let longest = case.truth.iter().map(|t| t[0].hypot(t[1])).fold(0.0, f32::max);
     assert!(longest > 3.0, "the fingertips move {longest} px");
     let err = case.median_error();
     assert!(err <= 0.5, "median flow error {err} px");
     let (normal, full) = case.unguided_errors(4);
-    eprintln!(
-        "rotation: guided median error {err:.3} px; unguided normal {normal:.3} px, full {full:.3} px"
-    );
+    eprintln!("rotation: guided median error {err:.3} px; unguided normal {normal:.3} px, full {full:.3} px");
     assert!(normal <= 0.5, "unguided normal-flow error {normal}");
 }
 
 // --- vision: tracking --------------------------------------------------------
 
 fn ids_left_to_right(frame: &VisionFrame) -> Vec<u32> {
-    let mut c: Vec<(f32, u32)> = frame
-        .contacts
-        .iter()
-        .map(|c| (c.blob.centroid[0], c.id))
-        .collect();
+    let mut c: Vec<(f32, u32)> = frame.contacts.iter().map(|c| (c.blob.centroid[0], c.id)).collect();
     c.sort_by(|a, b| a.0.total_cmp(&b.0));
     c.into_iter().map(|(_, id)| id).collect()
 }
@@ -302,11 +239,7 @@ fn two_fingers_that_merge_and_split_keep_sensible_ids() {
 #[test]
 fn closing_and_spreading_two_fingers_restores_both_ids() {
     let mut p = Pipeline::default();
-    let hand = |spread: f32| {
-        [Hand::new(1, HandKind::Fingertips(2), 0.0, 0.0)
-            .with_angle(0.4)
-            .with_spread(spread)]
-    };
+    let hand = |spread: f32| [Hand::new(1, HandKind::Fingertips(2), 0.0, 0.0).with_angle(0.4).with_spread(spread)];
     let start = p.process(&draw(&hand(1.0)));
     let ids = ids_left_to_right(&start);
     assert_eq!(ids.len(), 2);
@@ -356,32 +289,18 @@ fn degenerate_images_do_not_panic() {
     assert!(f.edges.is_empty());
     let f = p.process(&white);
     assert_eq!(f.contacts[0].age_frames, 1);
-    for (w, h, v) in [
-        (1, 1, 0u8),
-        (1, 1, 255),
-        (0, 0, 0),
-        (2, 1, 255),
-        (7, 3, 200),
-    ] {
+    for (w, h, v) in [(1, 1, 0u8), (1, 1, 255), (0, 0, 0), (2, 1, 255), (7, 3, 200)] {
         let img = ContactImage::from_pixels(w, h, vec![v; w * h]).expect("sized");
         p.process(&img);
         p.process(&img);
     }
     // Contacts running off every border and corner, moving.
     let s = sensor();
-    let edges = [
-        [-0.5, 0.0],
-        [0.5, 0.0],
-        [0.0, 0.375],
-        [0.0, -0.375],
-        [-0.5, 0.375],
-        [0.5, -0.375],
-    ];
+    let edges = [[-0.5, 0.0], [0.5, 0.0], [0.0, 0.375], [0.0, -0.375], [-0.5, 0.375], [0.5, -0.375]];
     for (k, &[x, y]) in edges.iter().enumerate() {
         let mut p = Pipeline::default();
         for step in 0..3 {
-            let hand =
-                Hand::new(1, HandKind::FlatHand, x + 0.01 * step as f32, y).with_angle(k as f32);
+            let hand = Hand::new(1, HandKind::FlatHand, x + 0.01 * step as f32, y).with_angle(k as f32);
             let f = p.process(&rasterize(&[hand], &s, &RasterParams::default()));
             // Cut by the rim, a hand may fall apart into several blobs.
             assert!(!f.contacts.is_empty());
@@ -389,16 +308,8 @@ fn degenerate_images_do_not_panic() {
                 let b = c.blob.bbox;
                 b.x0 == 0 || b.y0 == 0 || b.x1 == 639 || b.y1 == 479
             }));
-            assert!(
-                f.contacts
-                    .iter()
-                    .all(|c| !c.blob.contour.is_empty() && c.blob.hull.len() >= 3)
-            );
-            assert!(
-                f.edges
-                    .iter()
-                    .all(|e| e.flow_px.iter().all(|v| v.is_finite()))
-            );
+            assert!(f.contacts.iter().all(|c| !c.blob.contour.is_empty() && c.blob.hull.len() >= 3));
+            assert!(f.edges.iter().all(|e| e.flow_px.iter().all(|v| v.is_finite())));
         }
     }
     // A frame of another size in between: flow is skipped, nothing breaks.
@@ -414,10 +325,7 @@ fn random_frames_do_not_panic() {
     let mut p = Pipeline::default();
     for (k, density) in [0.05f32, 0.3, 0.45, 0.6, 0.95].into_iter().enumerate() {
         let params = RasterParams {
-            noise: Some(surfacelab::surface::Noise {
-                seed: k as u64,
-                amplitude: 255,
-            }),
+            noise: Some(surfacelab::surface::Noise { seed: k as u64, amplitude: 255 }),
             ..RasterParams::default()
         };
         // Uniform noise in -255..=255 clamps to 0 about half the time; shift
@@ -425,11 +333,7 @@ fn random_frames_do_not_panic() {
         // A quarter-resolution frame keeps this quick in debug builds.
         let image = rasterize(&[], &Sensor::new(160, 120, 1.0, 0.75), &params);
         let level = (255.0 * (1.0 - 2.0 * density.min(0.499))).max(1.0) as u8;
-        let mut p2 = Pipeline::new(VisionParams {
-            threshold: level,
-            min_area: 1,
-            ..VisionParams::default()
-        });
+        let mut p2 = Pipeline::new(VisionParams { threshold: level, min_area: 1, ..VisionParams::default() });
         p2.process(&image);
         let f = p2.process(&image);
         assert!(f.contacts.iter().all(|c| !c.blob.contour.is_empty()));
@@ -439,18 +343,9 @@ fn random_frames_do_not_panic() {
 
 #[test]
 fn noisy_frames_give_no_phantom_contacts() {
-    let params = RasterParams {
-        noise: Some(surfacelab::surface::Noise {
-            seed: 42,
-            amplitude: 20,
-        }),
-        ..RasterParams::default()
-    };
-    let image = rasterize(
-        &[Hand::new(1, HandKind::FlatHand, 0.0, 0.0)],
-        &sensor(),
-        &params,
-    );
+    let params =
+        RasterParams { noise: Some(surfacelab::surface::Noise { seed: 42, amplitude: 20 }), ..RasterParams::default() };
+    let image = rasterize(&[Hand::new(1, HandKind::FlatHand, 0.0, 0.0)], &sensor(), &params);
     let f = Pipeline::default().process(&image);
     assert_eq!(f.contacts.len(), 1);
 }
@@ -471,56 +366,22 @@ fn a_recorded_gesture_round_trips_exactly() {
         t += 1.0 / 60.0;
         assert!(rec.record(t, &mouse.hands()));
     };
-    let shift = Modifiers {
-        shift: true,
-        ..Modifiers::default()
-    };
+    let shift = Modifiers { shift: true, ..Modifiers::default() };
     frame(
         &mut mouse,
-        &[
-            MouseEvent::Moved([-0.2, 0.1]),
-            MouseEvent::Modifiers(shift),
-            MouseEvent::Pressed(Button::Left),
-        ],
+        &[MouseEvent::Moved([-0.2, 0.1]), MouseEvent::Modifiers(shift), MouseEvent::Pressed(Button::Left)],
     );
-    frame(
-        &mut mouse,
-        &[
-            MouseEvent::Pressed(Button::Right),
-            MouseEvent::Released(Button::Left),
-        ],
-    );
-    frame(
-        &mut mouse,
-        &[
-            MouseEvent::Modifiers(Modifiers::default()),
-            MouseEvent::Moved([0.0, -0.1]),
-        ],
-    );
+    frame(&mut mouse, &[MouseEvent::Pressed(Button::Right), MouseEvent::Released(Button::Left)]);
+    frame(&mut mouse, &[MouseEvent::Modifiers(Modifiers::default()), MouseEvent::Moved([0.0, -0.1])]);
     frame(&mut mouse, &[MouseEvent::Pressed(Button::Left)]);
     for k in 0..40 {
         let x = 0.0 + 0.00731 * k as f32;
-        frame(
-            &mut mouse,
-            &[
-                MouseEvent::Moved([x, -0.1 + 0.0017 * k as f32]),
-                MouseEvent::Wheel(0.1),
-            ],
-        );
+        frame(&mut mouse, &[MouseEvent::Moved([x, -0.1 + 0.0017 * k as f32]), MouseEvent::Wheel(0.1)]);
     }
-    frame(
-        &mut mouse,
-        &[
-            MouseEvent::Released(Button::Left),
-            MouseEvent::Mode(HandKind::Fingertips(2)),
-        ],
-    );
+    frame(&mut mouse, &[MouseEvent::Released(Button::Left), MouseEvent::Mode(HandKind::Fingertips(2))]);
     frame(&mut mouse, &[MouseEvent::Pressed(Button::Left)]);
     for _ in 0..10 {
-        frame(
-            &mut mouse,
-            &[MouseEvent::Modifiers(shift), MouseEvent::Wheel(-0.37)],
-        );
+        frame(&mut mouse, &[MouseEvent::Modifiers(shift), MouseEvent::Wheel(-0.37)]);
     }
     let recorded = rec.finish();
     assert_eq!(recorded.tracks().len(), 3);
@@ -571,28 +432,16 @@ fn malformed_gestures_name_the_file_the_field_and_the_line() {
         (
             "kind.toml",
             hand("tentacle", "", KEYS),
-            vec![
-                "kind.toml:6",
-                "hands[0].kind",
-                "unknown hand kind \"tentacle\"",
-            ],
+            vec!["kind.toml:6", "hands[0].kind", "unknown hand kind \"tentacle\""],
         ),
         (
             "order.toml",
-            hand(
-                "fist",
-                "",
-                "[[hands.keys]]\nt = 1.0\npos = [0.0, 0.0]\n[[hands.keys]]\nt = 0.5\n",
-            ),
+            hand("fist", "", "[[hands.keys]]\nt = 1.0\npos = [0.0, 0.0]\n[[hands.keys]]\nt = 0.5\n"),
             vec!["order.toml:12", "hands[0].keys[1].t", "out of time order"],
         ),
         (
             "same_time.toml",
-            hand(
-                "fist",
-                "",
-                "[[hands.keys]]\nt = 1.0\npos = [0.0, 0.0]\n[[hands.keys]]\nt = 1.0\n",
-            ),
+            hand("fist", "", "[[hands.keys]]\nt = 1.0\npos = [0.0, 0.0]\n[[hands.keys]]\nt = 1.0\n"),
             vec!["same_time.toml", "hands[0].keys[1].t", "out of time order"],
         ),
         (
@@ -602,11 +451,7 @@ fn malformed_gestures_name_the_file_the_field_and_the_line() {
         ),
         (
             "inf.toml",
-            hand(
-                "fist",
-                "",
-                "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\nangle_deg = -inf\n",
-            ),
+            hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\nangle_deg = -inf\n"),
             vec!["inf.toml:11", "hands[0].keys[0].angle_deg", "finite"],
         ),
         (
@@ -629,26 +474,14 @@ fn malformed_gestures_name_the_file_the_field_and_the_line() {
             "format = \"surfacelab-gesture\"\n".to_owned(),
             vec!["no_version.toml", "`version`", "missing"],
         ),
-        (
-            "no_format.toml",
-            "version = 1\n".to_owned(),
-            vec!["no_format.toml", "`format`", "missing"],
-        ),
+        ("no_format.toml", "version = 1\n".to_owned(), vec!["no_format.toml", "`format`", "missing"]),
         (
             "wrong_format.toml",
             "format = \"svg\"\nversion = 1\n".to_owned(),
             vec!["wrong_format.toml:1", "`format`", "svg"],
         ),
-        (
-            "fingers.toml",
-            hand("fingertips", "fingers = 6", KEYS),
-            vec!["fingers.toml:7", "hands[0].fingers", "1..=5"],
-        ),
-        (
-            "fingers0.toml",
-            hand("fingertips", "fingers = 0", KEYS),
-            vec!["fingers0.toml:7", "hands[0].fingers"],
-        ),
+        ("fingers.toml", hand("fingertips", "fingers = 6", KEYS), vec!["fingers.toml:7", "hands[0].fingers", "1..=5"]),
+        ("fingers0.toml", hand("fingertips", "fingers = 0", KEYS), vec!["fingers0.toml:7", "hands[0].fingers"]),
         (
             "fingers_fist.toml",
             hand("fist", "fingers = 2", KEYS),
@@ -656,24 +489,12 @@ fn malformed_gestures_name_the_file_the_field_and_the_line() {
         ),
         (
             "pressure.toml",
-            hand(
-                "fist",
-                "",
-                "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\npressure = 1.5\n",
-            ),
-            vec![
-                "pressure.toml:11",
-                "hands[0].keys[0].pressure",
-                "out of range",
-            ],
+            hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\npressure = 1.5\n"),
+            vec!["pressure.toml:11", "hands[0].keys[0].pressure", "out of range"],
         ),
         (
             "scale.toml",
-            hand(
-                "fist",
-                "",
-                "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\nscale = 0.0\n",
-            ),
+            hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\nscale = 0.0\n"),
             vec!["scale.toml:11", "hands[0].keys[0].scale"],
         ),
         (
@@ -681,56 +502,28 @@ fn malformed_gestures_name_the_file_the_field_and_the_line() {
             hand("fist", "", "[[hands.keys]]\nt = 0.0\n"),
             vec!["no_pos.toml:9", "hands[0].keys[0].pos", "missing"],
         ),
-        (
-            "no_keys.toml",
-            hand("fist", "keys = []", ""),
-            vec!["no_keys.toml:7", "hands[0].keys"],
-        ),
+        ("no_keys.toml", hand("fist", "keys = []", ""), vec!["no_keys.toml:7", "hands[0].keys"]),
         (
             "negative_t.toml",
             hand("fist", "", "[[hands.keys]]\nt = -1.0\npos = [0.0, 0.0]\n"),
             vec!["negative_t.toml:9", "hands[0].keys[0].t"],
         ),
-        (
-            "id.toml",
-            format!("{HEADER}[[hands]]\nid = -1\nkind = \"fist\"\n{KEYS}"),
-            vec!["id.toml:4", "hands[0].id"],
-        ),
+        ("id.toml", format!("{HEADER}[[hands]]\nid = -1\nkind = \"fist\"\n{KEYS}"), vec!["id.toml:4", "hands[0].id"]),
         (
             "overlap.toml",
             format!(
                 "{HEADER}[[hands]]\nid = 1\nkind = \"fist\"\n{KEYS}\n[[hands]]\nid = 1\nkind = \"edge\"\n[[hands.keys]]\nt = 0.5\npos = [0.1, 0.0]\n"
             ),
-            vec![
-                "overlap.toml:17",
-                "hands[1].keys[0].t",
-                "still on the table",
-            ],
+            vec!["overlap.toml:17", "hands[1].keys[0].t", "still on the table"],
         ),
         (
             "unknown_field.toml",
-            hand(
-                "fist",
-                "",
-                "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\nspeed = 3.0\n",
-            ),
+            hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\nspeed = 3.0\n"),
             vec!["unknown_field.toml:11", "speed"],
         ),
-        (
-            "missing_t.toml",
-            hand("fist", "", "[[hands.keys]]\npos = [0.0, 0.0]\n"),
-            vec!["missing_t.toml", "`t`"],
-        ),
-        (
-            "syntax.toml",
-            format!("{HEADER}[[hands]\n"),
-            vec!["syntax.toml:3"],
-        ),
-        (
-            "pos_type.toml",
-            hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0]\n"),
-            vec!["pos_type.toml:10"],
-        ),
+        ("missing_t.toml", hand("fist", "", "[[hands.keys]]\npos = [0.0, 0.0]\n"), vec!["missing_t.toml", "`t`"]),
+        ("syntax.toml", format!("{HEADER}[[hands]\n"), vec!["syntax.toml:3"]),
+        ("pos_type.toml", hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0]\n"), vec!["pos_type.toml:10"]),
     ];
     for (name, text, wanted) in cases {
         let message = error_of(name, &text);
@@ -772,11 +565,7 @@ fn example_gestures_parse_and_draw() {
             let image = draw(&g.sample(t));
             assert!(!image.is_blank(), "{} is blank at t = {t}", path.display());
             let f = pipeline.process(&image);
-            assert!(
-                !f.contacts.is_empty() && !f.edges.is_empty(),
-                "{} at t = {t}",
-                path.display()
-            );
+            assert!(!f.contacts.is_empty() && !f.edges.is_empty(), "{} at t = {t}", path.display());
         }
         // Writing and reading back changes nothing.
         let back = Gesture::from_str(&g.to_string(), "rewritten").expect("reads back");
@@ -805,9 +594,6 @@ fn the_twist_turns_the_contacts_and_the_drag_moves_ten_centimetres() {
         s.to_table(find_blobs(&image, &threshold(&image, 48), 6)[0].weighted_centroid)
     };
     let (a, b) = (at(0.0), at(1.5));
-    assert!(
-        (b[0] - a[0] - 0.1).abs() < 0.001 && (b[1] - a[1]).abs() < 0.001,
-        "{a:?} -> {b:?}"
-    );
+    assert!((b[0] - a[0] - 0.1).abs() < 0.001 && (b[1] - a[1]).abs() < 0.001, "{a:?} -> {b:?}");
     assert!((a[0] + 0.05).abs() < 0.002 && a[1].abs() < 0.002);
 }

@@ -85,12 +85,17 @@ fn two_finger_twist_rotates_a_box() {
     let g = Gesture::load(asset("assets/gestures/two_finger_twist.toml")).expect("gesture");
     // Proxy turns it most of the 90°; particles follow the slow twist less
     // well (0.2 px/frame of outline motion is below the flow's noise).
-    for (kind, min_deg) in [(TechniqueKind::Proxy, 45.0), (TechniqueKind::Particle, 10.0), (TechniqueKind::Joint, 45.0)] {
+    for (kind, min_deg) in [(TechniqueKind::Proxy, 45.0), (TechniqueKind::Particle, 10.0), (TechniqueKind::Joint, 45.0)]
+    {
         let s = replay("tasks/cases/small_box.toml", kind, &g, 0.5);
         let pose = s.world().object_pose(0);
         let yaw = yaw_deg(pose.rotation);
         assert!(yaw > min_deg && yaw < 100.0, "{kind}: yaw {yaw:.1}°");
-        assert!(pose.position.truncate().length() < 0.02, "{kind}: a twist should not translate much: {}", pose.position);
+        assert!(
+            pose.position.truncate().length() < 0.02,
+            "{kind}: a twist should not translate much: {}",
+            pose.position
+        );
     }
 }
 
@@ -196,7 +201,12 @@ fn pooled_and_per_frame_particles_give_the_same_trajectory() {
     let scene = scene::load(&asset("tasks/cases/one_box.toml")).expect("scene");
     let run = |pooled: bool| {
         let config = TechniqueConfig { particle_pooled: pooled, ..TechniqueConfig::default() };
-        let mut s = Session::new(&scene, TechniqueKind::Particle, SessionOptions { config: Some(config), ..SessionOptions::default() }).expect("session");
+        let mut s = Session::new(
+            &scene,
+            TechniqueKind::Particle,
+            SessionOptions { config: Some(config), ..SessionOptions::default() },
+        )
+        .expect("session");
         let mut track = Vec::new();
         while s.time() < g.duration() + 0.5 {
             let hands = g.sample(s.time());
@@ -253,7 +263,11 @@ fn every_technique_runs_every_study_task_without_nan() {
         for kind in TechniqueKind::ALL {
             let s = replay(task, kind, &g, 0.5);
             assert!(s.world().stats().max_speed_seen < 10.0, "{task} {kind}");
-            assert!(s.world().stats().max_penetration_seen < 0.02, "{task} {kind}: {}", s.world().stats().max_penetration_seen);
+            assert!(
+                s.world().stats().max_penetration_seen < 0.02,
+                "{task} {kind}: {}",
+                s.world().stats().max_penetration_seen
+            );
         }
     }
 }

@@ -11,10 +11,7 @@ use surfacelab::surface::{Hand, HandKind};
 const TABLE: [f32; 2] = [1.0, 0.75];
 
 fn message(addr: &str, args: Vec<OscType>) -> OscPacket {
-    OscPacket::Message(OscMessage {
-        addr: addr.into(),
-        args,
-    })
+    OscPacket::Message(OscMessage { addr: addr.into(), args })
 }
 
 fn s(v: &str) -> OscType {
@@ -33,22 +30,11 @@ fn frame(profile: &str, frame: i32, sets: &[Vec<OscType>]) -> Vec<u8> {
         message(profile, std::iter::once(s("alive")).chain(alive).collect()),
     ];
     for set in sets {
-        content.push(message(
-            profile,
-            std::iter::once(s("set"))
-                .chain(set.iter().cloned())
-                .collect(),
-        ));
+        content.push(message(profile, std::iter::once(s("set")).chain(set.iter().cloned()).collect()));
     }
     content.push(message(profile, vec![s("fseq"), OscType::Int(frame)]));
-    encoder::encode(&OscPacket::Bundle(OscBundle {
-        timetag: OscTime {
-            seconds: 0,
-            fractional: 1,
-        },
-        content,
-    }))
-    .expect("encodes")
+    encoder::encode(&OscPacket::Bundle(OscBundle { timetag: OscTime { seconds: 0, fractional: 1 }, content }))
+        .expect("encodes")
 }
 
 /// Polls the listener until `done` holds (at most 5 s): UDP delivery and
@@ -66,8 +52,7 @@ fn wait_for(listener: &TuioListener, done: impl Fn(&[Hand]) -> bool) -> Vec<Hand
 
 #[test]
 fn cursors_and_blobs_sent_over_udp_become_hands() {
-    let listener =
-        TuioListener::bind("127.0.0.1:0".parse().expect("address")).expect("binds a free port");
+    let listener = TuioListener::bind("127.0.0.1:0".parse().expect("address")).expect("binds a free port");
     let sender = UdpSocket::bind("127.0.0.1:0").expect("sender socket");
     let to = listener.local_addr();
 
@@ -76,21 +61,11 @@ fn cursors_and_blobs_sent_over_udp_become_hands() {
         vec![OscType::Int(10), f(0.5), f(0.5), f(0.0), f(0.0), f(0.0)],
         vec![OscType::Int(11), f(0.25), f(0.25), f(0.0), f(0.0), f(0.0)],
     ];
-    sender
-        .send_to(&frame("/tuio/2Dcur", 1, &cursors), to)
-        .expect("sends");
+    sender.send_to(&frame("/tuio/2Dcur", 1, &cursors), to).expect("sends");
     let hands = wait_for(&listener, |h| h.len() == 2);
-    assert_eq!(
-        hands.len(),
-        2,
-        "two cursors arrive as two fingertips: {hands:?}"
-    );
+    assert_eq!(hands.len(), 2, "two cursors arrive as two fingertips: {hands:?}");
     assert!(hands.iter().all(|h| h.kind == HandKind::Fingertips(1)));
-    let at = |x: f32, y: f32| {
-        hands
-            .iter()
-            .any(|h| (h.pose.x - x).abs() < 1e-5 && (h.pose.y - y).abs() < 1e-5)
-    };
+    let at = |x: f32, y: f32| hands.iter().any(|h| (h.pose.x - x).abs() < 1e-5 && (h.pose.y - y).abs() < 1e-5);
     assert!(at(0.0, 0.0) && at(-0.25, 0.1875), "{hands:?}");
 
     // A forearm-sized blob lying across the table joins them.
@@ -108,44 +83,25 @@ fn cursors_and_blobs_sent_over_udp_become_hands() {
         f(0.0),
         f(0.0),
     ];
-    sender
-        .send_to(&frame("/tuio/2Dblb", 1, &[blob]), to)
-        .expect("sends");
+    sender.send_to(&frame("/tuio/2Dblb", 1, &[blob]), to).expect("sends");
     let hands = wait_for(&listener, |h| h.len() == 3);
-    let arm = hands
-        .iter()
-        .find(|h| h.kind == HandKind::Forearm)
-        .expect("the blob became a forearm");
-    assert!(
-        (arm.scale - 1.0).abs() < 0.05,
-        "scaled to the blob: {}",
-        arm.scale
-    );
+    let arm = hands.iter().find(|h| h.kind == HandKind::Forearm).expect("the blob became a forearm");
+    assert!((arm.scale - 1.0).abs() < 0.05, "scaled to the blob: {}", arm.scale);
 
     // Garbage in between: counted, ignored, and the listener keeps going.
     for junk in [&b"not osc at all"[..], &[0u8; 3][..], &[0xFF; 200][..]] {
         sender.send_to(junk, to).expect("sends");
     }
-    sender
-        .send_to(&frame("/tuio/2Dcur", 2, &cursors[..1]), to)
-        .expect("sends");
+    sender.send_to(&frame("/tuio/2Dcur", 2, &cursors[..1]), to).expect("sends");
     let hands = wait_for(&listener, |h| h.len() == 2);
-    assert_eq!(
-        hands.len(),
-        2,
-        "one cursor lifted, the blob stays: {hands:?}"
-    );
+    assert_eq!(hands.len(), 2, "one cursor lifted, the blob stays: {hands:?}");
     let stats = listener.stats();
     assert_eq!(stats.malformed, 3, "{stats:?}");
     assert_eq!(stats.packets, 6, "{stats:?}");
 
     // Everything lifted.
-    sender
-        .send_to(&frame("/tuio/2Dcur", 3, &[]), to)
-        .expect("sends");
-    sender
-        .send_to(&frame("/tuio/2Dblb", 2, &[]), to)
-        .expect("sends");
+    sender.send_to(&frame("/tuio/2Dcur", 3, &[]), to).expect("sends");
+    sender.send_to(&frame("/tuio/2Dblb", 2, &[]), to).expect("sends");
     assert!(wait_for(&listener, <[Hand]>::is_empty).is_empty());
     // Dropping the listener stops its thread (the test would hang otherwise).
     drop(listener);

@@ -97,7 +97,8 @@ fn sleeping_happens_only_when_declared() {
         on.step();
         off.step();
     }
-    let asleep = |w: &World| (0..w.object_count()).filter(|&i| w.physics().bodies[w.object_body(i)].is_sleeping()).count();
+    let asleep =
+        |w: &World| (0..w.object_count()).filter(|&i| w.physics().bodies[w.object_body(i)].is_sleeping()).count();
     assert_eq!(asleep(&on), s.objects.len(), "resting objects sleep when declared");
     assert_eq!(asleep(&off), 0, "and never when not");
 }

@@ -18,11 +18,7 @@ pub struct Readback {
 impl Readback {
     /// Records a copy of `texture` (8-bit RGBA or BGRA, `size` pixels)
     /// into `encoder`; [`Readback::finish`] after the encoder is submitted.
-    pub fn record(
-        device: &wgpu::Device,
-        encoder: &mut wgpu::CommandEncoder,
-        texture: &wgpu::Texture,
-    ) -> Self {
+    pub fn record(device: &wgpu::Device, encoder: &mut wgpu::CommandEncoder, texture: &wgpu::Texture) -> Self {
         let size = [texture.width(), texture.height()];
         let padded = padded_bytes_per_row(size[0]);
         let buffer = device.create_buffer(&wgpu::BufferDescriptor {
@@ -35,22 +31,11 @@ impl Readback {
             texture.as_image_copy(),
             wgpu::TexelCopyBufferInfo {
                 buffer: &buffer,
-                layout: wgpu::TexelCopyBufferLayout {
-                    offset: 0,
-                    bytes_per_row: Some(padded),
-                    rows_per_image: None,
-                },
+                layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(padded), rows_per_image: None },
             },
-            wgpu::Extent3d {
-                width: size[0],
-                height: size[1],
-                depth_or_array_layers: 1,
-            },
+            wgpu::Extent3d { width: size[0], height: size[1], depth_or_array_layers: 1 },
         );
-        let bgra = matches!(
-            texture.format(),
-            wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb
-        );
+        let bgra = matches!(texture.format(), wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb);
         Self { buffer, size, bgra }
     }
 
@@ -60,21 +45,13 @@ impl Readback {
         self.buffer.map_async(wgpu::MapMode::Read, .., move |r| {
             let _ = sender.send(r);
         });
-        device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| anyhow!("waiting for the GPU: {e}"))?;
-        receiver
-            .recv()
-            .context("the readback never finished")?
-            .map_err(|e| anyhow!("mapping the readback: {e}"))?;
+        device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| anyhow!("waiting for the GPU: {e}"))?;
+        receiver.recv().context("the readback never finished")?.map_err(|e| anyhow!("mapping the readback: {e}"))?;
         let [w, h] = self.size;
         let row = (w * 4) as usize;
         let mut pixels = Vec::with_capacity(row * h as usize);
         {
-            let mapped = self
-                .buffer
-                .get_mapped_range(..)
-                .map_err(|e| anyhow!("reading the readback: {e}"))?;
+            let mapped = self.buffer.get_mapped_range(..).map_err(|e| anyhow!("reading the readback: {e}"))?;
             for chunk in mapped.chunks_exact(padded_bytes_per_row(w) as usize) {
                 pixels.extend_from_slice(&chunk[..row]);
             }
@@ -94,8 +71,5 @@ impl Readback {
 /// Whether frames of this format can be read back here (8-bit RGBA/BGRA).
 pub fn readable(format: wgpu::TextureFormat) -> bool {
     use wgpu::TextureFormat::{Bgra8Unorm, Bgra8UnormSrgb, Rgba8Unorm, Rgba8UnormSrgb};
-    matches!(
-        format,
-        Rgba8Unorm | Rgba8UnormSrgb | Bgra8Unorm | Bgra8UnormSrgb
-    )
+    matches!(format, Rgba8Unorm | Rgba8UnormSrgb | Bgra8Unorm | Bgra8UnormSrgb)
 }

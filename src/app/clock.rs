@@ -19,12 +19,7 @@ pub struct Clock {
 impl Clock {
     /// `dt` seconds per step (> 0), at most `max_steps` (>= 1) per frame.
     pub fn new(dt: f64, max_steps: u32) -> Self {
-        Self {
-            dt: dt.max(1e-6),
-            max_steps: max_steps.max(1),
-            debt: 0.0,
-            dropped: 0.0,
-        }
+        Self { dt: dt.max(1e-6), max_steps: max_steps.max(1), debt: 0.0, dropped: 0.0 }
     }
 
     pub fn dt(&self) -> f64 {
@@ -67,10 +62,7 @@ mod tests {
             let mut c = Clock::new(1.0 / 60.0, 4);
             let frames = (fps * 10.0) as usize;
             let steps: u32 = (0..frames).map(|_| c.advance(1.0 / fps)).sum();
-            assert!(
-                (599..=601).contains(&steps),
-                "{fps} fps: {steps} steps in 10 s"
-            );
+            assert!((599..=601).contains(&steps), "{fps} fps: {steps} steps in 10 s");
             assert_eq!(c.dropped(), 0.0);
         }
     }

@@ -36,14 +36,7 @@ pub struct Input {
 
 impl Input {
     pub fn new(script: Option<Gesture>, tuio: Option<TuioListener>) -> Self {
-        Self {
-            script: script.map(|gesture| Script {
-                gesture,
-                start: 0.0,
-            }),
-            tuio,
-            ..Self::default()
-        }
+        Self { script: script.map(|gesture| Script { gesture, start: 0.0 }), tuio, ..Self::default() }
     }
 
     /// A finger went down on, or moved to, a table point.
@@ -65,23 +58,18 @@ impl Input {
 
     /// Whether the script has hands to come at session time `t`.
     pub fn script_running(&self, t: f64) -> bool {
-        self.script
-            .as_ref()
-            .is_some_and(|s| t - s.start <= s.gesture.duration())
+        self.script.as_ref().is_some_and(|s| t - s.start <= s.gesture.duration())
     }
 
     /// The hands on the table at session time `t`, on a table of `table`
     /// = [width, depth] metres.
     pub fn hands(&self, t: f64, table: [f32; 2]) -> Vec<Hand> {
         let mut hands = self.mouse.hands();
-        hands.extend(self.touches.iter().map(|&(id, [x, y])| {
-            Hand::new(
-                TOUCH_ID_BASE | (id as u32 & ID_MASK),
-                HandKind::Fingertips(1),
-                x,
-                y,
-            )
-        }));
+        hands.extend(
+            self.touches
+                .iter()
+                .map(|&(id, [x, y])| Hand::new(TOUCH_ID_BASE | (id as u32 & ID_MASK), HandKind::Fingertips(1), x, y)),
+        );
         if let Some(s) = &self.script {
             hands.extend(s.gesture.sample(t - s.start).into_iter().map(|mut h| {
                 h.id = SCRIPT_ID_BASE | (h.id & ID_MASK);
@@ -101,9 +89,7 @@ impl Input {
             return None;
         }
         let mut m = self.mouse.clone();
-        m.handle(crate::surface::MouseEvent::Pressed(
-            crate::surface::Button::Left,
-        ));
+        m.handle(crate::surface::MouseEvent::Pressed(crate::surface::Button::Left));
         m.hands().last().copied()
     }
 }
@@ -143,10 +129,7 @@ mod tests {
         let p = input.press_preview().expect("not dragging");
         assert_eq!(p.kind, HandKind::Forearm);
         assert!((p.pose.angle.to_degrees() - 30.0).abs() < 1e-3);
-        assert!(
-            input.mouse.hands().is_empty(),
-            "the preview touches nothing"
-        );
+        assert!(input.mouse.hands().is_empty(), "the preview touches nothing");
         input.mouse.handle(MouseEvent::Pressed(Button::Left));
         assert!(input.press_preview().is_none());
     }

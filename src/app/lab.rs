@@ -58,23 +58,13 @@ impl Lab {
         let session = Session::new(&scene, options.technique, SessionOptions::default())?;
         let tuio = options
             .tuio
-            .map(|addr| {
-                TuioListener::bind(addr)
-                    .with_context(|| format!("--tuio: cannot listen on UDP {addr}"))
-            })
+            .map(|addr| TuioListener::bind(addr).with_context(|| format!("--tuio: cannot listen on UDP {addr}")))
             .transpose()?;
-        let participant = options
-            .participant
-            .clone()
-            .map(|p| Trials::open(p, &options.task))
-            .transpose()?;
+        let participant = options.participant.clone().map(|p| Trials::open(p, &options.task)).transpose()?;
         Ok(Self {
             session,
             task: options.task.clone(),
-            view: ViewOptions {
-                feedback: options.feedback,
-                contact_overlay: options.contact_overlay,
-            },
+            view: ViewOptions { feedback: options.feedback, contact_overlay: options.contact_overlay },
             paused: false,
             step_requests: 0,
             clock: Clock::new(f64::from(scene.physics.dt), MAX_STEPS_PER_FRAME),
@@ -133,20 +123,9 @@ impl Lab {
         self.restart(self.technique(), None)
     }
 
-    fn restart(
-        &mut self,
-        kind: TechniqueKind,
-        config: Option<TechniqueConfig>,
-    ) -> anyhow::Result<()> {
+    fn restart(&mut self, kind: TechniqueKind, config: Option<TechniqueConfig>) -> anyhow::Result<()> {
         let scene = self.scene().clone();
-        self.session = Session::new(
-            &scene,
-            kind,
-            SessionOptions {
-                config,
-                ..SessionOptions::default()
-            },
-        )?;
+        self.session = Session::new(&scene, kind, SessionOptions { config, ..SessionOptions::default() })?;
         self.clock.clear();
         // A recording restarts with the scene, so it replays from this state.
         if let Some(r) = self.recording.take() {
@@ -261,9 +240,7 @@ impl Lab {
 
     /// True when participant mode has run all its trials.
     pub fn finished(&self) -> bool {
-        self.participant
-            .as_ref()
-            .is_some_and(|t| t.phase == Phase::Done)
+        self.participant.as_ref().is_some_and(|t| t.phase == Phase::Done)
     }
 
     /// What to draw into a view of `size` pixels: the session's draw list
@@ -290,12 +267,8 @@ impl Lab {
     pub fn start_recording(&mut self, path: Option<PathBuf>) -> anyhow::Result<()> {
         self.stop_recording();
         self.reset()?;
-        let path =
-            path.unwrap_or_else(|| timestamped(&self.out_dir.join("gestures"), &self.task, "toml"));
-        self.say(format!(
-            "recording to {} (the scene restarted)",
-            path.display()
-        ));
+        let path = path.unwrap_or_else(|| timestamped(&self.out_dir.join("gestures"), &self.task, "toml"));
+        self.say(format!("recording to {} (the scene restarted)", path.display()));
         self.recording = Some(Recording::new(path));
         Ok(())
     }
@@ -330,9 +303,8 @@ impl Lab {
     /// `out/screenshots/<task>_<time>.png`.
     pub fn screenshot(&mut self, gpu: &GpuContext, size: [u32; 2]) {
         let path = timestamped(&self.out_dir.join("screenshots"), &self.task, "png");
-        let result =
-            render::render_to_image(gpu, &self.draw_list(size), size[0].max(16), size[1].max(16))
-                .and_then(|image| render::save_png(&image, &path));
+        let result = render::render_to_image(gpu, &self.draw_list(size), size[0].max(16), size[1].max(16))
+            .and_then(|image| render::save_png(&image, &path));
         self.say(match result {
             Ok(()) => format!("screenshot: {}", path.display()),
             Err(e) => format!("screenshot failed: {e}"),
@@ -347,16 +319,12 @@ impl Lab {
     }
 
     pub fn status(&self) -> Option<&str> {
-        self.status
-            .as_ref()
-            .filter(|(_, at)| self.wall - at < STATUS_SECONDS)
-            .map(|(m, _)| m.as_str())
+        self.status.as_ref().filter(|(_, at)| self.wall - at < STATUS_SECONDS).map(|(m, _)| m.as_str())
     }
 
     /// The scene's hint while it should still be shown over the view.
     pub fn hint(&self) -> Option<&str> {
-        (self.wall < self.hint_until && !self.scene().hint.is_empty())
-            .then_some(self.scene().hint.as_str())
+        (self.wall < self.hint_until && !self.scene().hint.is_empty()).then_some(self.scene().hint.as_str())
     }
 
     /// Waypoints of a steering goal (0 otherwise).
@@ -384,11 +352,7 @@ mod tests {
     fn a_recorded_drag_replays_to_the_same_state() {
         let dir = std::env::temp_dir().join(format!("surfacelab-lab-{}", std::process::id()));
         let path = dir.join("drag.toml");
-        let mut lab = Lab::new(&DemoOptions::new(
-            "tasks/cases/one_box.toml",
-            TechniqueKind::Proxy,
-        ))
-        .expect("opens");
+        let mut lab = Lab::new(&DemoOptions::new("tasks/cases/one_box.toml", TechniqueKind::Proxy)).expect("opens");
         // Some time passes first: the recording restarts the scene anyway.
         lab.advance(0.5);
         lab.start_recording(Some(path.clone())).expect("starts");
@@ -397,10 +361,7 @@ mod tests {
         lab.input.mouse.handle(MouseEvent::Moved([-0.05, 0.0]));
         lab.input.mouse.handle(MouseEvent::Pressed(Button::Left));
         for i in 0..90 {
-            lab.input.mouse.handle(MouseEvent::Moved([
-                -0.05 + 0.002 * i as f32,
-                0.001 * i as f32,
-            ]));
+            lab.input.mouse.handle(MouseEvent::Moved([-0.05 + 0.002 * i as f32, 0.001 * i as f32]));
             assert_eq!(lab.advance(dt), 1);
         }
         lab.input.mouse.handle(MouseEvent::Released(Button::Left));
@@ -408,25 +369,17 @@ mod tests {
         let live = lab.session.world().object_pose(0).position;
         assert!(live.x > 0.05, "the drag moved the box: {live}");
         lab.stop_recording();
-        assert!(
-            lab.status().is_some_and(|s| s.contains("saved")),
-            "{:?}",
-            lab.status()
-        );
+        assert!(lab.status().is_some_and(|s| s.contains("saved")), "{:?}", lab.status());
 
         let gesture = Gesture::load(&path).expect("a gesture file");
         let scene = crate::scene::load("tasks/cases/one_box.toml").expect("scene");
-        let mut replay =
-            Session::new(&scene, TechniqueKind::Proxy, SessionOptions::default()).expect("session");
+        let mut replay = Session::new(&scene, TechniqueKind::Proxy, SessionOptions::default()).expect("session");
         while replay.frames() < lab.session.frames() {
             let hands = gesture.sample(replay.time());
             replay.step(&hands).expect("steps");
         }
         let replayed = replay.world().object_pose(0).position;
-        assert!(
-            (replayed - live).length() < 1e-4,
-            "live {live}, replayed {replayed}"
-        );
+        assert!((replayed - live).length() < 1e-4, "live {live}, replayed {replayed}");
         let _ = std::fs::remove_dir_all(dir);
     }
 

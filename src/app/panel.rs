@@ -50,24 +50,16 @@ pub struct PanelState {
 
 impl PanelState {
     pub fn new() -> Self {
-        Self {
-            tasks: task_choices(),
-            ..Self::default()
-        }
+        Self { tasks: task_choices(), ..Self::default() }
     }
 }
 
 /// positioning, sorting, steering, then every other `tasks/*.toml` and
 /// `tasks/cases/*.toml`, as names `scene::load` resolves.
 pub fn task_choices() -> Vec<String> {
-    let mut names: Vec<String> = ["positioning", "sorting", "steering"]
-        .map(String::from)
-        .to_vec();
+    let mut names: Vec<String> = ["positioning", "sorting", "steering"].map(String::from).to_vec();
     let mut found = Vec::new();
-    for root in [
-        PathBuf::from("tasks"),
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("tasks"),
-    ] {
+    for root in [PathBuf::from("tasks"), Path::new(env!("CARGO_MANIFEST_DIR")).join("tasks")] {
         for (sub, prefix) in [(root.clone(), ""), (root.join("cases"), "cases/")] {
             let Ok(dir) = std::fs::read_dir(&sub) else {
                 continue;
@@ -94,30 +86,28 @@ pub fn task_choices() -> Vec<String> {
 /// Draws the panel; returns what must happen after this frame.
 pub fn show(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState) -> Vec<Action> {
     let mut actions = Vec::new();
-    egui::ScrollArea::vertical()
-        .auto_shrink([false, false])
-        .show(ui, |ui| {
-            ui.heading("surfacelab");
-            ui.label(RichText::new(&lab.scene().description).small());
-            if !lab.scene().hint.is_empty() {
-                ui.label(RichText::new(&lab.scene().hint).color(Color32::from_rgb(255, 210, 120)));
-            }
-            ui.separator();
-            task_section(ui, lab, state, &mut actions);
-            ui.separator();
-            view_section(ui, lab);
-            ui.separator();
-            parameters(ui, lab, &mut actions);
-            ui.separator();
-            controls(ui, lab, state, &mut actions);
-            if let Some(status) = lab.status() {
-                ui.label(RichText::new(status).color(Color32::from_rgb(140, 200, 255)));
-            }
-            ui.separator();
-            statistics(ui, lab);
-            ui.separator();
-            help(ui);
-        });
+    egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
+        ui.heading("surfacelab");
+        ui.label(RichText::new(&lab.scene().description).small());
+        if !lab.scene().hint.is_empty() {
+            ui.label(RichText::new(&lab.scene().hint).color(Color32::from_rgb(255, 210, 120)));
+        }
+        ui.separator();
+        task_section(ui, lab, state, &mut actions);
+        ui.separator();
+        view_section(ui, lab);
+        ui.separator();
+        parameters(ui, lab, &mut actions);
+        ui.separator();
+        controls(ui, lab, state, &mut actions);
+        if let Some(status) = lab.status() {
+            ui.label(RichText::new(status).color(Color32::from_rgb(140, 200, 255)));
+        }
+        ui.separator();
+        statistics(ui, lab);
+        ui.separator();
+        help(ui);
+    });
     actions
 }
 
@@ -125,25 +115,19 @@ fn task_section(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, actions: &
     egui::Grid::new("task grid").num_columns(2).show(ui, |ui| {
         ui.label("Task");
         let mut chosen = lab.task.clone();
-        egui::ComboBox::from_id_salt("task")
-            .width(190.0)
-            .selected_text(&lab.task)
-            .show_ui(ui, |ui| {
-                for t in &state.tasks {
-                    ui.selectable_value(&mut chosen, t.clone(), t);
-                }
-            });
+        egui::ComboBox::from_id_salt("task").width(190.0).selected_text(&lab.task).show_ui(ui, |ui| {
+            for t in &state.tasks {
+                ui.selectable_value(&mut chosen, t.clone(), t);
+            }
+        });
         if chosen != lab.task {
             actions.push(Action::LoadTask(chosen));
         }
         ui.end_row();
         ui.label("File");
         ui.horizontal(|ui| {
-            let edit = ui.add(
-                egui::TextEdit::singleline(&mut state.path)
-                    .hint_text("path/to/scene.toml")
-                    .desired_width(140.0),
-            );
+            let edit = ui
+                .add(egui::TextEdit::singleline(&mut state.path).hint_text("path/to/scene.toml").desired_width(140.0));
             let enter = edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
             if (ui.button("Open").clicked() || enter) && !state.path.trim().is_empty() {
                 actions.push(Action::LoadTask(state.path.trim().to_owned()));
@@ -173,21 +157,21 @@ fn view_section(ui: &mut egui::Ui, lab: &mut Lab) {
         ui.label("Left drag puts down");
         let mut mode = lab.input.mouse.mode();
         let name = HAND_MODES.iter().find(|m| m.0 == mode).map_or("?", |m| m.1);
-        egui::ComboBox::from_id_salt("hand mode")
-            .selected_text(name)
-            .show_ui(ui, |ui| {
-                for (i, (kind, label)) in HAND_MODES.iter().enumerate() {
-                    ui.selectable_value(&mut mode, *kind, format!("{} {label}", i + 1));
-                }
-            });
+        egui::ComboBox::from_id_salt("hand mode").selected_text(name).show_ui(ui, |ui| {
+            for (i, (kind, label)) in HAND_MODES.iter().enumerate() {
+                ui.selectable_value(&mut mode, *kind, format!("{} {label}", i + 1));
+            }
+        });
         if mode != lab.input.mouse.mode() {
             lab.input.mouse.handle(MouseEvent::Mode(mode));
         }
     });
     ui.label(
-        RichText::new("Shift flat hand, Ctrl edge, Alt two fingers; wheel turns; right click pins a hand (more below).")
-            .small()
-            .weak(),
+        RichText::new(
+            "Shift flat hand, Ctrl edge, Alt two fingers; wheel turns; right click pins a hand (more below).",
+        )
+        .small()
+        .weak(),
     );
 }
 
@@ -197,13 +181,39 @@ fn parameters(ui: &mut egui::Ui, lab: &mut Lab, actions: &mut Vec<Action>) {
         let c = lab.session.config_mut();
         let stride = c.particle_stride;
         let strong = |on: bool, text: &str| if on { RichText::new(text).strong() } else { RichText::new(text).weak() };
-        ui.add(Slider::new(&mut c.proxy_mass, 0.05..=5.0).logarithmic(true).suffix(" kg").text(strong(kind == TechniqueKind::Proxy, "proxy mass")));
-        ui.add(Slider::new(&mut c.proxy_weight, 0.1..=10.0).logarithmic(true).suffix(" N").text(strong(kind == TechniqueKind::Proxy, "proxy weight")));
-        ui.add(Slider::new(&mut c.friction, 0.0..=3.0).text(strong(matches!(kind, TechniqueKind::Proxy | TechniqueKind::Particle | TechniqueKind::Joint), "finger friction")));
-        ui.add(Slider::new(&mut c.joint_stiffness, 5.0..=1000.0).logarithmic(true).suffix(" N/m").text(strong(kind == TechniqueKind::Joint, "joint stiffness")));
-        ui.add(Slider::new(&mut c.particle_stride, 1..=8).suffix(" px").text(strong(kind == TechniqueKind::Particle, "particle stride")));
+        ui.add(
+            Slider::new(&mut c.proxy_mass, 0.05..=5.0)
+                .logarithmic(true)
+                .suffix(" kg")
+                .text(strong(kind == TechniqueKind::Proxy, "proxy mass")),
+        );
+        ui.add(
+            Slider::new(&mut c.proxy_weight, 0.1..=10.0)
+                .logarithmic(true)
+                .suffix(" N")
+                .text(strong(kind == TechniqueKind::Proxy, "proxy weight")),
+        );
+        ui.add(Slider::new(&mut c.friction, 0.0..=3.0).text(strong(
+            matches!(kind, TechniqueKind::Proxy | TechniqueKind::Particle | TechniqueKind::Joint),
+            "finger friction",
+        )));
+        ui.add(
+            Slider::new(&mut c.joint_stiffness, 5.0..=1000.0)
+                .logarithmic(true)
+                .suffix(" N/m")
+                .text(strong(kind == TechniqueKind::Joint, "joint stiffness")),
+        );
+        ui.add(
+            Slider::new(&mut c.particle_stride, 1..=8)
+                .suffix(" px")
+                .text(strong(kind == TechniqueKind::Particle, "particle stride")),
+        );
         let stride_changed = c.particle_stride != stride;
-        ui.label(RichText::new("Mass, weight and friction apply to new touches; the stride restarts the scene.").small().weak());
+        ui.label(
+            RichText::new("Mass, weight and friction apply to new touches; the stride restarts the scene.")
+                .small()
+                .weak(),
+        );
         if stride_changed {
             actions.push(Action::Restart);
         }
@@ -218,20 +228,10 @@ fn controls(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState, actions: &
         if ui.button("Reset (R)").clicked() {
             actions.push(Action::Reset);
         }
-        if ui
-            .button(if lab.paused {
-                "Resume (space)"
-            } else {
-                "Pause (space)"
-            })
-            .clicked()
-        {
+        if ui.button(if lab.paused { "Resume (space)" } else { "Pause (space)" }).clicked() {
             lab.toggle_pause();
         }
-        if ui
-            .add_enabled(lab.paused, egui::Button::new("Step (N)"))
-            .clicked()
-        {
+        if ui.add_enabled(lab.paused, egui::Button::new("Step (N)")).clicked() {
             lab.request_step();
         }
         if ui.button("Screenshot (S)").clicked() {
@@ -240,17 +240,15 @@ fn controls(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState, actions: &
     });
     ui.horizontal(|ui| {
         if let Some(r) = lab.recording() {
-            let text = RichText::new(format!("Stop recording ({:.1} s)", r.duration()))
-                .color(Color32::from_rgb(255, 90, 90));
+            let text =
+                RichText::new(format!("Stop recording ({:.1} s)", r.duration())).color(Color32::from_rgb(255, 90, 90));
             if ui.button(text).clicked() {
                 actions.push(Action::StopRecording);
             }
         } else {
             if ui.button("Record").clicked() {
                 let path = state.record_path.trim();
-                actions.push(Action::StartRecording(
-                    (!path.is_empty()).then(|| PathBuf::from(path)),
-                ));
+                actions.push(Action::StartRecording((!path.is_empty()).then(|| PathBuf::from(path))));
             }
             ui.add(
                 egui::TextEdit::singleline(&mut state.record_path)
@@ -264,66 +262,47 @@ fn controls(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState, actions: &
 fn statistics(ui: &mut egui::Ui, lab: &Lab) {
     let s = &lab.stats;
     let counts = lab.session.counts();
-    egui::Grid::new("stats")
-        .num_columns(2)
-        .striped(true)
-        .show(ui, |ui| {
-            let mut row = |name: &str, value: String| {
-                ui.label(name);
-                ui.monospace(value);
-                ui.end_row();
-            };
-            row(
-                "frame",
-                format!("{:5.1} ms  {:4.0} fps", s.frame_ms.mean(), s.fps()),
-            );
-            row("render", format!("{:5.1} ms", s.render_ms.mean()));
-            row("physics steps", format!("{:4.2} / frame", s.steps.mean()));
-            row("  rasterize", format!("{:5.2} ms", s.rasterize_ms.mean()));
-            row("  vision", format!("{:5.2} ms", s.vision_ms.mean()));
-            row("  technique", format!("{:5.2} ms", s.technique_ms.mean()));
-            row("  step", format!("{:5.2} ms", s.step_ms.mean()));
-            row("contacts", counts.contacts.to_string());
-            row(
-                match lab.technique() {
-                    TechniqueKind::Particle => "particles",
-                    TechniqueKind::Proxy => "proxies",
-                    TechniqueKind::Joint => "anchors",
-                    TechniqueKind::Direct => "bodies",
-                },
-                counts.bodies.to_string(),
-            );
-            if counts.joints > 0 || lab.technique() == TechniqueKind::Joint {
-                row("joints", counts.joints.to_string());
-            }
-            let limit = lab.scene().time_limit_s;
-            row(
-                "task time",
-                format!("{:5.1} s of {limit:.0}", lab.session.time()),
-            );
-            let progress = progress_line(lab);
-            row(
-                "progress",
-                if progress.is_empty() {
-                    "-".into()
-                } else {
-                    progress
-                },
-            );
-            if lab.behind_s() > 0.05 {
-                row("behind real time", format!("{:.1} s", lab.behind_s()));
-            }
-            if let Some(tuio) = &lab.input.tuio {
-                let t = tuio.stats();
-                let (cursors, blobs) = tuio.live_counts();
-                row("TUIO", format!("{}", tuio.local_addr()));
-                row("  live", format!("{cursors} cursors, {blobs} blobs"));
-                row(
-                    "  packets",
-                    format!("{} ({} malformed)", t.packets, t.malformed),
-                );
-            }
-        });
+    egui::Grid::new("stats").num_columns(2).striped(true).show(ui, |ui| {
+        let mut row = |name: &str, value: String| {
+            ui.label(name);
+            ui.monospace(value);
+            ui.end_row();
+        };
+        row("frame", format!("{:5.1} ms  {:4.0} fps", s.frame_ms.mean(), s.fps()));
+        row("render", format!("{:5.1} ms", s.render_ms.mean()));
+        row("physics steps", format!("{:4.2} / frame", s.steps.mean()));
+        row("  rasterize", format!("{:5.2} ms", s.rasterize_ms.mean()));
+        row("  vision", format!("{:5.2} ms", s.vision_ms.mean()));
+        row("  technique", format!("{:5.2} ms", s.technique_ms.mean()));
+        row("  step", format!("{:5.2} ms", s.step_ms.mean()));
+        row("contacts", counts.contacts.to_string());
+        row(
+            match lab.technique() {
+                TechniqueKind::Particle => "particles",
+                TechniqueKind::Proxy => "proxies",
+                TechniqueKind::Joint => "anchors",
+                TechniqueKind::Direct => "bodies",
+            },
+            counts.bodies.to_string(),
+        );
+        if counts.joints > 0 || lab.technique() == TechniqueKind::Joint {
+            row("joints", counts.joints.to_string());
+        }
+        let limit = lab.scene().time_limit_s;
+        row("task time", format!("{:5.1} s of {limit:.0}", lab.session.time()));
+        let progress = progress_line(lab);
+        row("progress", if progress.is_empty() { "-".into() } else { progress });
+        if lab.behind_s() > 0.05 {
+            row("behind real time", format!("{:.1} s", lab.behind_s()));
+        }
+        if let Some(tuio) = &lab.input.tuio {
+            let t = tuio.stats();
+            let (cursors, blobs) = tuio.live_counts();
+            row("TUIO", format!("{}", tuio.local_addr()));
+            row("  live", format!("{cursors} cursors, {blobs} blobs"));
+            row("  packets", format!("{} ({} malformed)", t.packets, t.malformed));
+        }
+    });
 }
 
 fn help(ui: &mut egui::Ui) {

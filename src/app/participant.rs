@@ -70,20 +70,11 @@ impl Trials {
             std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
         }
         let technique: Technique = options.technique.name().parse()?;
-        let recovered =
-            recover_trials(path).with_context(|| format!("reading {}", path.display()))?;
-        let mine = recovered
-            .rows
-            .iter()
-            .filter(|r| r.participant == options.id);
+        let recovered = recover_trials(path).with_context(|| format!("reading {}", path.display()))?;
+        let mine = recovered.rows.iter().filter(|r| r.participant == options.id);
         let next_order = mine.clone().count() as u32;
         let next_repetition = 1 + mine
-            .filter(|r| {
-                !r.practice
-                    && r.task == task
-                    && r.technique == technique
-                    && r.feedback == options.feedback
-            })
+            .filter(|r| !r.practice && r.task == task && r.technique == technique && r.feedback == options.feedback)
             .map(|r| r.repetition)
             .max()
             .unwrap_or(0);
@@ -121,44 +112,31 @@ impl Trials {
         let spec = self.spec();
         let fb = if spec.feedback { "on" } else { "off" };
         let task = super::record::task_stem(&spec.task);
-        Some(dir.join(format!("p{}", spec.participant)).join(format!(
-            "{task}_{}_{fb}_r{}.toml",
-            spec.technique, spec.repetition
-        )))
+        Some(
+            dir.join(format!("p{}", spec.participant))
+                .join(format!("{task}_{}_{fb}_r{}.toml", spec.technique, spec.repetition)),
+        )
     }
 
     /// Writes the row of the trial that just ended and moves the numbering on.
     pub fn finish(&mut self, result: &TrialResult, wall_s: f64) -> anyhow::Result<()> {
         let row = TrialRow::new(&self.spec(), result);
-        self.writer
-            .append(&row)
-            .with_context(|| format!("appending to {}", self.options.trials_csv.display()))?;
+        self.writer.append(&row).with_context(|| format!("appending to {}", self.options.trials_csv.display()))?;
         self.done += 1;
         self.next_order += 1;
         self.next_repetition += 1;
-        self.phase = Phase::Finished {
-            completed: result.completed,
-            time_s: result.completion_time_s,
-            at: wall_s,
-        };
+        self.phase = Phase::Finished { completed: result.completed, time_s: result.completion_time_s, at: wall_s };
         Ok(())
     }
 
     /// After the pause: the next trial, or done.
     pub fn next(&mut self) {
-        self.phase = if self.done >= self.options.repetitions {
-            Phase::Done
-        } else {
-            Phase::Ready
-        };
+        self.phase = if self.done >= self.options.repetitions { Phase::Done } else { Phase::Ready };
     }
 
     /// Trial number (1-based) in this sitting, and how many there are.
     pub fn position(&self) -> (u32, u32) {
-        (
-            (self.done + 1).min(self.options.repetitions),
-            self.options.repetitions,
-        )
+        ((self.done + 1).min(self.options.repetitions), self.options.repetitions)
     }
 
     pub fn trials_csv(&self) -> &Path {
@@ -173,8 +151,7 @@ mod tests {
 
     #[test]
     fn rows_continue_the_numbering_of_the_file() {
-        let dir =
-            std::env::temp_dir().join(format!("surfacelab-participant-{}", std::process::id()));
+        let dir = std::env::temp_dir().join(format!("surfacelab-participant-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         let options = ParticipantOptions {
             id: 3,
@@ -184,41 +161,20 @@ mod tests {
             trials_csv: dir.join("trials.csv"),
             gestures: Some(dir.join("gestures")),
         };
-        let result = TrialResult {
-            completion_time_s: 12.5,
-            completed: true,
-            restarts: 0,
-            objects_placed: 8,
-            steps: 750,
-        };
+        let result =
+            TrialResult { completion_time_s: 12.5, completed: true, restarts: 0, objects_placed: 8, steps: 750 };
         let mut t = Trials::open(options.clone(), "positioning").expect("opens");
-        assert_eq!(
-            t.gesture_path().expect("set"),
-            dir.join("gestures/p3/positioning_proxy_on_r1.toml")
-        );
+        assert_eq!(t.gesture_path().expect("set"), dir.join("gestures/p3/positioning_proxy_on_r1.toml"));
         t.finish(&result, 1.0).expect("writes");
         t.next();
         assert_eq!(t.phase, Phase::Ready);
-        t.finish(
-            &TrialResult {
-                completed: false,
-                ..result.clone()
-            },
-            2.0,
-        )
-        .expect("writes");
+        t.finish(&TrialResult { completed: false, ..result.clone() }, 2.0).expect("writes");
         t.next();
         assert_eq!(t.phase, Phase::Done);
         drop(t);
         // A second sitting, another condition, then the same one again.
-        let mut t = Trials::open(
-            ParticipantOptions {
-                feedback: false,
-                ..options.clone()
-            },
-            "positioning",
-        )
-        .expect("opens");
+        let mut t =
+            Trials::open(ParticipantOptions { feedback: false, ..options.clone() }, "positioning").expect("opens");
         assert_eq!((t.spec().order_index, t.spec().repetition), (2, 1));
         t.finish(&result, 1.0).expect("writes");
         drop(t);

@@ -18,11 +18,7 @@ pub struct Recording {
 
 impl Recording {
     pub fn new(path: PathBuf) -> Self {
-        Self {
-            recorder: GestureRecorder::new(),
-            path,
-            span: None,
-        }
+        Self { recorder: GestureRecorder::new(), path, span: None }
     }
 
     pub fn path(&self) -> &Path {
@@ -55,16 +51,12 @@ impl Recording {
 
 /// The short name of a task given as a name or a path (`tasks/cases/ball.toml` → `ball`).
 pub fn task_stem(task: &str) -> String {
-    Path::new(task)
-        .file_stem()
-        .map_or_else(|| task.to_owned(), |s| s.to_string_lossy().into_owned())
+    Path::new(task).file_stem().map_or_else(|| task.to_owned(), |s| s.to_string_lossy().into_owned())
 }
 
 /// `dir/<task>_<YYYYmmdd-HHMMSS>.<ext>` (UTC) for a file made now.
 pub fn timestamped(dir: &Path, task: &str, ext: &str) -> PathBuf {
-    let secs = SystemTime::now()
-        .duration_since(UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
+    let secs = SystemTime::now().duration_since(UNIX_EPOCH).map_or(0, |d| d.as_secs());
     dir.join(format!("{}_{}.{ext}", task_stem(task), timestamp(secs)))
 }
 
@@ -81,12 +73,7 @@ pub fn timestamp(unix_secs: u64) -> String {
     let day = doy - (153 * mp + 2) / 5 + 1;
     let month = if mp < 10 { mp + 3 } else { mp - 9 };
     let year = yoe + era * 400 + i64::from(month <= 2);
-    format!(
-        "{year:04}{month:02}{day:02}-{:02}{:02}{:02}",
-        rem / 3600,
-        rem % 3600 / 60,
-        rem % 60
-    )
+    format!("{year:04}{month:02}{day:02}-{:02}{:02}{:02}", rem / 3600, rem % 3600 / 60, rem % 60)
 }
 
 #[cfg(test)]

@@ -26,9 +26,7 @@ pub struct TuioListener {
 
 impl std::fmt::Debug for TuioListener {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("TuioListener")
-            .field("addr", &self.addr)
-            .finish_non_exhaustive()
+        f.debug_struct("TuioListener").field("addr", &self.addr).finish_non_exhaustive()
     }
 }
 
@@ -44,17 +42,9 @@ impl TuioListener {
         let start = Instant::now();
         let thread = {
             let (state, stop) = (Arc::clone(&state), Arc::clone(&stop));
-            std::thread::Builder::new()
-                .name("tuio".into())
-                .spawn(move || read_loop(&socket, &state, &stop, start))?
+            std::thread::Builder::new().name("tuio".into()).spawn(move || read_loop(&socket, &state, &stop, start))?
         };
-        Ok(Self {
-            addr,
-            state,
-            stop,
-            thread: Some(thread),
-            start,
-        })
+        Ok(Self { addr, state, stop, thread: Some(thread), start })
     }
 
     pub fn local_addr(&self) -> SocketAddr {
@@ -98,19 +88,12 @@ fn read_loop(socket: &UdpSocket, state: &Mutex<TuioState>, stop: &AtomicBool, st
         match socket.recv_from(&mut buf) {
             Ok((n, from)) => {
                 let now = start.elapsed().as_secs_f64();
-                let result = state
-                    .lock()
-                    .unwrap_or_else(PoisonError::into_inner)
-                    .receive(&buf[..n], now);
+                let result = state.lock().unwrap_or_else(PoisonError::into_inner).receive(&buf[..n], now);
                 if let Err(e) = result {
                     tracing::debug!("TUIO packet from {from} ignored: {e}");
                 }
             }
-            Err(e)
-                if matches!(
-                    e.kind(),
-                    std::io::ErrorKind::WouldBlock | std::io::ErrorKind::TimedOut
-                ) => {}
+            Err(e) if matches!(e.kind(), std::io::ErrorKind::WouldBlock | std::io::ErrorKind::TimedOut) => {}
             Err(e) => {
                 // E.g. ICMP port unreachable echoes; never spin on them.
                 tracing::debug!("TUIO socket: {e}");

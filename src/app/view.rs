@@ -29,19 +29,12 @@ pub struct ViewFrame<'a> {
 pub fn show(ui: &egui::Ui, rect: Rect, lab: &Lab, frame: ViewFrame<'_>) -> Rect {
     let painter = ui.painter_at(rect);
     if let Some(texture) = frame.texture {
-        painter.image(
-            texture,
-            rect,
-            Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)),
-            Color32::WHITE,
-        );
+        painter.image(texture, rect, Rect::from_min_max(Pos2::ZERO, Pos2::new(1.0, 1.0)), Color32::WHITE);
     }
     if let Some((camera, size)) = frame.camera {
         let ppp = ui.ctx().pixels_per_point();
         let project = |p: [f32; 2]| {
-            camera
-                .world_to_pixel(size, Vec3::new(p[0], p[1], 0.0))
-                .map(|px| rect.min + Vec2::new(px.x, px.y) / ppp)
+            camera.world_to_pixel(size, Vec3::new(p[0], p[1], 0.0)).map(|px| rect.min + Vec2::new(px.x, px.y) / ppp)
         };
         let hands = lab.input.hands(lab.session.time(), lab.table());
         // Dark lines: the tables are light.
@@ -60,11 +53,7 @@ pub fn show(ui: &egui::Ui, rect: Rect, lab: &Lab, frame: ViewFrame<'_>) -> Rect 
     let mut banner = Vec::new();
     if let Some(trials) = &lab.participant {
         let (n, of) = trials.position();
-        let condition = format!(
-            "{}, feedback {}",
-            lab.technique(),
-            if trials.options.feedback { "on" } else { "off" }
-        );
+        let condition = format!("{}, feedback {}", lab.technique(), if trials.options.feedback { "on" } else { "off" });
         match trials.phase {
             Phase::Ready => {
                 banner.push(format!("Trial {n} of {of} ({condition})"));
@@ -73,22 +62,10 @@ pub fn show(ui: &egui::Ui, rect: Rect, lab: &Lab, frame: ViewFrame<'_>) -> Rect 
             }
             Phase::Running => {
                 let left = f64::from(lab.scene().time_limit_s) - lab.session.time();
-                banner.push(format!(
-                    "Trial {n} of {of}   {}   {:.0} s left",
-                    progress_line(lab),
-                    left.max(0.0)
-                ));
+                banner.push(format!("Trial {n} of {of}   {}   {:.0} s left", progress_line(lab), left.max(0.0)));
             }
-            Phase::Finished {
-                completed,
-                time_s,
-                at,
-            } => {
-                banner.push(if completed {
-                    format!("Done in {time_s:.1} s.")
-                } else {
-                    "Time is up.".to_owned()
-                });
+            Phase::Finished { completed, time_s, at } => {
+                banner.push(if completed { format!("Done in {time_s:.1} s.") } else { "Time is up.".to_owned() });
                 let wait = (BETWEEN_TRIALS_S - (lab.wall - at)).max(0.0);
                 banner.push(if trials.done >= trials.options.repetitions {
                     "That was the last trial. Thank you!".to_owned()
@@ -134,10 +111,8 @@ pub fn progress_line(lab: &Lab) -> String {
 
 fn draw_banner(painter: &egui::Painter, rect: Rect, lines: &[String]) {
     let font = FontId::proportional(18.0);
-    let galleys: Vec<_> = lines
-        .iter()
-        .map(|l| painter.layout_no_wrap(l.clone(), font.clone(), Color32::WHITE))
-        .collect();
+    let galleys: Vec<_> =
+        lines.iter().map(|l| painter.layout_no_wrap(l.clone(), font.clone(), Color32::WHITE)).collect();
     let width = galleys.iter().map(|g| g.size().x).fold(0.0, f32::max) + 32.0;
     let height = galleys.iter().map(|g| g.size().y + 4.0).sum::<f32>() + 16.0;
     let bg = Rect::from_center_size(
@@ -148,21 +123,12 @@ fn draw_banner(painter: &egui::Painter, rect: Rect, lines: &[String]) {
     let mut y = bg.top() + 8.0;
     for g in galleys {
         let h = g.size().y;
-        painter.galley(
-            Pos2::new(bg.center().x - g.size().x / 2.0, y),
-            g,
-            Color32::WHITE,
-        );
+        painter.galley(Pos2::new(bg.center().x - g.size().x / 2.0, y), g, Color32::WHITE);
         y += h + 4.0;
     }
 }
 
-fn outline_hand(
-    painter: &egui::Painter,
-    hand: &Hand,
-    project: &impl Fn([f32; 2]) -> Option<Pos2>,
-    stroke: Stroke,
-) {
+fn outline_hand(painter: &egui::Painter, hand: &Hand, project: &impl Fn([f32; 2]) -> Option<Pos2>, stroke: Stroke) {
     for patch in hand.patches() {
         for ring in outline(&patch.shape) {
             let points: Option<Vec<Pos2>> = ring.into_iter().map(project).collect();
@@ -187,11 +153,7 @@ pub fn outline(shape: &Shape) -> Vec<Vec<[f32; 2]>> {
         }
     };
     match *shape {
-        Shape::Ellipse {
-            centre,
-            radii,
-            angle,
-        } => vec![
+        Shape::Ellipse { centre, radii, angle } => vec![
             (0..SEGMENTS)
                 .map(|i| {
                     let t = TAU * i as f32 / SEGMENTS as f32;
@@ -201,45 +163,22 @@ pub fn outline(shape: &Shape) -> Vec<Vec<[f32; 2]>> {
         ],
         Shape::Capsule { a, b, radius } => {
             let d = [b[0] - a[0], b[1] - a[1]];
-            let heading = if d[0].hypot(d[1]) > 1e-9 {
-                d[1].atan2(d[0])
-            } else {
-                FRAC_PI_2
-            };
+            let heading = if d[0].hypot(d[1]) > 1e-9 { d[1].atan2(d[0]) } else { FRAC_PI_2 };
             let mut out = Vec::with_capacity(SEGMENTS + 2);
             arc(&mut out, b, radius, heading - FRAC_PI_2, PI, SEGMENTS / 2);
             arc(&mut out, a, radius, heading + FRAC_PI_2, PI, SEGMENTS / 2);
             vec![out]
         }
-        Shape::RoundedRect {
-            centre,
-            half,
-            angle,
-            corner,
-        } => {
+        Shape::RoundedRect { centre, half, angle, corner } => {
             let c = corner.clamp(0.0, half[0].min(half[1]));
             let inner = [half[0] - c, half[1] - c];
             let mut local = Vec::with_capacity(SEGMENTS + 4);
-            for (k, (sx, sy)) in [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)]
-                .into_iter()
-                .enumerate()
-            {
-                arc(
-                    &mut local,
-                    [sx * inner[0], sy * inner[1]],
-                    c,
-                    k as f32 * FRAC_PI_2,
-                    FRAC_PI_2,
-                    SEGMENTS / 4,
-                );
+            for (k, (sx, sy)) in [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)].into_iter().enumerate() {
+                arc(&mut local, [sx * inner[0], sy * inner[1]], c, k as f32 * FRAC_PI_2, FRAC_PI_2, SEGMENTS / 4);
             }
             vec![local.into_iter().map(|p| rot(p, angle, centre)).collect()]
         }
-        Shape::Ring {
-            centre,
-            radius,
-            half_width,
-        } => [radius + half_width, radius - half_width]
+        Shape::Ring { centre, radius, half_width } => [radius + half_width, radius - half_width]
             .into_iter()
             .filter(|r| *r > 0.0)
             .map(|r| {
@@ -259,37 +198,16 @@ mod tests {
     #[test]
     fn outlines_lie_on_the_boundary() {
         let shapes = [
-            Shape::Ellipse {
-                centre: [0.1, 0.2],
-                radii: [0.02, 0.01],
-                angle: 0.7,
-            },
-            Shape::Capsule {
-                a: [0.0, 0.0],
-                b: [0.05, 0.03],
-                radius: 0.01,
-            },
-            Shape::RoundedRect {
-                centre: [-0.1, 0.0],
-                half: [0.04, 0.02],
-                angle: -0.4,
-                corner: 0.005,
-            },
-            Shape::Ring {
-                centre: [0.0, 0.0],
-                radius: 0.035,
-                half_width: 0.003,
-            },
+            Shape::Ellipse { centre: [0.1, 0.2], radii: [0.02, 0.01], angle: 0.7 },
+            Shape::Capsule { a: [0.0, 0.0], b: [0.05, 0.03], radius: 0.01 },
+            Shape::RoundedRect { centre: [-0.1, 0.0], half: [0.04, 0.02], angle: -0.4, corner: 0.005 },
+            Shape::Ring { centre: [0.0, 0.0], radius: 0.035, half_width: 0.003 },
         ];
         for s in shapes {
             let rings = outline(&s);
             assert!(!rings.is_empty());
             for p in rings.into_iter().flatten() {
-                assert!(
-                    s.distance(p).abs() < 2e-4,
-                    "{s:?} at {p:?}: {}",
-                    s.distance(p)
-                );
+                assert!(s.distance(p).abs() < 2e-4, "{s:?} at {p:?}: {}", s.distance(p));
             }
         }
     }

@@ -10,8 +10,7 @@ use super::panel::{self, Action, HAND_MODES, PanelState};
 use super::view::{self, ViewFrame};
 use super::{DemoOptions, Screenshot};
 use crate::render::{
-    GpuContext, Renderer, RendererOptions, preferred_surface_format, request_adapter,
-    request_device, save_png,
+    GpuContext, Renderer, RendererOptions, preferred_surface_format, request_adapter, request_device, save_png,
 };
 use crate::surface::{Button, Modifiers, MouseEvent};
 use anyhow::{Context, anyhow, bail};
@@ -32,27 +31,19 @@ const PIXELS_PER_NOTCH: f64 = 40.0;
 /// last participant trial).
 pub fn run(options: DemoOptions) -> anyhow::Result<()> {
     let lab = Lab::new(&options)?;
-    let display = std::env::var("WAYLAND_DISPLAY")
-        .or_else(|_| std::env::var("DISPLAY"))
-        .unwrap_or_default();
+    let display = std::env::var("WAYLAND_DISPLAY").or_else(|_| std::env::var("DISPLAY")).unwrap_or_default();
     let event_loop = EventLoop::new().map_err(|e| {
         anyhow!("cannot open a window on display {display:?}: {e}; unset DISPLAY and WAYLAND_DISPLAY to run the headless job instead")
     })?;
     let mut app = App::new(options, lab);
-    event_loop
-        .run_app(&mut app)
-        .context("the window's event loop failed")?;
+    event_loop.run_app(&mut app).context("the window's event loop failed")?;
     if app.lab.participant.is_some() {
         // A trial cut short has no row; its input is not kept either.
         app.lab.discard_recording();
     } else {
         app.lab.stop_recording();
     }
-    eprintln!(
-        "surfacelab demo: {}; physics {:.1} s behind real time",
-        app.lab.stats.summary(),
-        app.lab.behind_s()
-    );
+    eprintln!("surfacelab demo: {}; physics {:.1} s behind real time", app.lab.stats.summary(), app.lab.behind_s());
     app.error.map_or(Ok(()), Err)
 }
 
@@ -117,20 +108,10 @@ impl ViewTarget {
         [self.texture.width(), self.texture.height()]
     }
 
-    fn resize(
-        &mut self,
-        device: &wgpu::Device,
-        egui_renderer: &mut egui_wgpu::Renderer,
-        size: [u32; 2],
-    ) {
+    fn resize(&mut self, device: &wgpu::Device, egui_renderer: &mut egui_wgpu::Renderer, size: [u32; 2]) {
         if self.size() != size {
             (self.texture, self.view) = view_texture(device, self.texture.format(), size);
-            egui_renderer.update_egui_texture_from_wgpu_texture(
-                device,
-                &self.view,
-                wgpu::FilterMode::Nearest,
-                self.id,
-            );
+            egui_renderer.update_egui_texture_from_wgpu_texture(device, &self.view, wgpu::FilterMode::Nearest, self.id);
         }
     }
 }
@@ -142,11 +123,7 @@ fn view_texture(
 ) -> (wgpu::Texture, wgpu::TextureView) {
     let texture = device.create_texture(&wgpu::TextureDescriptor {
         label: Some("table view"),
-        size: wgpu::Extent3d {
-            width: size[0],
-            height: size[1],
-            depth_or_array_layers: 1,
-        },
+        size: wgpu::Extent3d { width: size[0], height: size[1], depth_or_array_layers: 1 },
         mip_level_count: 1,
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
@@ -156,10 +133,7 @@ fn view_texture(
             | wgpu::TextureUsages::COPY_SRC,
         view_formats: &[],
     });
-    let view = texture.create_view(&wgpu::TextureViewDescriptor {
-        label: Some("table view"),
-        ..Default::default()
-    });
+    let view = texture.create_view(&wgpu::TextureViewDescriptor { label: Some("table view"), ..Default::default() });
     (texture, view)
 }
 
@@ -192,10 +166,7 @@ impl App {
     fn table_point(&self, p: PhysicalPosition<f64>) -> Option<[f32; 2]> {
         let gfx = self.gfx.as_ref()?;
         let camera = gfx.renderer.camera()?;
-        let local = Vec2::new(
-            p.x as f32 - self.view_px.min.x,
-            p.y as f32 - self.view_px.min.y,
-        );
+        let local = Vec2::new(p.x as f32 - self.view_px.min.x, p.y as f32 - self.view_px.min.y);
         let hit = camera.pixel_to_plane(gfx.target.size(), local, 0.0)?;
         Some([hit.x, hit.y])
     }
@@ -203,10 +174,7 @@ impl App {
     /// Whether a pointer event at `p` belongs to the table (not to egui).
     fn on_view(&self, p: PhysicalPosition<f64>) -> bool {
         let over = self.view_px.contains(egui::pos2(p.x as f32, p.y as f32));
-        over && self
-            .gfx
-            .as_ref()
-            .is_some_and(|g| !g.egui.egui_wants_pointer_input())
+        over && self.gfx.as_ref().is_some_and(|g| !g.egui.egui_wants_pointer_input())
     }
 
     fn mouse(&mut self, e: MouseEvent) {
@@ -251,9 +219,7 @@ impl App {
                     }
                 }
             }
-            WindowEvent::MouseWheel { delta, .. }
-                if self.cursor.is_some_and(|c| self.on_view(c)) || self.dragging =>
-            {
+            WindowEvent::MouseWheel { delta, .. } if self.cursor.is_some_and(|c| self.on_view(c)) || self.dragging => {
                 let notches = match delta {
                     MouseScrollDelta::LineDelta(_, y) => y,
                     MouseScrollDelta::PixelDelta(p) => (p.y / PIXELS_PER_NOTCH) as f32,
@@ -312,11 +278,7 @@ impl App {
                     None
                 }
                 digit => {
-                    if let Some(i) = digit
-                        .parse::<usize>()
-                        .ok()
-                        .filter(|d| (1..=HAND_MODES.len()).contains(d))
-                    {
+                    if let Some(i) = digit.parse::<usize>().ok().filter(|d| (1..=HAND_MODES.len()).contains(d)) {
                         self.mouse(MouseEvent::Mode(HAND_MODES[i - 1].0));
                     }
                     None
@@ -397,18 +359,11 @@ impl App {
             let rect = ui.available_rect_before_wrap();
             view_rect = view::show(ui, rect, lab, frame_info);
         });
-        gfx.egui_state
-            .handle_platform_output(&gfx.window, full.platform_output);
+        gfx.egui_state.handle_platform_output(&gfx.window, full.platform_output);
         let ppp = full.pixels_per_point;
-        let (min, max) = (
-            (view_rect.min.to_vec2() * ppp).round(),
-            (view_rect.max.to_vec2() * ppp).round(),
-        );
+        let (min, max) = ((view_rect.min.to_vec2() * ppp).round(), (view_rect.max.to_vec2() * ppp).round());
         self.view_px = egui::Rect::from_min_max(min.to_pos2(), max.to_pos2());
-        let size = [
-            (max.x - min.x).max(1.0) as u32,
-            (max.y - min.y).max(1.0) as u32,
-        ];
+        let size = [(max.x - min.x).max(1.0) as u32, (max.y - min.y).max(1.0) as u32];
         let device = gfx.gpu.device.clone();
         let queue = gfx.gpu.queue.clone();
         gfx.target.resize(&device, &mut gfx.egui_renderer, size);
@@ -428,38 +383,33 @@ impl App {
                 bail!("the window surface reported a validation error")
             }
         };
-        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor {
-            label: Some("frame"),
-        });
+        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
         gfx.renderer.paint(&mut encoder, &gfx.target.view);
         let primitives = gfx.egui.tessellate(full.shapes, ppp);
         for (id, deltas) in &full.textures_delta.set {
             for delta in deltas {
-                gfx.egui_renderer
-                    .update_texture(&device, &queue, *id, delta);
+                gfx.egui_renderer.update_texture(&device, &queue, *id, delta);
             }
         }
         let screen = egui_wgpu::ScreenDescriptor {
             size_in_pixels: [gfx.config.width, gfx.config.height],
             pixels_per_point: ppp,
         };
-        let mut commands =
-            gfx.egui_renderer
-                .update_buffers(&device, &queue, &mut encoder, &primitives, &screen);
+        let mut commands = gfx.egui_renderer.update_buffers(&device, &queue, &mut encoder, &primitives, &screen);
         let at = [min.x as u32, min.y as u32];
         compose(gfx, &mut encoder, &frame.texture, at, &primitives, &screen);
 
         // `--screenshot-after`: this very frame, read back.
         let capture = match &self.screenshot {
-            Some(s) if self.lab.wall >= s.after_s => Some(
-                if gfx.config.usage.contains(wgpu::TextureUsages::COPY_SRC) {
+            Some(s) if self.lab.wall >= s.after_s => {
+                Some(if gfx.config.usage.contains(wgpu::TextureUsages::COPY_SRC) {
                     Readback::record(&device, &mut encoder, &frame.texture)
                 } else {
                     let twin = twin_texture(&device, &gfx.config);
                     compose(gfx, &mut encoder, &twin, at, &primitives, &screen);
                     Readback::record(&device, &mut encoder, &twin)
-                },
-            ),
+                })
+            }
             _ => None,
         };
         commands.push(encoder.finish());
@@ -477,11 +427,7 @@ impl App {
         for id in &full.textures_delta.free {
             gfx.egui_renderer.free_texture(id);
         }
-        self.lab.stats.push_frame(
-            elapsed * 1000.0,
-            render_start.elapsed().as_secs_f64() * 1000.0,
-            steps,
-        );
+        self.lab.stats.push_frame(elapsed * 1000.0, render_start.elapsed().as_secs_f64() * 1000.0, steps);
 
         if let Some(readback) = capture
             && let Some(shot) = self.screenshot.take()
@@ -509,21 +455,13 @@ impl App {
     fn create_gfx(&mut self, event_loop: &ActiveEventLoop) -> anyhow::Result<Gfx> {
         let [w, h] = self.options.window_size;
         let title = window_title(&self.lab);
-        let attributes = Window::default_attributes()
-            .with_title(title.clone())
-            .with_inner_size(LogicalSize::new(w, h));
-        let window = Arc::new(
-            event_loop
-                .create_window(attributes)
-                .context("cannot create the demo window")?,
-        );
-        let instance =
-            wgpu::Instance::new(wgpu::InstanceDescriptor::new_with_display_handle_from_env(
-                Box::new(event_loop.owned_display_handle()),
-            ));
-        let surface = instance
-            .create_surface(Arc::clone(&window))
-            .context("cannot create a GPU surface for the window")?;
+        let attributes = Window::default_attributes().with_title(title.clone()).with_inner_size(LogicalSize::new(w, h));
+        let window = Arc::new(event_loop.create_window(attributes).context("cannot create the demo window")?);
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_with_display_handle_from_env(Box::new(
+            event_loop.owned_display_handle(),
+        )));
+        let surface =
+            instance.create_surface(Arc::clone(&window)).context("cannot create a GPU surface for the window")?;
         let adapter = pollster::block_on(request_adapter(&instance, Some(&surface)))?;
         let (device, queue) = pollster::block_on(request_device(&adapter))?;
         let gpu = GpuContext::from_parts(instance, adapter, device, queue);
@@ -531,12 +469,11 @@ impl App {
         let caps = surface.get_capabilities(&gpu.adapter);
         // egui draws in sRGB-encoded values: a plain 8-bit surface needs no
         // per-pixel conversion (on lavapipe the conversion cost ~40 ms a frame).
-        let plain = caps.formats.iter().copied().find(|f| {
-            matches!(
-                f,
-                wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Rgba8Unorm
-            )
-        });
+        let plain = caps
+            .formats
+            .iter()
+            .copied()
+            .find(|f| matches!(f, wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Rgba8Unorm));
         let format = plain
             .or_else(|| preferred_surface_format(&caps.formats))
             .ok_or_else(|| anyhow!("the adapter {summary} cannot present to this window"))?;
@@ -544,8 +481,7 @@ impl App {
         // Copies into the surface put the table view in place without egui;
         // copies out of it let `--screenshot-after` read the real frame.
         let direct = caps.usages.contains(wgpu::TextureUsages::COPY_DST);
-        let mut usage =
-            wgpu::TextureUsages::RENDER_ATTACHMENT | (caps.usages & wgpu::TextureUsages::COPY_DST);
+        let mut usage = wgpu::TextureUsages::RENDER_ATTACHMENT | (caps.usages & wgpu::TextureUsages::COPY_DST);
         if readable(format) {
             usage |= caps.usages & wgpu::TextureUsages::COPY_SRC;
         }
@@ -557,77 +493,35 @@ impl App {
             height: size.height.max(1),
             present_mode: wgpu::PresentMode::AutoVsync,
             desired_maximum_frame_latency: 2,
-            alpha_mode: caps
-                .alpha_modes
-                .first()
-                .copied()
-                .unwrap_or(wgpu::CompositeAlphaMode::Auto),
+            alpha_mode: caps.alpha_modes.first().copied().unwrap_or(wgpu::CompositeAlphaMode::Auto),
             view_formats: vec![],
         };
         surface.configure(&gpu.device, &config);
         let scale = window.scale_factor() as f32;
-        let options = RendererOptions {
-            feedback_line_px: 3.0 * scale,
-            ..RendererOptions::for_adapter(&summary)
-        };
+        let options = RendererOptions { feedback_line_px: 3.0 * scale, ..RendererOptions::for_adapter(&summary) };
         let view_format = format.remove_srgb_suffix();
         let renderer = Renderer::new(&gpu.device, &gpu.queue, view_format, options)?;
         let egui = egui::Context::default();
         egui.set_theme(egui::Theme::Dark);
         let max_side = gpu.device.limits().max_texture_dimension_2d as usize;
-        let egui_state = egui_winit::State::new(
-            egui.clone(),
-            egui::ViewportId::ROOT,
-            &window,
-            Some(scale),
-            None,
-            Some(max_side),
-        );
+        let egui_state =
+            egui_winit::State::new(egui.clone(), egui::ViewportId::ROOT, &window, Some(scale), None, Some(max_side));
         let mut egui_renderer = egui_wgpu::Renderer::new(
             &gpu.device,
             format,
             // No dithering: exact colours, so screenshots can be checked pixel by pixel.
-            egui_wgpu::RendererOptions {
-                dithering: false,
-                ..egui_wgpu::RendererOptions::default()
-            },
+            egui_wgpu::RendererOptions { dithering: false, ..egui_wgpu::RendererOptions::default() },
         );
-        let target = ViewTarget::new(
-            &gpu.device,
-            &mut egui_renderer,
-            view_format,
-            [size.width.max(1), size.height.max(1)],
-        );
-        if let Some(hz) = window
-            .current_monitor()
-            .and_then(|m| m.refresh_rate_millihertz())
-            .filter(|&mhz| mhz >= 10_000)
+        let target =
+            ViewTarget::new(&gpu.device, &mut egui_renderer, view_format, [size.width.max(1), size.height.max(1)]);
+        if let Some(hz) =
+            window.current_monitor().and_then(|m| m.refresh_rate_millihertz()).filter(|&mhz| mhz >= 10_000)
         {
             self.period = Duration::from_secs_f64(1000.0 / f64::from(hz));
         }
-        tracing::info!(
-            "demo window on {summary}, surface {format:?} {usage:?}, {:?} per frame",
-            self.period
-        );
-        eprintln!(
-            "surfacelab demo: {} with {} on {}",
-            self.lab.task,
-            self.lab.technique(),
-            summary
-        );
-        Ok(Gfx {
-            window,
-            title,
-            surface,
-            config,
-            gpu,
-            renderer,
-            target,
-            direct,
-            egui,
-            egui_state,
-            egui_renderer,
-        })
+        tracing::info!("demo window on {summary}, surface {format:?} {usage:?}, {:?} per frame", self.period);
+        eprintln!("surfacelab demo: {} with {} on {}", self.lab.task, self.lab.technique(), summary);
+        Ok(Gfx { window, title, surface, config, gpu, renderer, target, direct, egui, egui_state, egui_renderer })
     }
 }
 
@@ -659,31 +553,15 @@ fn compose(
                 wgpu::TexelCopyTextureInfo {
                     texture: target,
                     mip_level: 0,
-                    origin: wgpu::Origin3d {
-                        x: at[0],
-                        y: at[1],
-                        z: 0,
-                    },
+                    origin: wgpu::Origin3d { x: at[0], y: at[1], z: 0 },
                     aspect: wgpu::TextureAspect::All,
                 },
-                wgpu::Extent3d {
-                    width,
-                    height,
-                    depth_or_array_layers: 1,
-                },
+                wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
             );
         }
-        gfx.egui_renderer.render(
-            &mut pass(encoder, &view, wgpu::LoadOp::Load).forget_lifetime(),
-            primitives,
-            screen,
-        );
+        gfx.egui_renderer.render(&mut pass(encoder, &view, wgpu::LoadOp::Load).forget_lifetime(), primitives, screen);
     } else {
-        gfx.egui_renderer.render(
-            &mut pass(encoder, &view, clear).forget_lifetime(),
-            primitives,
-            screen,
-        );
+        gfx.egui_renderer.render(&mut pass(encoder, &view, clear).forget_lifetime(), primitives, screen);
     }
 }
 
@@ -699,10 +577,7 @@ fn pass<'e>(
             view,
             depth_slice: None,
             resolve_target: None,
-            ops: wgpu::Operations {
-                load,
-                store: wgpu::StoreOp::Store,
-            },
+            ops: wgpu::Operations { load, store: wgpu::StoreOp::Store },
         })],
         depth_stencil_attachment: None,
         timestamp_writes: None,
@@ -716,18 +591,12 @@ fn pass<'e>(
 fn twin_texture(device: &wgpu::Device, config: &wgpu::SurfaceConfiguration) -> wgpu::Texture {
     device.create_texture(&wgpu::TextureDescriptor {
         label: Some("window capture"),
-        size: wgpu::Extent3d {
-            width: config.width,
-            height: config.height,
-            depth_or_array_layers: 1,
-        },
+        size: wgpu::Extent3d { width: config.width, height: config.height, depth_or_array_layers: 1 },
         mip_level_count: 1,
         sample_count: 1,
         dimension: wgpu::TextureDimension::D2,
         format: config.format,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-            | wgpu::TextureUsages::COPY_SRC
-            | wgpu::TextureUsages::COPY_DST,
+        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC | wgpu::TextureUsages::COPY_DST,
         view_formats: &[],
     })
 }

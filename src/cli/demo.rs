@@ -53,12 +53,7 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
         o.window_size = [w, h];
     }
     o.out_dir.clone_from(&args.out);
-    o.tuio = args.tuio.map(|port| {
-        SocketAddr::new(
-            args.tuio_bind.unwrap_or(IpAddr::V4(Ipv4Addr::LOCALHOST)),
-            port,
-        )
-    });
+    o.tuio = args.tuio.map(|port| SocketAddr::new(args.tuio_bind.unwrap_or(IpAddr::V4(Ipv4Addr::LOCALHOST)), port));
     if args.tuio_bind.is_some() && args.tuio.is_none() {
         return Err("--tuio-bind needs --tuio".into());
     }
@@ -69,12 +64,8 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
         let [seconds, path] = values.as_slice() else {
             return Err("--screenshot-after takes SECONDS PATH".into());
         };
-        let after_s =
-            super::parse_seconds(seconds).map_err(|e| format!("--screenshot-after: {e}"))?;
-        o.screenshot_after = Some(Screenshot {
-            after_s: f64::from(after_s),
-            path: PathBuf::from(path),
-        });
+        let after_s = super::parse_seconds(seconds).map_err(|e| format!("--screenshot-after: {e}"))?;
+        o.screenshot_after = Some(Screenshot { after_s: f64::from(after_s), path: PathBuf::from(path) });
     }
     o.quit_after = args.quit_after.map(f64::from);
     match (args.participant, &args.condition) {
@@ -89,16 +80,15 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
                 technique,
                 feedback,
                 repetitions: args.reps.unwrap_or(REPETITIONS).max(1),
-                trials_csv: args
-                    .trials_csv
-                    .clone()
-                    .unwrap_or_else(|| PathBuf::from(TRIALS_CSV)),
+                trials_csv: args.trials_csv.clone().unwrap_or_else(|| PathBuf::from(TRIALS_CSV)),
                 gestures: Some(args.out.join("gestures")),
             });
         }
         (Some(_), None) => return Err("--participant needs --condition TECHNIQUE:on|off".into()),
         (None, _) if args.trials_csv.is_some() || args.reps.is_some() => {
-            return Err("--trials-csv and --reps belong to participant mode (--participant ID --condition T:on|off)".into());
+            return Err(
+                "--trials-csv and --reps belong to participant mode (--participant ID --condition T:on|off)".into()
+            );
         }
         (None, _) => {}
     }
@@ -107,20 +97,14 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
 
 /// `TECHNIQUE:on|off`, e.g. `particle:on`.
 pub fn parse_condition(s: &str) -> Result<(TechniqueKind, bool), String> {
-    let (t, f) = s
-        .split_once(':')
-        .ok_or_else(|| format!("--condition `{s}`: expected TECHNIQUE:on|off, e.g. particle:on"))?;
-    let technique: TechniqueKind = t
-        .trim()
-        .parse()
-        .map_err(|e| format!("--condition `{s}`: {e}"))?;
+    let (t, f) =
+        s.split_once(':').ok_or_else(|| format!("--condition `{s}`: expected TECHNIQUE:on|off, e.g. particle:on"))?;
+    let technique: TechniqueKind = t.trim().parse().map_err(|e| format!("--condition `{s}`: {e}"))?;
     let feedback = match f.trim() {
         "on" => true,
         "off" => false,
         other => {
-            return Err(format!(
-                "--condition `{s}`: feedback `{other}` must be on or off"
-            ));
+            return Err(format!("--condition `{s}`: feedback `{other}` must be on or off"));
         }
     };
     Ok((technique, feedback))
@@ -133,9 +117,7 @@ mod tests {
 
     fn parse(args: &[&str]) -> Result<DemoOptions, String> {
         let cli = super::super::Cli::try_parse_from(
-            std::iter::once("surfacelab")
-                .chain(std::iter::once("demo"))
-                .chain(args.iter().copied()),
+            std::iter::once("surfacelab").chain(std::iter::once("demo")).chain(args.iter().copied()),
         )
         .map_err(|e| e.to_string())?;
         match cli.command {
@@ -155,24 +137,11 @@ mod tests {
     #[test]
     fn flags_become_options() {
         let o = parse(&["--tuio", "--task", "sorting"]).expect("valid");
-        assert_eq!(
-            o.tuio,
-            Some(SocketAddr::new(
-                IpAddr::V4(Ipv4Addr::LOCALHOST),
-                DEFAULT_PORT
-            ))
-        );
+        assert_eq!(o.tuio, Some(SocketAddr::new(IpAddr::V4(Ipv4Addr::LOCALHOST), DEFAULT_PORT)));
         let o = parse(&["--tuio", "4000", "--tuio-bind", "0.0.0.0"]).expect("valid");
         assert_eq!(o.tuio, Some("0.0.0.0:4000".parse().expect("address")));
-        let o =
-            parse(&["--screenshot-after", "2.5", "shot.png", "--quit-after", "4"]).expect("valid");
-        assert_eq!(
-            o.screenshot_after,
-            Some(Screenshot {
-                after_s: 2.5,
-                path: "shot.png".into()
-            })
-        );
+        let o = parse(&["--screenshot-after", "2.5", "shot.png", "--quit-after", "4"]).expect("valid");
+        assert_eq!(o.screenshot_after, Some(Screenshot { after_s: 2.5, path: "shot.png".into() }));
         assert_eq!(o.quit_after, Some(4.0));
         assert!(parse(&["--screenshot-after", "soon", "shot.png"]).is_err());
         assert!(parse(&["--tuio-bind", "0.0.0.0"]).is_err());
@@ -180,29 +149,15 @@ mod tests {
 
     #[test]
     fn participant_mode_takes_its_condition() {
-        let o = parse(&[
-            "--participant",
-            "4",
-            "--condition",
-            "joint:off",
-            "--task",
-            "steering",
-        ])
-        .expect("valid");
+        let o = parse(&["--participant", "4", "--condition", "joint:off", "--task", "steering"]).expect("valid");
         let p = o.participant.expect("participant mode");
-        assert_eq!(
-            (p.id, p.technique, p.feedback, p.repetitions),
-            (4, TechniqueKind::Joint, false, REPETITIONS)
-        );
+        assert_eq!((p.id, p.technique, p.feedback, p.repetitions), (4, TechniqueKind::Joint, false, REPETITIONS));
         assert_eq!(p.trials_csv, PathBuf::from(TRIALS_CSV));
         assert!(!o.contact_overlay);
         assert!(parse(&["--participant", "4"]).is_err());
         assert!(parse(&["--participant", "0", "--condition", "joint:on"]).is_err());
         assert!(parse(&["--reps", "3"]).is_err());
-        assert_eq!(
-            parse_condition("particle:on"),
-            Ok((TechniqueKind::Particle, true))
-        );
+        assert_eq!(parse_condition("particle:on"), Ok((TechniqueKind::Particle, true)));
         assert!(
             parse_condition("particle").is_err()
                 && parse_condition("rope:on").is_err()

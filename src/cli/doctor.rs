@@ -12,7 +12,8 @@ pub fn run() -> ExitCode {
     let display = match (std::env::var("WAYLAND_DISPLAY"), std::env::var("DISPLAY")) {
         (Ok(w), _) if !w.is_empty() => format!("yes (Wayland {w})"),
         (_, Ok(d)) if !d.is_empty() => format!("yes (X11 {d})"),
-        _ => "none (DISPLAY and WAYLAND_DISPLAY unset): the demo needs one; run, study, screenshot and tradeoff do not".to_string(),
+        _ => "none (DISPLAY and WAYLAND_DISPLAY unset): the demo needs one; run, study, screenshot and tradeoff do not"
+            .to_string(),
     };
     println!("display: {display}");
     match crate::render::gpu::probe_adapter() {

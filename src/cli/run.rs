@@ -16,7 +16,12 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
     let t0 = Instant::now();
     // The whole gesture, then a short settle so released objects come to rest.
     session.replay_until(&gesture, gesture.duration() + f64::from(args.settle))?;
-    let report = RunReport::from_session(&session, args.feedback, &args.gesture.display().to_string(), t0.elapsed().as_secs_f64());
+    let report = RunReport::from_session(
+        &session,
+        args.feedback,
+        &args.gesture.display().to_string(),
+        t0.elapsed().as_secs_f64(),
+    );
     let json = serde_json::to_string_pretty(&report)?;
     match &args.report {
         Some(path) => {

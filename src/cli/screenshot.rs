@@ -27,14 +27,22 @@ pub fn run(args: &ScreenshotArgs) -> anyhow::Result<ExitCode> {
             }
         }
     }
-    let list = render::draw_list(&session, ViewOptions { feedback: args.feedback, contact_overlay: args.contact_overlay });
+    let list =
+        render::draw_list(&session, ViewOptions { feedback: args.feedback, contact_overlay: args.contact_overlay });
     let gpu = GpuContext::new_headless()?;
     let image = render::render_to_image(&gpu, &list, w, h)?;
     if let Some(dir) = args.out.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
     }
     render::save_png(&image, &args.out)?;
-    eprintln!("surfacelab screenshot: {w}x{h} of {} ({}) at t = {:.2} s on {} -> {}", scene.name, args.technique, session.time(), gpu.summary().name, args.out.display());
+    eprintln!(
+        "surfacelab screenshot: {w}x{h} of {} ({}) at t = {:.2} s on {} -> {}",
+        scene.name,
+        args.technique,
+        session.time(),
+        gpu.summary().name,
+        args.out.display()
+    );
     Ok(ExitCode::SUCCESS)
 }
 

@@ -23,7 +23,8 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
         ..RunOptions::default()
     };
     let outcome = if let Some(dir) = &args.resume {
-        let design = RunFile::load(&dir.join("run.toml")).with_context(|| format!("--resume {}", dir.display()))?.design;
+        let design =
+            RunFile::load(&dir.join("run.toml")).with_context(|| format!("--resume {}", dir.display()))?.design;
         let runner = runner_for(args, design, dir)?;
         study::resume_study(dir, runner.as_ref(), &options)?
     } else {

@@ -7,8 +7,13 @@ use std::process::ExitCode;
 
 pub fn run(args: &TradeoffArgs) -> anyhow::Result<ExitCode> {
     let t0 = std::time::Instant::now();
-    let rows = run_tradeoff(&TradeoffOptions { out: args.out.clone(), quick: args.quick, progress: std::io::stderr().is_terminal() })?;
-    let off: Vec<String> = rows.iter().filter(|r| r.default && !r.on_front).map(|r| format!("{}={}", r.knob, r.value)).collect();
+    let rows = run_tradeoff(&TradeoffOptions {
+        out: args.out.clone(),
+        quick: args.quick,
+        progress: std::io::stderr().is_terminal(),
+    })?;
+    let off: Vec<String> =
+        rows.iter().filter(|r| r.default && !r.on_front).map(|r| format!("{}={}", r.knob, r.value)).collect();
     println!(
         "surfacelab tradeoff: {} settings in {:.0} s; defaults off their Pareto front: {}; files in {} (tradeoff.csv, tradeoff.md, one PNG per knob)",
         rows.len(),

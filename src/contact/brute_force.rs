@@ -4,9 +4,7 @@
 //! directly. No walk, no ordering: this is what the O(m + n) walk is checked
 //! against, and what it is timed against.
 
-use super::entrance_block::{
-    ContactEdge, CoverKind, PARALLEL, contact_at, nearest_on_boundary, pair_tolerance,
-};
+use super::entrance_block::{ContactEdge, CoverKind, PARALLEL, contact_at, nearest_on_boundary, pair_tolerance};
 use super::polygon::ConvexPolygon;
 use super::report::{ContactReport, Features, Relation};
 use super::vec2::Vec2;
@@ -81,11 +79,7 @@ pub fn brute_force_report(a: &ConvexPolygon, b: &ConvexPolygon) -> ContactReport
 }
 
 /// [`brute_force_report`] with A moved by `translation`.
-pub fn brute_force_report_at(
-    a: &ConvexPolygon,
-    b: &ConvexPolygon,
-    translation: Vec2,
-) -> ContactReport {
+pub fn brute_force_report_at(a: &ConvexPolygon, b: &ConvexPolygon, translation: Vec2) -> ContactReport {
     let tolerance = pair_tolerance(a, b);
     let covers = valid_covers(a, b);
     let nearest = nearest_on_boundary(&covers, translation, tolerance);

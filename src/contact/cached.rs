@@ -59,12 +59,7 @@ impl CachedBlock {
         let corners: Vec<Vec2> = block.edges().iter().map(|e| e.start).collect();
         let interior = mean(&corners);
         let inner = shrink(block.edges(), block.tolerance());
-        Self {
-            block,
-            corners,
-            interior,
-            inner,
-        }
+        Self { block, corners, interior, inner }
     }
 
     pub fn block(&self) -> &EntranceBlock {
@@ -104,17 +99,12 @@ impl CachedBlock {
     /// The full report with A moved by `translation` (costs as
     /// [`CachedBlock::signed_distance`]).
     pub fn report(&self, translation: Vec2) -> ContactReport {
-        self.block
-            .report_from(translation, self.nearest(translation))
+        self.block.report_from(translation, self.nearest(translation))
     }
 
     fn nearest(&self, q: Vec2) -> Nearest {
         let k = wedge(&self.corners, self.interior, q);
-        if self.block.edges()[k].plane_distance(q) > 0.0 {
-            self.nearest_outside(q, k)
-        } else {
-            self.nearest_inside(q)
-        }
+        if self.block.edges()[k].plane_distance(q) > 0.0 { self.nearest_outside(q, k) } else { self.nearest_inside(q) }
     }
 
     /// O(n): the depth is not unimodal around the boundary (module docs).
@@ -144,11 +134,7 @@ impl CachedBlock {
         });
         let f = k + forward;
         let b = k + n - backward;
-        let mut best = Nearest {
-            edge: k,
-            point: q,
-            signed_distance: f64::INFINITY,
-        };
+        let mut best = Nearest { edge: k, point: q, signed_distance: f64::INFINITY };
         let mut best_d2 = f64::INFINITY;
         for j in [f + n - 1, f, f + 1, b + n - 1, b, b + 1] {
             let j = j % n;
@@ -156,11 +142,7 @@ impl CachedBlock {
             let d2 = (q - p).length_squared();
             if d2 < best_d2 {
                 best_d2 = d2;
-                best = Nearest {
-                    edge: j,
-                    point: p,
-                    signed_distance: 0.0,
-                };
+                best = Nearest { edge: j, point: p, signed_distance: 0.0 };
             }
         }
         best.signed_distance = best_d2.sqrt();
@@ -251,18 +233,14 @@ mod tests {
     #[test]
     fn cached_queries_match_the_linear_scan() {
         let a = discretize_circle(Vec2::ZERO, 1.0, 37, CircleFit::Inscribed, 0.1).expect("circle");
-        let b = discretize_circle(Vec2::new(0.5, 0.2), 2.0, 64, CircleFit::Circumscribed, 0.0)
-            .expect("circle");
+        let b = discretize_circle(Vec2::new(0.5, 0.2), 2.0, 64, CircleFit::Circumscribed, 0.0).expect("circle");
         let cached = CachedBlock::new(&a, &b);
         for i in 0..400 {
             let t = f64::from(i) * 0.1;
             let q = Vec2::new(7.0 * (t * 0.7).cos(), 5.0 * (t * 1.3).sin());
             let fast = cached.report(q);
             let slow = cached.block().report_at(q);
-            assert!(
-                (fast.distance - slow.distance).abs() < 1e-12,
-                "at {q:?}: {fast:?} vs {slow:?}"
-            );
+            assert!((fast.distance - slow.distance).abs() < 1e-12, "at {q:?}: {fast:?} vs {slow:?}");
             assert_eq!(cached.relation(q), slow.relation, "at {q:?}");
         }
     }
@@ -274,14 +252,8 @@ mod tests {
         let cached = CachedBlock::new(&a, &b);
         // Block = the 8-gon of radius 2; vertex 0 at (2, 0).
         assert_eq!(cached.relation(Vec2::new(2.0, 0.0)), Relation::Touching);
-        assert_eq!(
-            cached.relation(Vec2::new(2.0 - 1e-6, 0.0)),
-            Relation::Intersecting
-        );
-        assert_eq!(
-            cached.relation(Vec2::new(2.0 + 1e-6, 0.0)),
-            Relation::Separated
-        );
+        assert_eq!(cached.relation(Vec2::new(2.0 - 1e-6, 0.0)), Relation::Intersecting);
+        assert_eq!(cached.relation(Vec2::new(2.0 + 1e-6, 0.0)), Relation::Separated);
         assert_eq!(cached.relation(Vec2::ZERO), Relation::Intersecting);
     }
 }

@@ -109,15 +109,12 @@ mod tests {
 
     #[test]
     fn the_circumscribed_polygon_touches_the_circle_at_edge_midpoints() {
-        let p = discretize_circle(Vec2::new(1.0, 1.0), 1.0, 16, CircleFit::Circumscribed, 0.3)
-            .expect("16-gon");
+        let p = discretize_circle(Vec2::new(1.0, 1.0), 1.0, 16, CircleFit::Circumscribed, 0.3).expect("16-gon");
         let v = p.vertices();
         let mid = (v[3] + v[4]) * 0.5 - Vec2::new(1.0, 1.0);
         assert!((mid.length() - 1.0).abs() < 1e-12);
         let overshoot = (v[3] - Vec2::new(1.0, 1.0)).length() - 1.0;
-        assert!(
-            (overshoot - discretization_error(1.0, 16, CircleFit::Circumscribed)).abs() < 1e-12
-        );
+        assert!((overshoot - discretization_error(1.0, 16, CircleFit::Circumscribed)).abs() < 1e-12);
     }
 
     #[test]

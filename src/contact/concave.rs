@@ -73,18 +73,12 @@ impl SimplePolygon {
                 Turn::Convex | Turn::Straight => {}
                 Turn::Reflex => convex = false,
                 Turn::Fold => {
-                    return Err(PolygonError::FoldsBack {
-                        vertex: ring.source[i],
-                    });
+                    return Err(PolygonError::FoldsBack { vertex: ring.source[i] });
                 }
             }
         }
         // A convex ring that winds once is simple; anything else is checked.
-        let whole = if convex {
-            ConvexPolygon::with_sources(&ring.points, &ring.source).ok()
-        } else {
-            None
-        };
+        let whole = if convex { ConvexPolygon::with_sources(&ring.points, &ring.source).ok() } else { None };
         let pieces = if let Some(piece) = whole {
             vec![piece]
         } else {
@@ -150,10 +144,7 @@ fn check_simple(ring: &Ring) -> Result<(), PolygonError> {
                 continue; // adjacent across the wrap
             }
             if segment_distance(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n]) <= ring.tolerance {
-                return Err(PolygonError::SelfIntersecting {
-                    first: ring.source[i],
-                    second: ring.source[j],
-                });
+                return Err(PolygonError::SelfIntersecting { first: ring.source[i], second: ring.source[j] });
             }
         }
     }
@@ -164,9 +155,7 @@ fn segment_distance(a0: Vec2, a1: Vec2, b0: Vec2, b1: Vec2) -> f64 {
     let side = |p: Vec2, q: Vec2, r: Vec2| (q - p).cross(r - p);
     let (d1, d2) = (side(a0, a1, b0), side(a0, a1, b1));
     let (d3, d4) = (side(b0, b1, a0), side(b0, b1, a1));
-    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
-        && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
-    {
+    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0)) {
         return 0.0;
     }
     let point_segment = |p: Vec2, s: Vec2, e: Vec2| {
@@ -203,9 +192,9 @@ fn decompose(ring: &Ring) -> Result<Vec<ConvexPolygon>, PolygonError> {
                 Turn::Convex => {}
                 Turn::Reflex | Turn::Fold => continue,
             }
-            let blocked = chain.iter().any(|&x| {
-                x != u && x != v && x != w && in_triangle(p[x], p[u], p[v], p[w], ring.tolerance)
-            });
+            let blocked = chain
+                .iter()
+                .any(|&x| x != u && x != v && x != w && in_triangle(p[x], p[u], p[v], p[w], ring.tolerance));
             if !blocked {
                 triangles.push([u, v, w]);
                 chain.remove(k);
@@ -216,9 +205,7 @@ fn decompose(ring: &Ring) -> Result<Vec<ConvexPolygon>, PolygonError> {
         if !clipped {
             // Only rounding can leave a simple polygon without an ear: clip
             // the most convex vertex so the decomposition still terminates.
-            let k = (0..m)
-                .max_by(|&x, &y| height(p, &chain, x).total_cmp(&height(p, &chain, y)))
-                .unwrap_or(0);
+            let k = (0..m).max_by(|&x, &y| height(p, &chain, x).total_cmp(&height(p, &chain, y))).unwrap_or(0);
             triangles.push([chain[(k + m - 1) % m], chain[k], chain[(k + 1) % m]]);
             chain.remove(k);
         }
@@ -235,11 +222,8 @@ fn decompose(ring: &Ring) -> Result<Vec<ConvexPolygon>, PolygonError> {
             owner.insert((t[k], t[(k + 1) % 3]), id);
         }
     }
-    let mut diagonals: Vec<(usize, usize)> = owner
-        .keys()
-        .copied()
-        .filter(|&(u, v)| u < v && owner.contains_key(&(v, u)))
-        .collect();
+    let mut diagonals: Vec<(usize, usize)> =
+        owner.keys().copied().filter(|&(u, v)| u < v && owner.contains_key(&(v, u))).collect();
     diagonals.sort_unstable();
     for (u, v) in diagonals {
         let (Some(&pi), Some(&qi)) = (owner.get(&(u, v)), owner.get(&(v, u))) else {
@@ -257,12 +241,7 @@ fn decompose(ring: &Ring) -> Result<Vec<ConvexPolygon>, PolygonError> {
         let len = merged.len();
         let pos_u = merged.iter().position(|&x| x == u).unwrap_or(0);
         let ok = [pos_u, 0].iter().all(|&at| {
-            let t = turn(
-                p[merged[(at + len - 1) % len]],
-                p[merged[at]],
-                p[merged[(at + 1) % len]],
-                tol,
-            );
+            let t = turn(p[merged[(at + len - 1) % len]], p[merged[at]], p[merged[(at + 1) % len]], tol);
             matches!(t, Turn::Convex | Turn::Straight)
         });
         if ok {
@@ -296,28 +275,20 @@ fn decompose(ring: &Ring) -> Result<Vec<ConvexPolygon>, PolygonError> {
 fn merge_across(pp: &[usize], qq: &[usize], u: usize, v: usize) -> Vec<usize> {
     let start_v = pp.iter().position(|&x| x == v).unwrap_or(0);
     let start_u = qq.iter().position(|&x| x == u).unwrap_or(0);
-    let mut merged: Vec<usize> = (0..pp.len())
-        .map(|k| pp[(start_v + k) % pp.len()])
-        .collect();
+    let mut merged: Vec<usize> = (0..pp.len()).map(|k| pp[(start_v + k) % pp.len()]).collect();
     merged.extend((1..qq.len() - 1).map(|k| qq[(start_u + k) % qq.len()]));
     merged
 }
 
 fn height(p: &[Vec2], chain: &[usize], k: usize) -> f64 {
     let m = chain.len();
-    let (u, v, w) = (
-        p[chain[(k + m - 1) % m]],
-        p[chain[k]],
-        p[chain[(k + 1) % m]],
-    );
+    let (u, v, w) = (p[chain[(k + m - 1) % m]], p[chain[k]], p[chain[(k + 1) % m]]);
     (v - u).cross(w - v) / (w - u).length().max(f64::MIN_POSITIVE)
 }
 
 /// Inside or within `tol` of the counter-clockwise triangle `a b c`.
 fn in_triangle(x: Vec2, a: Vec2, b: Vec2, c: Vec2, tol: f64) -> bool {
-    [(a, b), (b, c), (c, a)]
-        .iter()
-        .all(|&(s, e)| (e - s).cross(x - s) >= -tol * (e - s).length())
+    [(a, b), (b, c), (c, a)].iter().all(|&(s, e)| (e - s).cross(x - s) >= -tol * (e - s).length())
 }
 
 /// The union of the entrance blocks of every pair of pieces.
@@ -335,27 +306,15 @@ pub struct UnionBlock {
 impl UnionBlock {
     pub fn new(a: &SimplePolygon, b: &SimplePolygon) -> Self {
         let size = a.extent().min(b.extent());
-        let magnitude = a
-            .magnitude()
-            .max(b.magnitude())
-            .max(a.extent())
-            .max(b.extent());
+        let magnitude = a.magnitude().max(b.magnitude()).max(a.extent()).max(b.extent());
         let tolerance = scale_tolerance(size, magnitude);
         let slack = scale_tolerance(0.0, magnitude);
         let blocks = a
             .pieces()
             .iter()
-            .flat_map(|pa| {
-                b.pieces()
-                    .iter()
-                    .map(move |pb| EntranceBlock::new(pa, pb).with_tolerance(tolerance))
-            })
+            .flat_map(|pa| b.pieces().iter().map(move |pb| EntranceBlock::new(pa, pb).with_tolerance(tolerance)))
             .collect();
-        Self {
-            blocks,
-            tolerance,
-            slack,
-        }
+        Self { blocks, tolerance, slack }
     }
 
     pub fn blocks(&self) -> &[EntranceBlock] {
@@ -374,11 +333,8 @@ impl UnionBlock {
     /// what the exit means here).
     pub fn report_at(&self, translation: Vec2) -> ContactReport {
         let q = translation;
-        let nearest: Vec<Nearest> = self
-            .blocks
-            .iter()
-            .map(|b| nearest_on_boundary(b.edges(), q, self.tolerance))
-            .collect();
+        let nearest: Vec<Nearest> =
+            self.blocks.iter().map(|b| nearest_on_boundary(b.edges(), q, self.tolerance)).collect();
         let (closest, deepest) = nearest
             .iter()
             .enumerate()
@@ -403,14 +359,7 @@ impl UnionBlock {
                     let d2 = (point - q).length_squared();
                     if d2 < best_d2 {
                         best_d2 = d2;
-                        best = Some((
-                            bi,
-                            Nearest {
-                                edge: ei,
-                                point,
-                                signed_distance: -d2.sqrt(),
-                            },
-                        ));
+                        best = Some((bi, Nearest { edge: ei, point, signed_distance: -d2.sqrt() }));
                     }
                 }
             }
@@ -458,11 +407,7 @@ fn inside_interval(edge: &ContactEdge, other: &[ContactEdge], tol: f64) -> Optio
 /// none of the open intervals `covered`.
 fn nearest_uncovered(edge: &ContactEdge, covered: &[(f64, f64)], q: Vec2) -> Option<f64> {
     let len2 = edge.direction.length_squared();
-    let ideal = if len2 > 0.0 {
-        ((q - edge.start).dot(edge.direction) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
+    let ideal = if len2 > 0.0 { ((q - edge.start).dot(edge.direction) / len2).clamp(0.0, 1.0) } else { 0.0 };
     let free = |t: f64| covered.iter().all(|&(t0, t1)| !(t0 < t && t < t1));
     let mut candidates = vec![ideal, 0.0, 1.0];
     for &(t0, t1) in covered {
@@ -484,15 +429,7 @@ mod tests {
     use crate::contact::vec2::Vec2;
 
     fn l_shape() -> SimplePolygon {
-        SimplePolygon::from_xy(&[
-            [0.0, 0.0],
-            [3.0, 0.0],
-            [3.0, 1.0],
-            [1.0, 1.0],
-            [1.0, 3.0],
-            [0.0, 3.0],
-        ])
-        .expect("L")
+        SimplePolygon::from_xy(&[[0.0, 0.0], [3.0, 0.0], [3.0, 1.0], [1.0, 1.0], [1.0, 3.0], [0.0, 3.0]]).expect("L")
     }
 
     #[test]
@@ -506,12 +443,9 @@ mod tests {
 
     #[test]
     fn a_bow_tie_is_not_simple() {
-        let err = SimplePolygon::from_xy(&[[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]])
-            .expect_err("must be rejected");
-        assert!(
-            matches!(err, PolygonError::SelfIntersecting { .. }),
-            "{err:?}"
-        );
+        let err =
+            SimplePolygon::from_xy(&[[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]]).expect_err("must be rejected");
+        assert!(matches!(err, PolygonError::SelfIntersecting { .. }), "{err:?}");
     }
 
     #[test]
@@ -519,8 +453,7 @@ mod tests {
         // A unit square at (1.2, 1.2)-(2.2, 2.2) sits in the L's notch
         // without touching; moved to (0.5, 0.5) it overlaps both arms.
         let b = l_shape();
-        let a = SimplePolygon::from_xy(&[[1.2, 1.2], [2.2, 1.2], [2.2, 2.2], [1.2, 2.2]])
-            .expect("square");
+        let a = SimplePolygon::from_xy(&[[1.2, 1.2], [2.2, 1.2], [2.2, 2.2], [1.2, 2.2]]).expect("square");
         let union = UnionBlock::new(&a, &b);
         let r = union.report();
         assert_eq!(r.relation, Relation::Separated);
@@ -533,9 +466,6 @@ mod tests {
         let moved = Vec2::new(-0.7, -0.7) + r.exit;
         let after = union.report_at(moved);
         assert_eq!(after.relation, Relation::Touching, "{after:?}");
-        assert!(
-            (r.distance + 0.5 * std::f64::consts::SQRT_2).abs() < 1e-9,
-            "{r:?}"
-        );
+        assert!((r.distance + 0.5 * std::f64::consts::SQRT_2).abs() < 1e-9, "{r:?}");
     }
 }

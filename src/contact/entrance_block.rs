@@ -107,11 +107,7 @@ impl ContactEdge {
     /// The point of this edge closest to `q`.
     pub fn closest_point(&self, q: Vec2) -> Vec2 {
         let len2 = self.direction.length_squared();
-        let t = if len2 > 0.0 {
-            ((q - self.start).dot(self.direction) / len2).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
+        let t = if len2 > 0.0 { ((q - self.start).dot(self.direction) / len2).clamp(0.0, 1.0) } else { 0.0 };
         self.start + self.direction * t
     }
 }
@@ -139,11 +135,7 @@ impl EntranceBlock {
         let mut edges = Vec::with_capacity(n + m);
         let (mut i, mut j) = start_state(a, b);
         let (mut done_a, mut done_b) = (0, 0);
-        let start = Cover {
-            i,
-            j,
-            step: next_step(a, b, (i, j), 0, 0),
-        };
+        let start = Cover { i, j, step: next_step(a, b, (i, j), 0, 0) };
         let mut last = start;
         while done_a < n || done_b < m {
             let step = next_step(a, b, (i, j), done_a, done_b);
@@ -164,11 +156,7 @@ impl EntranceBlock {
             edges[end] = contact_edge(a, b, joined);
             edges.remove(0);
         }
-        Self {
-            reference: a.first_input_vertex(),
-            edges,
-            tolerance: pair_tolerance(a, b),
-        }
+        Self { reference: a.first_input_vertex(), edges, tolerance: pair_tolerance(a, b) }
     }
 
     /// The same block judged with another touching tolerance (the union of
@@ -197,10 +185,7 @@ impl EntranceBlock {
     /// The boundary's vertices in the paper's coordinates (positions of the
     /// reference point), counter-clockwise.
     pub fn boundary(&self) -> Vec<Vec2> {
-        self.edges
-            .iter()
-            .map(|e| e.start + self.reference)
-            .collect()
+        self.edges.iter().map(|e| e.start + self.reference).collect()
     }
 
     /// Everything about A where it was at build time.
@@ -267,13 +252,7 @@ fn start_state(a: &ConvexPolygon, b: &ConvexPolygon) -> (usize, usize) {
 /// half-planes) and need no lengths for the parallel test; −A's edge is A's
 /// edge turned round, so its normal is minus A's.
 #[inline]
-fn next_step(
-    a: &ConvexPolygon,
-    b: &ConvexPolygon,
-    (i, j): (usize, usize),
-    done_a: usize,
-    done_b: usize,
-) -> Step {
+fn next_step(a: &ConvexPolygon, b: &ConvexPolygon, (i, j): (usize, usize), done_a: usize, done_b: usize) -> Step {
     if done_a == a.len() {
         Step::B
     } else if done_b == b.len() {
@@ -290,22 +269,11 @@ fn next_step(
 /// from `last`'s state (its start is `b[0] − a[0]`, its end `b[1] − a[1]`,
 /// whichever part came first). `count` covers were emitted; a block keeps
 /// at least three.
-fn join_straddle(
-    a: &ConvexPolygon,
-    b: &ConvexPolygon,
-    last: Cover,
-    first: Cover,
-    count: usize,
-) -> Option<Cover> {
-    let straddle = matches!(
-        (last.step, first.step),
-        (Step::A, Step::B) | (Step::B, Step::A)
-    ) && count >= 4
+fn join_straddle(a: &ConvexPolygon, b: &ConvexPolygon, last: Cover, first: Cover, count: usize) -> Option<Cover> {
+    let straddle = matches!((last.step, first.step), (Step::A, Step::B) | (Step::B, Step::A))
+        && count >= 4
         && parallel(cover_normal(a, b, last), cover_normal(a, b, first));
-    straddle.then_some(Cover {
-        step: Step::Both,
-        ..last
-    })
+    straddle.then_some(Cover { step: Step::Both, ..last })
 }
 
 #[inline]
@@ -361,11 +329,7 @@ pub fn contact_report(a: &ConvexPolygon, b: &ConvexPolygon) -> ContactReport {
     let (mut done_a, mut done_b) = (0, 0);
     // Inside: the cover farthest out and its neighbours.
     let mut max_g = f64::NEG_INFINITY;
-    let mut best = Cover {
-        i,
-        j,
-        step: Step::B,
-    };
+    let mut best = Cover { i, j, step: Step::B };
     let (mut before, mut after): (Option<Cover>, Option<Cover>) = (None, None);
     let mut want_after = false;
     let (mut first, mut previous): (Option<Cover>, Option<Cover>) = (None, None);
@@ -456,11 +420,7 @@ pub fn contact_report(a: &ConvexPolygon, b: &ConvexPolygon) -> ContactReport {
 /// rounding grow with those).
 pub fn pair_tolerance(a: &ConvexPolygon, b: &ConvexPolygon) -> f64 {
     let size = a.extent().min(b.extent());
-    let magnitude = a
-        .magnitude()
-        .max(b.magnitude())
-        .max(a.extent())
-        .max(b.extent());
+    let magnitude = a.magnitude().max(b.magnitude()).max(a.extent()).max(b.extent());
     scale_tolerance(size, magnitude)
 }
 
@@ -506,11 +466,7 @@ fn order(normal_b: Vec2, normal_a: Vec2) -> Step {
     if hb != ha {
         return if hb < ha { Step::B } else { Step::A };
     }
-    if normal_b.cross(normal_a) > 0.0 {
-        Step::B
-    } else {
-        Step::A
-    }
+    if normal_b.cross(normal_a) > 0.0 { Step::B } else { Step::A }
 }
 
 /// 0 when the edge whose outward normal is `n` points into [0, π), 1 for
@@ -539,11 +495,7 @@ pub(crate) fn nearest_on_boundary(edges: &[ContactEdge], q: Vec2, slack: f64) ->
     }
     let outside = max_g > 0.0;
     let threshold = if outside { -slack } else { max_g - slack };
-    let mut nearest = Nearest {
-        edge: 0,
-        point: q,
-        signed_distance: 0.0,
-    };
+    let mut nearest = Nearest { edge: 0, point: q, signed_distance: 0.0 };
     let mut best_d2 = f64::INFINITY;
     for (k, e) in edges.iter().enumerate() {
         if e.plane_distance(q) < threshold {
@@ -553,11 +505,7 @@ pub(crate) fn nearest_on_boundary(edges: &[ContactEdge], q: Vec2, slack: f64) ->
         let d2 = (q - p).length_squared();
         if d2 < best_d2 {
             best_d2 = d2;
-            nearest = Nearest {
-                edge: k,
-                point: p,
-                signed_distance: 0.0,
-            };
+            nearest = Nearest { edge: k, point: p, signed_distance: 0.0 };
         }
     }
     let d = best_d2.sqrt();
@@ -609,67 +557,36 @@ pub(crate) fn nearest_on_chain(edges: &[ContactEdge], q: Vec2) -> Nearest {
         }
     }
     let d = best_d2.sqrt();
-    Nearest {
-        edge: best,
-        point,
-        signed_distance: if max_g > 0.0 { d } else { -d },
-    }
+    Nearest { edge: best, point, signed_distance: if max_g > 0.0 { d } else { -d } }
 }
 
 /// Witness points and features for the boundary point `point` of `edge`,
 /// A being at translation `q`.
-pub(crate) fn contact_at(
-    edge: &ContactEdge,
-    point: Vec2,
-    q: Vec2,
-    tol: f64,
-) -> ([Vec2; 2], Features) {
+pub(crate) fn contact_at(edge: &ContactEdge, point: Vec2, q: Vec2, tol: f64) -> ([Vec2; 2], Features) {
     let len2 = edge.direction.length_squared();
     let len = len2.sqrt();
-    let t = if len2 > 0.0 {
-        ((point - edge.start).dot(edge.direction) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
+    let t = if len2 > 0.0 { ((point - edge.start).dot(edge.direction) / len2).clamp(0.0, 1.0) } else { 0.0 };
     let along = t * len;
     let exit = point - q;
     let mut features = Features::new();
     let witness = match edge.kind {
         CoverKind::AngleEdge => {
             features.push(if along <= tol {
-                Feature::AngleAngle {
-                    a_vertex: edge.a[0],
-                    b_vertex: edge.b[0],
-                }
+                Feature::AngleAngle { a_vertex: edge.a[0], b_vertex: edge.b[0] }
             } else if len - along <= tol {
-                Feature::AngleAngle {
-                    a_vertex: edge.a[0],
-                    b_vertex: edge.b[1],
-                }
+                Feature::AngleAngle { a_vertex: edge.a[0], b_vertex: edge.b[1] }
             } else {
-                Feature::AngleEdge {
-                    a_vertex: edge.a[0],
-                    b_edge: edge.b,
-                }
+                Feature::AngleEdge { a_vertex: edge.a[0], b_edge: edge.b }
             });
             [edge.a_point + q, edge.b_point + edge.direction * t]
         }
         CoverKind::EdgeAngle => {
             features.push(if along <= tol {
-                Feature::AngleAngle {
-                    a_vertex: edge.a[0],
-                    b_vertex: edge.b[0],
-                }
+                Feature::AngleAngle { a_vertex: edge.a[0], b_vertex: edge.b[0] }
             } else if len - along <= tol {
-                Feature::AngleAngle {
-                    a_vertex: edge.a[1],
-                    b_vertex: edge.b[0],
-                }
+                Feature::AngleAngle { a_vertex: edge.a[1], b_vertex: edge.b[0] }
             } else {
-                Feature::EdgeAngle {
-                    a_edge: edge.a,
-                    b_vertex: edge.b[0],
-                }
+                Feature::EdgeAngle { a_edge: edge.a, b_vertex: edge.b[0] }
             });
             [edge.a_point - edge.direction * t + q, edge.b_point]
         }
@@ -698,20 +615,11 @@ pub(crate) fn contact_at(
                 };
                 match (a_vertex, b_vertex) {
                     (Some(a_vertex), Some(b_vertex)) => Feature::AngleAngle { a_vertex, b_vertex },
-                    (Some(a_vertex), None) => Feature::AngleEdge {
-                        a_vertex,
-                        b_edge: edge.b,
-                    },
-                    (None, Some(b_vertex)) => Feature::EdgeAngle {
-                        a_edge: edge.a,
-                        b_vertex,
-                    },
+                    (Some(a_vertex), None) => Feature::AngleEdge { a_vertex, b_edge: edge.b },
+                    (None, Some(b_vertex)) => Feature::EdgeAngle { a_edge: edge.a, b_vertex },
                     // Unreachable: `lower` is 0 or u − la and `upper` is u
                     // or lb, each exactly a vertex position.
-                    (None, None) => Feature::EdgeAngle {
-                        a_edge: edge.a,
-                        b_vertex: edge.b[0],
-                    },
+                    (None, None) => Feature::EdgeAngle { a_edge: edge.a, b_vertex: edge.b[0] },
                 }
             };
             features.push(classify(lower));
@@ -719,11 +627,7 @@ pub(crate) fn contact_at(
                 features.push(classify(upper));
             }
             let mid = 0.5 * (lower + upper);
-            let b_on_edge = if len > 0.0 {
-                edge.b_point + edge.direction * (mid / len)
-            } else {
-                edge.b_point
-            };
+            let b_on_edge = if len > 0.0 { edge.b_point + edge.direction * (mid / len) } else { edge.b_point };
             [b_on_edge - exit, b_on_edge]
         }
     };
@@ -749,20 +653,9 @@ mod tests {
         // Translations that make them touch: x ∈ [2, 5], y ∈ [-1, 2].
         let mut corners: Vec<Vec2> = block.edges().iter().map(|e| e.start).collect();
         // Counter-clockwise from wherever the walk put its first edge.
-        let lowest_left = corners
-            .iter()
-            .position(|&c| c == Vec2::new(2.0, -1.0))
-            .expect("corner");
+        let lowest_left = corners.iter().position(|&c| c == Vec2::new(2.0, -1.0)).expect("corner");
         corners.rotate_left(lowest_left);
-        assert_eq!(
-            corners,
-            vec![
-                Vec2::new(2.0, -1.0),
-                Vec2::new(5.0, -1.0),
-                Vec2::new(5.0, 2.0),
-                Vec2::new(2.0, 2.0)
-            ]
-        );
+        assert_eq!(corners, vec![Vec2::new(2.0, -1.0), Vec2::new(5.0, -1.0), Vec2::new(5.0, 2.0), Vec2::new(2.0, 2.0)]);
         let r = block.report();
         assert_eq!(r.relation, Relation::Separated);
         assert_eq!(r.distance, 2.0);
@@ -772,15 +665,10 @@ mod tests {
     #[test]
     fn the_walk_emits_m_plus_n_covers_without_parallel_edges() {
         let a = ConvexPolygon::from_xy(&[[0.0, 0.0], [1.0, 0.1], [0.3, 0.9]]).expect("triangle");
-        let b = ConvexPolygon::from_xy(&[[2.0, 0.0], [3.0, 0.5], [2.2, 1.3], [1.9, 0.7]])
-            .expect("quad");
+        let b = ConvexPolygon::from_xy(&[[2.0, 0.0], [3.0, 0.5], [2.2, 1.3], [1.9, 0.7]]).expect("quad");
         let block = EntranceBlock::new(&a, &b);
         assert_eq!(block.edges().len(), 7);
-        let angle_edge = block
-            .edges()
-            .iter()
-            .filter(|e| e.kind == CoverKind::AngleEdge)
-            .count();
+        let angle_edge = block.edges().iter().filter(|e| e.kind == CoverKind::AngleEdge).count();
         assert_eq!(angle_edge, 4);
         // Consecutive edges join up.
         let edges = block.edges();

@@ -41,9 +41,6 @@ pub enum ContactError {
 impl ContactError {
     /// Attaches a polygon's name to a shape error.
     pub fn polygon(name: &str, problem: PolygonError) -> Self {
-        Self::Polygon {
-            name: name.to_owned(),
-            problem,
-        }
+        Self::Polygon { name: name.to_owned(), problem }
     }
 }

@@ -38,24 +38,16 @@ use super::vec2::Vec2;
 /// Answers one query. With `allow_concave`, simple non-convex polygons are
 /// decomposed (see [`UnionBlock`]); without it they are an error.
 pub fn answer_json(input: &str, allow_concave: bool) -> Result<String, ContactError> {
-    let value: Value =
-        serde_json::from_str(input).map_err(|e| ContactError::Json(e.to_string()))?;
+    let value: Value = serde_json::from_str(input).map_err(|e| ContactError::Json(e.to_string()))?;
     let object = value.as_object().ok_or_else(|| {
-        ContactError::Json(
-            r#"expected an object {"a": [[x, y], ...], "b": [[x, y], ...]}"#.to_owned(),
-        )
+        ContactError::Json(r#"expected an object {"a": [[x, y], ...], "b": [[x, y], ...]}"#.to_owned())
     })?;
     let a = read_points(object, "a")?;
     let b = read_points(object, "b")?;
     let report = if allow_concave {
         let a = SimplePolygon::named("a", &a)?;
         let b = SimplePolygon::named("b", &b)?;
-        match (
-            a.is_convex(),
-            b.is_convex(),
-            a.pieces().first(),
-            b.pieces().first(),
-        ) {
+        match (a.is_convex(), b.is_convex(), a.pieces().first(), b.pieces().first()) {
             (true, true, Some(pa), Some(pb)) => EntranceBlock::new(pa, pb).report(),
             _ => UnionBlock::new(&a, &b).report(),
         }
@@ -68,10 +60,7 @@ pub fn answer_json(input: &str, allow_concave: bool) -> Result<String, ContactEr
 }
 
 fn read_points(object: &Map<String, Value>, name: &str) -> Result<Vec<Vec2>, ContactError> {
-    let malformed = |message: String| ContactError::Malformed {
-        name: name.to_owned(),
-        message,
-    };
+    let malformed = |message: String| ContactError::Malformed { name: name.to_owned(), message };
     let list = object
         .get(name)
         .ok_or_else(|| malformed("is missing (expected an array of [x, y] pairs)".to_owned()))?
@@ -82,13 +71,9 @@ fn read_points(object: &Map<String, Value>, name: &str) -> Result<Vec<Vec2>, Con
         .map(|(i, pair)| match pair.as_array().map(Vec::as_slice) {
             Some([x, y]) => match (x.as_f64(), y.as_f64()) {
                 (Some(x), Some(y)) => Ok(Vec2::new(x, y)),
-                _ => Err(malformed(format!(
-                    "vertex {i} is not an [x, y] pair of numbers"
-                ))),
+                _ => Err(malformed(format!("vertex {i} is not an [x, y] pair of numbers"))),
             },
-            _ => Err(malformed(format!(
-                "vertex {i} is not an [x, y] pair of numbers"
-            ))),
+            _ => Err(malformed(format!("vertex {i} is not an [x, y] pair of numbers"))),
         })
         .collect()
 }
@@ -125,15 +110,9 @@ impl From<&ContactReport> for Answer {
                 .features
                 .iter()
                 .map(|&f| match f {
-                    Feature::AngleEdge { a_vertex, b_edge } => {
-                        FeatureJson::AngleEdge { a_vertex, b_edge }
-                    }
-                    Feature::EdgeAngle { a_edge, b_vertex } => {
-                        FeatureJson::EdgeAngle { a_edge, b_vertex }
-                    }
-                    Feature::AngleAngle { a_vertex, b_vertex } => {
-                        FeatureJson::AngleAngle { a_vertex, b_vertex }
-                    }
+                    Feature::AngleEdge { a_vertex, b_edge } => FeatureJson::AngleEdge { a_vertex, b_edge },
+                    Feature::EdgeAngle { a_edge, b_vertex } => FeatureJson::EdgeAngle { a_edge, b_vertex },
+                    Feature::AngleAngle { a_vertex, b_vertex } => FeatureJson::AngleAngle { a_vertex, b_vertex },
                 })
                 .collect(),
         }

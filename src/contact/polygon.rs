@@ -74,17 +74,9 @@ impl ConvexPolygon {
     pub(crate) fn with_sources(points: &[Vec2], sources: &[usize]) -> Result<Self, PolygonError> {
         let ring = Ring::clean(points, sources)?;
         ring.check_convex()?;
-        let first = (0..ring.source.len())
-            .min_by_key(|&i| ring.source[i])
-            .unwrap_or(0);
+        let first = (0..ring.source.len()).min_by_key(|&i| ring.source[i]).unwrap_or(0);
         let n = ring.points.len();
-        let normals = (0..n)
-            .map(|i| {
-                (ring.points[(i + 1) % n] - ring.points[i])
-                    .perp_cw()
-                    .normalized()
-            })
-            .collect();
+        let normals = (0..n).map(|i| (ring.points[(i + 1) % n] - ring.points[i]).perp_cw().normalized()).collect();
         Ok(Self {
             first,
             normals,
@@ -262,9 +254,7 @@ impl Ring {
             return Err(PolygonError::NotFinite { vertex: sources[i] });
         }
         if points.len() < 3 {
-            return Err(PolygonError::TooFewPoints {
-                distinct: distinct_count(points),
-            });
+            return Err(PolygonError::TooFewPoints { distinct: distinct_count(points) });
         }
         let extent = extent(points);
         let magnitude = max_abs(points);
@@ -284,25 +274,13 @@ impl Ring {
             source.pop();
         }
         if kept.len() < 3 {
-            return Err(PolygonError::TooFewPoints {
-                distinct: kept.len(),
-            });
+            return Err(PolygonError::TooFewPoints { distinct: kept.len() });
         }
-        Ok(Self {
-            points: kept,
-            source,
-            extent,
-            magnitude,
-            tolerance,
-            tight,
-        })
+        Ok(Self { points: kept, source, extent, magnitude, tolerance, tight })
     }
 
     pub(crate) fn slack(&self) -> Slack {
-        Slack {
-            outward: self.tight,
-            inward: self.tolerance,
-        }
+        Slack { outward: self.tight, inward: self.tolerance }
     }
 
     /// Step 3. Twice the area is compared with tight tolerance × extent:
@@ -379,12 +357,7 @@ impl Ring {
     /// The turn at cleaned vertex `i`.
     pub(crate) fn turn_at(&self, i: usize) -> Turn {
         let n = self.points.len();
-        turn(
-            self.points[(i + n - 1) % n],
-            self.points[i],
-            self.points[(i + 1) % n],
-            self.slack(),
-        )
+        turn(self.points[(i + n - 1) % n], self.points[i], self.points[(i + 1) % n], self.slack())
     }
 
     /// Step 5: no vertex turns right beyond the tolerance, none folds back,
@@ -397,14 +370,10 @@ impl Ring {
             match self.turn_at(i) {
                 Turn::Convex | Turn::Straight => {}
                 Turn::Reflex => {
-                    return Err(PolygonError::Reflex {
-                        vertex: self.source[i],
-                    });
+                    return Err(PolygonError::Reflex { vertex: self.source[i] });
                 }
                 Turn::Fold => {
-                    return Err(PolygonError::FoldsBack {
-                        vertex: self.source[i],
-                    });
+                    return Err(PolygonError::FoldsBack { vertex: self.source[i] });
                 }
             }
         }
@@ -440,10 +409,7 @@ pub(crate) fn signed_area(points: &[Vec2]) -> f64 {
 }
 
 pub(crate) fn extent(points: &[Vec2]) -> f64 {
-    let (mut lo, mut hi) = (
-        Vec2::new(f64::INFINITY, f64::INFINITY),
-        Vec2::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
-    );
+    let (mut lo, mut hi) = (Vec2::new(f64::INFINITY, f64::INFINITY), Vec2::new(f64::NEG_INFINITY, f64::NEG_INFINITY));
     for p in points {
         lo = Vec2::new(lo.x.min(p.x), lo.y.min(p.y));
         hi = Vec2::new(hi.x.max(p.x), hi.y.max(p.y));
@@ -486,35 +452,20 @@ mod tests {
 
     #[test]
     fn near_duplicates_are_welded_and_the_first_is_kept() {
-        let p = poly(&[
-            [0.0, 0.0],
-            [1.0, 0.0],
-            [1.0 + 1e-16, 1e-16],
-            [1.0, 1.0],
-            [0.0, 1.0],
-            [1e-16, 0.0],
-        ])
-        .expect("square");
+        let p = poly(&[[0.0, 0.0], [1.0, 0.0], [1.0 + 1e-16, 1e-16], [1.0, 1.0], [0.0, 1.0], [1e-16, 0.0]])
+            .expect("square");
         assert_eq!(p.len(), 4);
         assert_eq!(p.source_indices(), &[0, 1, 3, 4]);
     }
 
     #[test]
     fn a_bulge_above_rounding_is_kept_and_a_dent_below_the_tolerance_is_dropped() {
-        let bulge = poly(&[
-            [0.0, 0.0],
-            [0.5, -1e-11],
-            [1.0, 0.0],
-            [1.0, 1.0],
-            [0.0, 1.0],
-        ])
-        .expect("bulge");
+        let bulge = poly(&[[0.0, 0.0], [0.5, -1e-11], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).expect("bulge");
         assert_eq!(bulge.len(), 5);
-        let dent =
-            poly(&[[0.0, 0.0], [0.5, 1e-11], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).expect("dent");
+        let dent = poly(&[[0.0, 0.0], [0.5, 1e-11], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).expect("dent");
         assert_eq!(dent.source_indices(), &[0, 2, 3, 4]);
-        let reflex = poly(&[[0.0, 0.0], [0.5, 1e-6], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
-            .expect_err("must be rejected");
+        let reflex =
+            poly(&[[0.0, 0.0], [0.5, 1e-6], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]).expect_err("must be rejected");
         assert_eq!(reflex, PolygonError::Reflex { vertex: 1 });
     }
 
@@ -533,37 +484,24 @@ mod tests {
             .collect();
         pts.extend([[1.0, 1.0], [0.0, 1.0]]);
         let p = poly(&pts).expect("arc");
-        let lowest = p
-            .vertices()
-            .iter()
-            .map(|v| v.y)
-            .fold(f64::INFINITY, f64::min);
+        let lowest = p.vertices().iter().map(|v| v.y).fold(f64::INFINITY, f64::min);
         assert!(lowest < -0.98e-10, "the arc was flattened to {lowest}");
         assert!(p.len() < 100, "{} vertices kept", p.len());
     }
 
     #[test]
     fn straight_angles_are_dropped() {
-        let p = poly(&[
-            [0.0, 0.0],
-            [0.5, 0.0],
-            [1.0, 0.0],
-            [1.0, 0.5],
-            [1.0, 1.0],
-            [0.0, 1.0],
-        ])
-        .expect("square with midpoints");
+        let p = poly(&[[0.0, 0.0], [0.5, 0.0], [1.0, 0.0], [1.0, 0.5], [1.0, 1.0], [0.0, 1.0]])
+            .expect("square with midpoints");
         assert_eq!(p.source_indices(), &[0, 2, 4, 5]);
     }
 
     #[test]
     fn a_reflex_vertex_is_named_by_its_input_index() {
-        let err = poly(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [1.0, 1.0], [0.0, 2.0]])
-            .expect_err("must be rejected");
+        let err = poly(&[[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [1.0, 1.0], [0.0, 2.0]]).expect_err("must be rejected");
         assert_eq!(err, PolygonError::Reflex { vertex: 3 });
         // The same shape clockwise: still input vertex 3.
-        let err = poly(&[[0.0, 2.0], [1.0, 1.0], [2.0, 2.0], [2.0, 0.0], [0.0, 0.0]])
-            .expect_err("must be rejected");
+        let err = poly(&[[0.0, 2.0], [1.0, 1.0], [2.0, 2.0], [2.0, 0.0], [0.0, 0.0]]).expect_err("must be rejected");
         assert_eq!(err, PolygonError::Reflex { vertex: 1 });
     }
 
@@ -577,10 +515,7 @@ mod tests {
             poly(&[[0.0, 0.0], [1.0, 1.0], [0.0, 0.0]]).expect_err("must be rejected"),
             PolygonError::TooFewPoints { distinct: 2 }
         );
-        assert_eq!(
-            poly(&[[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]).expect_err("must be rejected"),
-            PolygonError::ZeroArea
-        );
+        assert_eq!(poly(&[[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]]).expect_err("must be rejected"), PolygonError::ZeroArea);
         assert_eq!(
             poly(&[[0.0, 0.0], [f64::NAN, 1.0], [2.0, 0.0]]).expect_err("must be rejected"),
             PolygonError::NotFinite { vertex: 1 }
@@ -599,23 +534,13 @@ mod tests {
                 [t.cos(), t.sin()]
             })
             .collect();
-        assert_eq!(
-            poly(&star).expect_err("must be rejected"),
-            PolygonError::Winding { turns: 2 }
-        );
+        assert_eq!(poly(&star).expect_err("must be rejected"), PolygonError::Winding { turns: 2 });
     }
 
     #[test]
     fn a_spike_folds_back() {
-        let err =
-            poly(&[[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [1.0, 1.0]]).expect_err("must be rejected");
-        assert!(
-            matches!(
-                err,
-                PolygonError::FoldsBack { .. } | PolygonError::Reflex { .. }
-            ),
-            "{err:?}"
-        );
+        let err = poly(&[[0.0, 0.0], [2.0, 0.0], [1.0, 0.0], [1.0, 1.0]]).expect_err("must be rejected");
+        assert!(matches!(err, PolygonError::FoldsBack { .. } | PolygonError::Reflex { .. }), "{err:?}");
     }
 
     #[test]

@@ -69,14 +69,8 @@ pub struct Features {
 
 impl Features {
     pub const fn new() -> Self {
-        let filler = Feature::AngleAngle {
-            a_vertex: 0,
-            b_vertex: 0,
-        };
-        Self {
-            items: [filler; 2],
-            len: 0,
-        }
+        let filler = Feature::AngleAngle { a_vertex: 0, b_vertex: 0 };
+        Self { items: [filler; 2], len: 0 }
     }
 
     /// Adds `feature` unless it is already present; a third distinct feature

@@ -28,9 +28,7 @@ mod tests {
 
     #[test]
     fn power_laws_give_their_exponent() {
-        let quadratic: Vec<(f64, f64)> = (1..8)
-            .map(|k| (f64::from(1 << k), 3.0 * f64::from(1 << (2 * k))))
-            .collect();
+        let quadratic: Vec<(f64, f64)> = (1..8).map(|k| (f64::from(1 << k), 3.0 * f64::from(1 << (2 * k)))).collect();
         assert!((log_log_slope(&quadratic).expect("slope") - 2.0).abs() < 1e-12);
         assert_eq!(log_log_slope(&[(4.0, 1.0)]), None);
         assert_eq!(log_log_slope(&[(4.0, 1.0), (4.0, 2.0)]), None);

@@ -51,11 +51,7 @@ impl Vec2 {
     /// This vector scaled to length one, or zero if it has no length.
     pub fn normalized(self) -> Self {
         let len = self.length();
-        if len > 0.0 {
-            self * len.recip()
-        } else {
-            Self::ZERO
-        }
+        if len > 0.0 { self * len.recip() } else { Self::ZERO }
     }
 
     pub fn is_finite(self) -> bool {

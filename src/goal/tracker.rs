@@ -58,7 +58,9 @@ impl Tracker {
         t.progress.total = match &scene.goal {
             Goal::None => 0,
             Goal::Positioning { targets, .. } => targets.len(),
-            Goal::Sorting { zones, .. } => scene.objects.iter().filter(|o| zones.iter().any(|z| z.color_name == o.color_name)).count(),
+            Goal::Sorting { zones, .. } => {
+                scene.objects.iter().filter(|o| zones.iter().any(|z| z.color_name == o.color_name)).count()
+            }
             Goal::Steering(g) => g.waypoints.len() + 1,
             Goal::Gather { .. } => scene.objects.iter().filter(|o| o.body == crate::scene::BodyKind::Dynamic).count(),
             Goal::Region { .. } | Goal::SoftRegion { .. } | Goal::ClothFlat { .. } => 1,
@@ -137,7 +139,9 @@ impl Tracker {
             }
             Goal::Steering(g) => self.steer(world, g, &poses),
             Goal::Gather { center, radius, fraction, dwell_s } => {
-                let dynamic: Vec<usize> = (0..poses.len()).filter(|&i| world.scene().objects[i].body == crate::scene::BodyKind::Dynamic).collect();
+                let dynamic: Vec<usize> = (0..poses.len())
+                    .filter(|&i| world.scene().objects[i].body == crate::scene::BodyKind::Dynamic)
+                    .collect();
                 let mut inside = 0;
                 for &i in &dynamic {
                     let ok = (poses[i].position.truncate() - *center).length() <= *radius && resting(&poses[i]);
@@ -156,14 +160,17 @@ impl Tracker {
                 done
             }
             Goal::SoftRegion { body, min, max, dwell_s } => {
-                let ok = world.soft_center(*body).is_some_and(|c| c.x >= min.x && c.x <= max.x && c.y >= min.y && c.y <= max.y)
+                let ok = world
+                    .soft_center(*body)
+                    .is_some_and(|c| c.x >= min.x && c.x <= max.x && c.y >= min.y && c.y <= max.y)
                     && world.soft_max_speed(*body) < SOFT_REST_SPEED;
                 let done = self.soft_dwell_step(ok, dt, *dwell_s);
                 self.progress.placed = usize::from(done);
                 done
             }
             Goal::ClothFlat { body, min_area_fraction, dwell_s } => {
-                let ok = world.soft_max_speed(*body) < SOFT_REST_SPEED && world.soft_coverage(*body) >= *min_area_fraction;
+                let ok =
+                    world.soft_max_speed(*body) < SOFT_REST_SPEED && world.soft_coverage(*body) >= *min_area_fraction;
                 let done = self.soft_dwell_step(ok, dt, *dwell_s);
                 self.progress.placed = usize::from(done);
                 done

@@ -171,7 +171,8 @@ impl Planner {
             }
             Intent::Drag { .. } | Intent::Push { .. } => {
                 self.finger += self.velocity * dt;
-                let half = Vec2::new(session.scene().table.width, session.scene().table.depth) * 0.5 - Vec2::splat(0.01);
+                let half =
+                    Vec2::new(session.scene().table.width, session.scene().table.depth) * 0.5 - Vec2::splat(0.01);
                 self.finger = self.finger.clamp(-half, half);
                 vec![self.hand(session)]
             }
@@ -305,7 +306,11 @@ impl Planner {
 /// Where the contact acts, from the technique's feedback geometry: the mean
 /// of the points on objects (joint line ends) or of the cubes.
 fn acting_point(f: &Feedback) -> Option<Vec2> {
-    let pts: Vec<Vec2> = if f.lines.is_empty() { f.cubes.iter().map(|(c, _)| c.truncate()).collect() } else { f.lines.iter().map(|(_, b)| b.truncate()).collect() };
+    let pts: Vec<Vec2> = if f.lines.is_empty() {
+        f.cubes.iter().map(|(c, _)| c.truncate()).collect()
+    } else {
+        f.lines.iter().map(|(_, b)| b.truncate()).collect()
+    };
     if pts.is_empty() { None } else { Some(pts.iter().copied().sum::<Vec2>() / pts.len() as f32) }
 }
 
@@ -341,12 +346,16 @@ fn goal_for(scene: &Scene, tracker: &Tracker, i: usize, observed: &[Vec2]) -> Op
     match &scene.goal {
         // Soft-body goals concern no rigid object.
         Goal::None | Goal::SoftRegion { .. } | Goal::ClothFlat { .. } | Goal::Torn { .. } => None,
-        Goal::Positioning { targets, .. } => targets.iter().find(|t| t.object == i && !tracker.is_placed(i)).map(|t| t.position),
+        Goal::Positioning { targets, .. } => {
+            targets.iter().find(|t| t.object == i && !tracker.is_placed(i)).map(|t| t.position)
+        }
         Goal::Sorting { zones, .. } => {
             let o = &scene.objects[i];
             let p = observed[i];
             let mine: Vec<_> = zones.iter().filter(|z| z.color_name == o.color_name).collect();
-            if mine.iter().any(|z| z.contains(p) && inset(z.min, z.max, 0.03).is_some_and(|(a, b)| p.cmpge(a).all() && p.cmple(b).all())) {
+            if mine.iter().any(|z| {
+                z.contains(p) && inset(z.min, z.max, 0.03).is_some_and(|(a, b)| p.cmpge(a).all() && p.cmple(b).all())
+            }) {
                 return None;
             }
             // The nearest point well inside the nearest zone of its colour.
@@ -359,9 +368,7 @@ fn goal_for(scene: &Scene, tracker: &Tracker, i: usize, observed: &[Vec2]) -> Op
             let p = observed[i];
             ((p - *center).length() > radius * 0.7).then_some(*center)
         }
-        Goal::Region { object, min, max, .. } => {
-            (*object == i).then(|| (*min + *max) * 0.5)
-        }
+        Goal::Region { object, min, max, .. } => (*object == i).then(|| (*min + *max) * 0.5),
     }
 }
 

@@ -46,7 +46,15 @@ impl TrialRunner for ScriptedRunner {
             }
             None => None,
         };
-        let o = super::run_scripted_logged(&scene, technique_kind(spec.technique), spec.feedback, skill, spec.seed, limit, log.as_mut())?;
+        let o = super::run_scripted_logged(
+            &scene,
+            technique_kind(spec.technique),
+            spec.feedback,
+            skill,
+            spec.seed,
+            limit,
+            log.as_mut(),
+        )?;
         if let Some(log) = log {
             log.finish().context("writing the trial's frames")?;
         }
@@ -84,7 +92,10 @@ impl ReplayRunner {
             self.dir.join(format!("{task}.toml")),
         ];
         candidates.iter().find(|c| c.is_file()).cloned().with_context(|| {
-            format!("no gesture for this trial; looked for {}", candidates.iter().map(|c| c.display().to_string()).collect::<Vec<_>>().join(", "))
+            format!(
+                "no gesture for this trial; looked for {}",
+                candidates.iter().map(|c| c.display().to_string()).collect::<Vec<_>>().join(", ")
+            )
         })
     }
 }

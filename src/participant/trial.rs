@@ -18,7 +18,14 @@ pub struct TrialOutcome {
 }
 
 /// Runs one scripted trial.
-pub fn run_scripted(scene: &Scene, kind: TechniqueKind, feedback: bool, skill: Skill, seed: u64, time_limit_s: f64) -> Result<TrialOutcome, SessionError> {
+pub fn run_scripted(
+    scene: &Scene,
+    kind: TechniqueKind,
+    feedback: bool,
+    skill: Skill,
+    seed: u64,
+    time_limit_s: f64,
+) -> Result<TrialOutcome, SessionError> {
     run_scripted_logged(scene, kind, feedback, skill, seed, time_limit_s, None)
 }
 

@@ -2,7 +2,9 @@
 //! scene, its goal and a technique's feedback look. The demo, `screenshot`
 //! and the golden-image tests all draw through it.
 
-use super::draw_list::{Camera, ContactOverlay, Decal, DeformableDraw, DrawList, FeedbackDraw, MeshKind, ObjectDraw, Rgba, TableDraw};
+use super::draw_list::{
+    Camera, ContactOverlay, Decal, DeformableDraw, DrawList, FeedbackDraw, MeshKind, ObjectDraw, Rgba, TableDraw,
+};
 use crate::scene::{Goal, Scene, Shape};
 use crate::session::Session;
 use glam::{Mat4, Vec2, Vec3};
@@ -84,7 +86,11 @@ fn deformables(session: &Session) -> Vec<DeformableDraw> {
         .into_iter()
         .filter(|s| !s.triangles.is_empty() && s.positions.iter().all(|p| p.is_finite()))
         .map(|s| {
-            let color = if s.body < world.soft_body_count() { world.soft_spec(s.body).color.rgba } else { [0.8, 0.8, 0.8, 1.0] };
+            let color = if s.body < world.soft_body_count() {
+                world.soft_spec(s.body).color.rgba
+            } else {
+                [0.8, 0.8, 0.8, 1.0]
+            };
             DeformableDraw { positions: s.positions, triangles: s.triangles, color }
         })
         .collect()
@@ -111,9 +117,22 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
                 match o.shape {
                     Shape::Box { half_extents } => {
                         let angle = o.rotation.to_euler(glam::EulerRot::ZYX).0;
-                        out.push(Decal::Rect { center: t.position, z: lift, half: half_extents.truncate() + Vec2::splat(t.tolerance * 0.5), angle, color: c, outline: Some(0.004) });
+                        out.push(Decal::Rect {
+                            center: t.position,
+                            z: lift,
+                            half: half_extents.truncate() + Vec2::splat(t.tolerance * 0.5),
+                            angle,
+                            color: c,
+                            outline: Some(0.004),
+                        });
                     }
-                    _ => out.push(Decal::Disc { center: t.position, z: lift, radius: o.shape.footprint_radius() + t.tolerance * 0.5, color: c, ring: Some(0.004) }),
+                    _ => out.push(Decal::Disc {
+                        center: t.position,
+                        z: lift,
+                        radius: o.shape.footprint_radius() + t.tolerance * 0.5,
+                        color: c,
+                        ring: Some(0.004),
+                    }),
                 }
                 out.push(Decal::Disc { center: t.position, z: lift, radius: 0.003, color: c, ring: None });
             }
@@ -123,9 +142,23 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
                 let mut c = crate::scene::Color::parse(&z.color_name).map_or([0.5; 4], |c| c.rgba);
                 c[3] = 0.22;
                 let center = (z.min + z.max) * 0.5;
-                out.push(Decal::Rect { center, z: lift, half: (z.max - z.min) * 0.5, angle: 0.0, color: c, outline: None });
+                out.push(Decal::Rect {
+                    center,
+                    z: lift,
+                    half: (z.max - z.min) * 0.5,
+                    angle: 0.0,
+                    color: c,
+                    outline: None,
+                });
                 c[3] = 0.8;
-                out.push(Decal::Rect { center, z: lift * 2.0, half: (z.max - z.min) * 0.5 - Vec2::splat(0.003), angle: 0.0, color: c, outline: Some(0.004) });
+                out.push(Decal::Rect {
+                    center,
+                    z: lift * 2.0,
+                    half: (z.max - z.min) * 0.5 - Vec2::splat(0.003),
+                    angle: 0.0,
+                    color: c,
+                    outline: Some(0.004),
+                });
             }
         }
         Goal::Steering(g) => {
@@ -144,9 +177,18 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
             }
             out.push(Decal::Disc { center: g.finish, z: top, radius: g.finish_radius, color: TARGET_RED, ring: None });
         }
-        Goal::Gather { center, radius, .. } => out.push(Decal::Disc { center: *center, z: lift, radius: *radius, color: TARGET_RED, ring: Some(0.005) }),
+        Goal::Gather { center, radius, .. } => {
+            out.push(Decal::Disc { center: *center, z: lift, radius: *radius, color: TARGET_RED, ring: Some(0.005) });
+        }
         Goal::Region { min, max, .. } | Goal::SoftRegion { min, max, .. } => {
-            out.push(Decal::Rect { center: (*min + *max) * 0.5, z: lift, half: (*max - *min) * 0.5, angle: 0.0, color: TARGET_RED, outline: Some(0.005) });
+            out.push(Decal::Rect {
+                center: (*min + *max) * 0.5,
+                z: lift,
+                half: (*max - *min) * 0.5,
+                angle: 0.0,
+                color: TARGET_RED,
+                outline: Some(0.005),
+            });
         }
     }
     out

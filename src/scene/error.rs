@@ -16,12 +16,7 @@ pub enum SceneError {
     Parse { origin: String, message: String },
     /// A value that parses but makes no sense (negative mass, target off the table, ...).
     #[error("{origin}:{line}: field `{field}`: {message}")]
-    Invalid {
-        origin: String,
-        line: usize,
-        field: String,
-        message: String,
-    },
+    Invalid { origin: String, line: usize, field: String, message: String },
     #[error("no scene named `{name}`: looked for {tried}")]
     NotFound { name: String, tried: String },
 }

@@ -13,7 +13,7 @@ mod validate;
 pub use effects::{Effect, EffectSet};
 pub use error::SceneError;
 pub use model::{
-    BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind,
-    SortingZone, SteeringGoal, Table, Target,
+    BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
+    SteeringGoal, Table, Target,
 };
 pub use validate::{load, parse, resolve_path};

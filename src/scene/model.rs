@@ -133,21 +133,28 @@ impl Color {
             let c = |shift: u32| ((v >> shift) & 0xff) as f32 / 255.0;
             return Some(Color { rgba: [c(16), c(8), c(0), 1.0] });
         }
-        Self::NAMED
-            .iter()
-            .find(|(n, _)| *n == s)
-            .map(|(_, rgba)| Color { rgba: *rgba })
+        Self::NAMED.iter().find(|(n, _)| *n == s).map(|(_, rgba)| Color { rgba: *rgba })
     }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Shape {
-    Box { half_extents: Vec3 },
-    Sphere { radius: f32 },
+    Box {
+        half_extents: Vec3,
+    },
+    Sphere {
+        radius: f32,
+    },
     /// Axis along z (standing upright when unrotated).
-    Cylinder { radius: f32, half_height: f32 },
+    Cylinder {
+        radius: f32,
+        half_height: f32,
+    },
     /// Axis along z; `half_height` is half the straight part.
-    Capsule { radius: f32, half_height: f32 },
+    Capsule {
+        radius: f32,
+        half_height: f32,
+    },
 }
 
 impl Shape {

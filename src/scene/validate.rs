@@ -5,8 +5,8 @@ use super::effects::EffectSet;
 use super::error::SceneError;
 use super::file::{BodyKindFile, GoalFile, GoalKind, ObjectFile, SceneFile, ShapeKind, SoftBodyFile, SoftKindFile};
 use super::model::{
-    BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind,
-    SortingZone, SteeringGoal, Table, Target,
+    BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
+    SteeringGoal, Table, Target,
 };
 use glam::{EulerRot, Quat, Vec2, Vec3};
 use std::ops::Range;
@@ -26,10 +26,8 @@ pub fn resolve_path(name_or_path: &str) -> Result<PathBuf, SceneError> {
     } else {
         format!("{name_or_path}.toml")
     };
-    let candidates = [
-        PathBuf::from("tasks").join(&file),
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("tasks").join(&file),
-    ];
+    let candidates =
+        [PathBuf::from("tasks").join(&file), Path::new(env!("CARGO_MANIFEST_DIR")).join("tasks").join(&file)];
     for c in &candidates {
         if c.is_file() {
             return Ok(c.clone());
@@ -47,19 +45,14 @@ pub fn resolve_path(name_or_path: &str) -> Result<PathBuf, SceneError> {
 /// Resolves and loads a scene by name (`positioning`) or path.
 pub fn load(name_or_path: &str) -> Result<Scene, SceneError> {
     let path = resolve_path(name_or_path)?;
-    let text = std::fs::read_to_string(&path).map_err(|source| SceneError::Io {
-        path: path.clone(),
-        source,
-    })?;
+    let text = std::fs::read_to_string(&path).map_err(|source| SceneError::Io { path: path.clone(), source })?;
     parse(&text, &path.display().to_string())
 }
 
 /// Parses and validates scene TOML. `origin` names the file in errors.
 pub fn parse(text: &str, origin: &str) -> Result<Scene, SceneError> {
-    let raw: SceneFile = toml::from_str(text).map_err(|e| SceneError::Parse {
-        origin: origin.to_string(),
-        message: e.to_string().trim_end().to_string(),
-    })?;
+    let raw: SceneFile = toml::from_str(text)
+        .map_err(|e| SceneError::Parse { origin: origin.to_string(), message: e.to_string().trim_end().to_string() })?;
     Checker { text, origin }.scene(raw)
 }
 
@@ -111,7 +104,9 @@ impl Checker<'_> {
         let width = self.positive(&tspan, "table.size[0]", t.size[0])?;
         let depth = self.positive(&tspan, "table.size[1]", t.size[1])?;
         let table_color = match &t.color {
-            Some(c) => Color::parse(c).ok_or_else(|| self.err(&tspan, "table.color", format!("unknown colour `{c}`")))?,
+            Some(c) => {
+                Color::parse(c).ok_or_else(|| self.err(&tspan, "table.color", format!("unknown colour `{c}`")))?
+            }
             None => Color { rgba: [0.78, 0.80, 0.82, 1.0] },
         };
         let table = Table {
@@ -183,8 +178,14 @@ impl Checker<'_> {
         for (i, b) in raw.soft_bodies.into_iter().enumerate() {
             let span = b.span();
             let spec = self.soft_body(i, b, &table, effects)?;
-            if soft_bodies.iter().any(|o: &SoftBodySpec| o.name == spec.name) || objects.iter().any(|o| o.name == spec.name) {
-                return Err(self.err(&span, format!("soft_bodies[{i}].name"), format!("`{}` is already the name of an object or soft body", spec.name)));
+            if soft_bodies.iter().any(|o: &SoftBodySpec| o.name == spec.name)
+                || objects.iter().any(|o| o.name == spec.name)
+            {
+                return Err(self.err(
+                    &span,
+                    format!("soft_bodies[{i}].name"),
+                    format!("`{}` is already the name of an object or soft body", spec.name),
+                ));
             }
             soft_bodies.push(spec);
         }
@@ -219,7 +220,13 @@ impl Checker<'_> {
         })
     }
 
-    fn objects(&self, i: usize, o: Spanned<ObjectFile>, table: &Table, out: &mut Vec<ObjectSpec>) -> Result<(), SceneError> {
+    fn objects(
+        &self,
+        i: usize,
+        o: Spanned<ObjectFile>,
+        table: &Table,
+        out: &mut Vec<ObjectSpec>,
+    ) -> Result<(), SceneError> {
         let span = o.span();
         let o = o.into_inner();
         let f = |field: &str| format!("objects[{i}].{field}");
@@ -234,7 +241,9 @@ impl Checker<'_> {
                 }
                 Shape::Box { half_extents: Vec3::from(s) / 2.0 }
             }
-            ShapeKind::Sphere => Shape::Sphere { radius: self.positive(&span, &f("radius"), need(o.radius, "radius")?)? },
+            ShapeKind::Sphere => {
+                Shape::Sphere { radius: self.positive(&span, &f("radius"), need(o.radius, "radius")?)? }
+            }
             ShapeKind::Cylinder => Shape::Cylinder {
                 radius: self.positive(&span, &f("radius"), need(o.radius, "radius")?)?,
                 half_height: self.positive(&span, &f("height"), need(o.height, "height")?)? / 2.0,
@@ -255,7 +264,11 @@ impl Checker<'_> {
         };
         let color = Color::parse(&o.color).ok_or_else(|| {
             let names: Vec<&str> = Color::NAMED.iter().map(|(n, _)| *n).collect();
-            self.err(&span, f("color"), format!("unknown colour `{}` (use #rrggbb or one of {})", o.color, names.join(", ")))
+            self.err(
+                &span,
+                f("color"),
+                format!("unknown colour `{}` (use #rrggbb or one of {})", o.color, names.join(", ")),
+            )
         })?;
         let rot = o.rotation_deg.unwrap_or([0.0; 3]);
         for (k, v) in rot.iter().enumerate() {
@@ -284,7 +297,13 @@ impl Checker<'_> {
                 return Err(self.err(
                     &span,
                     f("position"),
-                    format!("({:.3}, {:.3}) lies off the table (±{:.3} × ±{:.3})", position.x, position.y, table.width / 2.0, table.depth / 2.0),
+                    format!(
+                        "({:.3}, {:.3}) lies off the table (±{:.3} × ±{:.3})",
+                        position.x,
+                        position.y,
+                        table.width / 2.0,
+                        table.depth / 2.0
+                    ),
                 ));
             }
             let name = if count == 1 { o.name.clone() } else { format!("{}{}", o.name, k + 1) };
@@ -300,7 +319,13 @@ impl Checker<'_> {
                 rotation,
                 body,
                 linear_damping: self.num(&span, &f("linear_damping"), o.linear_damping.unwrap_or(0.0), 0.0, 100.0)?,
-                angular_damping: self.num(&span, &f("angular_damping"), o.angular_damping.unwrap_or(0.0), 0.0, 100.0)?,
+                angular_damping: self.num(
+                    &span,
+                    &f("angular_damping"),
+                    o.angular_damping.unwrap_or(0.0),
+                    0.0,
+                    100.0,
+                )?,
             });
         }
         Ok(())
@@ -308,7 +333,13 @@ impl Checker<'_> {
 
     /// One `[[soft_bodies]]` entry. Its effect must be declared: a scene
     /// that does not ask for soft bodies never pays for them.
-    fn soft_body(&self, i: usize, b: Spanned<SoftBodyFile>, table: &Table, effects: EffectSet) -> Result<SoftBodySpec, SceneError> {
+    fn soft_body(
+        &self,
+        i: usize,
+        b: Spanned<SoftBodyFile>,
+        table: &Table,
+        effects: EffectSet,
+    ) -> Result<SoftBodySpec, SceneError> {
         let span = b.span();
         let b = b.into_inner();
         let f = |field: &str| format!("soft_bodies[{i}].{field}");
@@ -328,10 +359,14 @@ impl Checker<'_> {
         for (k, v) in b.size.iter().enumerate() {
             size[k] = self.positive(&span, &f(&format!("size[{k}]")), *v)?;
         }
-        let thickness = self.positive(&span, &f("thickness"), b.thickness.unwrap_or(match kind {
-            SoftKind::Cloth => 0.002,
-            SoftKind::Volume => 0.003,
-        }))?;
+        let thickness = self.positive(
+            &span,
+            &f("thickness"),
+            b.thickness.unwrap_or(match kind {
+                SoftKind::Cloth => 0.002,
+                SoftKind::Volume => 0.003,
+            }),
+        )?;
         if thickness > 0.05 {
             return Err(self.err(&span, f("thickness"), format!("{thickness} is out of range (up to 0.05 m)")));
         }
@@ -339,12 +374,20 @@ impl Checker<'_> {
         let spacing = if kind == SoftKind::Cloth { 0.02 } else { 0.015 };
         let resolution = if let Some(r) = &b.resolution {
             if r.len() != dims {
-                return Err(self.err(&span, f("resolution"), format!("needs {dims} entries, one per side, got {}", r.len())));
+                return Err(self.err(
+                    &span,
+                    f("resolution"),
+                    format!("needs {dims} entries, one per side, got {}", r.len()),
+                ));
             }
             let mut out = [1usize; 3];
             for (k, n) in r.iter().enumerate() {
                 if !(2..=128).contains(n) {
-                    return Err(self.err(&span, f(&format!("resolution[{k}]")), format!("{n} is out of range (2..=128)")));
+                    return Err(self.err(
+                        &span,
+                        f(&format!("resolution[{k}]")),
+                        format!("{n} is out of range (2..=128)"),
+                    ));
                 }
                 out[k] = *n as usize;
             }
@@ -366,14 +409,20 @@ impl Checker<'_> {
             self.num(&span, &f(&format!("position[{k}]")), *v, -100.0, 100.0)?;
         }
         if !table_contains(table, position.truncate()) {
-            return Err(self.err(&span, f("position"), format!("({:.3}, {:.3}) lies off the table", position.x, position.y)));
+            return Err(self.err(
+                &span,
+                f("position"),
+                format!("({:.3}, {:.3}) lies off the table", position.x, position.y),
+            ));
         }
         let measure = if dims == 2 { size.x * size.y } else { size.x * size.y * size.z };
         let mass = match (b.mass, b.density) {
             (Some(m), None) => self.positive(&span, &f("mass"), m)?,
             (None, Some(d)) => self.positive(&span, &f("density"), d)? * measure,
             (Some(_), Some(_)) => return Err(self.err(&span, f("density"), "give `mass` or `density`, not both")),
-            (None, None) => return Err(self.err(&span, f("mass"), format!("a {} needs `mass` (kg) or `density`", kind.name()))),
+            (None, None) => {
+                return Err(self.err(&span, f("mass"), format!("a {} needs `mass` (kg) or `density`", kind.name())));
+            }
         };
         if b.bending.is_some() && kind != SoftKind::Cloth {
             return Err(self.err(&span, f("bending"), "only a cloth has bending springs"));
@@ -382,10 +431,14 @@ impl Checker<'_> {
             return Err(self.err(&span, f("crumple"), "only a cloth can start crumpled"));
         }
         let tear_strain = match b.tear_strain {
-            Some(t) => Some(self.positive(&span, &f("tear_strain"), t).and_then(|t| self.num(&span, &f("tear_strain"), t, 0.0, 10.0))?),
+            Some(t) => Some(
+                self.positive(&span, &f("tear_strain"), t)
+                    .and_then(|t| self.num(&span, &f("tear_strain"), t, 0.0, 10.0))?,
+            ),
             None => None,
         };
-        let color = Color::parse(&b.color).ok_or_else(|| self.err(&span, f("color"), format!("unknown colour `{}`", b.color)))?;
+        let color = Color::parse(&b.color)
+            .ok_or_else(|| self.err(&span, f("color"), format!("unknown colour `{}`", b.color)))?;
         let spec = SoftBodySpec {
             name: b.name,
             kind,
@@ -393,7 +446,13 @@ impl Checker<'_> {
             resolution,
             position,
             mass,
-            stiffness: self.num(&span, &f("stiffness"), b.stiffness.unwrap_or(DEFAULT_SOFT_STIFFNESS_HZ), 0.1, 10_000.0)?,
+            stiffness: self.num(
+                &span,
+                &f("stiffness"),
+                b.stiffness.unwrap_or(DEFAULT_SOFT_STIFFNESS_HZ),
+                0.1,
+                10_000.0,
+            )?,
             bending: self.num(&span, &f("bending"), b.bending.unwrap_or(DEFAULT_CLOTH_BENDING_HZ), 0.0, 10_000.0)?,
             tear_strain,
             friction: self.num(&span, &f("friction"), b.friction.unwrap_or(0.6), 0.0, 10.0)?,
@@ -415,7 +474,13 @@ impl Checker<'_> {
         Ok(spec)
     }
 
-    fn goal(&self, g: Spanned<GoalFile>, table: &Table, objects: &[ObjectSpec], soft: &[SoftBodySpec]) -> Result<Goal, SceneError> {
+    fn goal(
+        &self,
+        g: Spanned<GoalFile>,
+        table: &Table,
+        objects: &[ObjectSpec],
+        soft: &[SoftBodySpec],
+    ) -> Result<Goal, SceneError> {
         let span = g.span();
         let g = g.into_inner();
         let dwell_s = self.num(&span, "goal.dwell_s", g.dwell_s.unwrap_or(0.5), 0.0, 60.0)?;
@@ -432,7 +497,17 @@ impl Checker<'_> {
                 return Err(self.err(sp, field, "must be finite"));
             }
             if !table_contains(table, v) {
-                return Err(self.err(sp, field, format!("({:.3}, {:.3}) lies off the table (±{:.3} × ±{:.3})", v.x, v.y, table.width / 2.0, table.depth / 2.0)));
+                return Err(self.err(
+                    sp,
+                    field,
+                    format!(
+                        "({:.3}, {:.3}) lies off the table (±{:.3} × ±{:.3})",
+                        v.x,
+                        v.y,
+                        table.width / 2.0,
+                        table.depth / 2.0
+                    ),
+                ));
             }
             Ok(v)
         };
@@ -440,20 +515,27 @@ impl Checker<'_> {
             GoalKind::None => Goal::None,
             GoalKind::Positioning => {
                 if g.targets.is_empty() {
-                    return Err(self.err(&span, "goal.targets", "a positioning goal needs at least one [[goal.targets]]"));
+                    return Err(self.err(
+                        &span,
+                        "goal.targets",
+                        "a positioning goal needs at least one [[goal.targets]]",
+                    ));
                 }
                 let mut targets = Vec::new();
                 for (i, t) in g.targets.into_iter().enumerate() {
                     let tspan = t.span();
                     let t = t.into_inner();
-                    let object = objects
-                        .iter()
-                        .position(|o| o.name == t.object)
-                        .ok_or_else(|| self.err(&tspan, format!("goal.targets[{i}].object"), format!("no object named `{}`", t.object)))?;
+                    let object = objects.iter().position(|o| o.name == t.object).ok_or_else(|| {
+                        self.err(&tspan, format!("goal.targets[{i}].object"), format!("no object named `{}`", t.object))
+                    })?;
                     targets.push(Target {
                         object,
                         position: on_table(t.position, &tspan, &format!("goal.targets[{i}].position"))?,
-                        tolerance: self.positive(&tspan, &format!("goal.targets[{i}].tolerance"), t.tolerance.unwrap_or(0.015))?,
+                        tolerance: self.positive(
+                            &tspan,
+                            &format!("goal.targets[{i}].tolerance"),
+                            t.tolerance.unwrap_or(0.015),
+                        )?,
                     });
                 }
                 Goal::Positioning { targets, dwell_s }
@@ -472,7 +554,11 @@ impl Checker<'_> {
                         return Err(self.err(&zspan, format!("goal.zones[{i}]"), "min must be below max on both axes"));
                     }
                     if Color::parse(&z.color).is_none() {
-                        return Err(self.err(&zspan, format!("goal.zones[{i}].color"), format!("unknown colour `{}`", z.color)));
+                        return Err(self.err(
+                            &zspan,
+                            format!("goal.zones[{i}].color"),
+                            format!("unknown colour `{}`", z.color),
+                        ));
                     }
                     zones.push(SortingZone { color_name: z.color, min, max });
                 }
@@ -488,7 +574,11 @@ impl Checker<'_> {
                 for (i, w) in g.waypoints.iter().enumerate() {
                     waypoints.push(on_table(*w, &span, &format!("goal.waypoints[{i}]"))?);
                 }
-                let finish = on_table(g.finish.ok_or_else(|| self.err(&span, "goal.finish", "a steering goal needs `finish`"))?, &span, "goal.finish")?;
+                let finish = on_table(
+                    g.finish.ok_or_else(|| self.err(&span, "goal.finish", "a steering goal needs `finish`"))?,
+                    &span,
+                    "goal.finish",
+                )?;
                 Goal::Steering(SteeringGoal {
                     object,
                     platform,
@@ -499,14 +589,30 @@ impl Checker<'_> {
                 })
             }
             GoalKind::Gather => Goal::Gather {
-                center: on_table(g.center.ok_or_else(|| self.err(&span, "goal.center", "a gather goal needs `center`"))?, &span, "goal.center")?,
-                radius: self.positive(&span, "goal.radius", g.radius.ok_or_else(|| self.err(&span, "goal.radius", "a gather goal needs `radius`"))?)?,
+                center: on_table(
+                    g.center.ok_or_else(|| self.err(&span, "goal.center", "a gather goal needs `center`"))?,
+                    &span,
+                    "goal.center",
+                )?,
+                radius: self.positive(
+                    &span,
+                    "goal.radius",
+                    g.radius.ok_or_else(|| self.err(&span, "goal.radius", "a gather goal needs `radius`"))?,
+                )?,
                 fraction: self.num(&span, "goal.fraction", g.fraction.unwrap_or(0.8), 0.0, 1.0)?,
                 dwell_s,
             },
             GoalKind::Region => {
-                let min = on_table(g.min.ok_or_else(|| self.err(&span, "goal.min", "a region goal needs `min`"))?, &span, "goal.min")?;
-                let max = on_table(g.max.ok_or_else(|| self.err(&span, "goal.max", "a region goal needs `max`"))?, &span, "goal.max")?;
+                let min = on_table(
+                    g.min.ok_or_else(|| self.err(&span, "goal.min", "a region goal needs `min`"))?,
+                    &span,
+                    "goal.min",
+                )?;
+                let max = on_table(
+                    g.max.ok_or_else(|| self.err(&span, "goal.max", "a region goal needs `max`"))?,
+                    &span,
+                    "goal.max",
+                )?;
                 // The named thing may be a soft body (a block squeezed into a cavity).
                 if let Some(body) = g.object.as_ref().and_then(|n| soft.iter().position(|b| &b.name == n)) {
                     Goal::SoftRegion { body, min, max, dwell_s }
@@ -516,23 +622,40 @@ impl Checker<'_> {
                 }
             }
             GoalKind::ClothFlat | GoalKind::Torn => {
-                let name = g.body.as_ref().ok_or_else(|| self.err(&span, "goal.body", "this goal needs `body`, the name of a soft body"))?;
-                let body = soft.iter().position(|b| &b.name == name).ok_or_else(|| self.err(&span, "goal.body", format!("no soft body named `{name}`")))?;
+                let name = g
+                    .body
+                    .as_ref()
+                    .ok_or_else(|| self.err(&span, "goal.body", "this goal needs `body`, the name of a soft body"))?;
+                let body = soft
+                    .iter()
+                    .position(|b| &b.name == name)
+                    .ok_or_else(|| self.err(&span, "goal.body", format!("no soft body named `{name}`")))?;
                 if g.kind == GoalKind::ClothFlat {
                     if soft[body].kind != SoftKind::Cloth {
                         return Err(self.err(&span, "goal.body", format!("`{name}` is not a cloth")));
                     }
-                    let min_area_fraction = self.num(&span, "goal.min_area_fraction", g.min_area_fraction.unwrap_or(0.9), 0.01, 1.0)?;
+                    let min_area_fraction =
+                        self.num(&span, "goal.min_area_fraction", g.min_area_fraction.unwrap_or(0.9), 0.01, 1.0)?;
                     Goal::ClothFlat { body, min_area_fraction, dwell_s }
                 } else {
                     if soft[body].tear_strain.is_none() {
-                        return Err(self.err(&span, "goal.body", format!("`{name}` cannot tear: give it a `tear_strain`")));
+                        return Err(self.err(
+                            &span,
+                            "goal.body",
+                            format!("`{name}` cannot tear: give it a `tear_strain`"),
+                        ));
                     }
                     let pieces = g.pieces.unwrap_or(2);
                     if !(2..=100).contains(&pieces) {
                         return Err(self.err(&span, "goal.pieces", format!("{pieces} is out of range (2..=100)")));
                     }
-                    let min_piece_fraction = self.num(&span, "goal.min_piece_fraction", g.min_piece_fraction.unwrap_or(0.1), 0.0, 1.0 / pieces as f32)?;
+                    let min_piece_fraction = self.num(
+                        &span,
+                        "goal.min_piece_fraction",
+                        g.min_piece_fraction.unwrap_or(0.1),
+                        0.0,
+                        1.0 / pieces as f32,
+                    )?;
                     Goal::Torn { body, pieces: pieces as usize, min_piece_fraction }
                 }
             }

@@ -5,7 +5,9 @@
 use crate::goal::{Progress, Tracker};
 use crate::scene::Scene;
 use crate::surface::{ContactImage, Gesture, Hand, RasterParams, Sensor, rasterize_into};
-use crate::technique::{ConfigError, Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use crate::technique::{
+    ConfigError, Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind,
+};
 use crate::vision::{Pipeline, VisionFrame, VisionParams};
 use crate::world::{World, WorldError};
 use std::time::Instant;
@@ -35,7 +37,13 @@ pub struct SessionOptions {
 
 impl Default for SessionOptions {
     fn default() -> Self {
-        SessionOptions { config: None, sensor_px: (640, 480), raster: RasterParams::default(), vision: VisionParams::default(), measure_penetration: false }
+        SessionOptions {
+            config: None,
+            sensor_px: (640, 480),
+            raster: RasterParams::default(),
+            vision: VisionParams::default(),
+            measure_penetration: false,
+        }
     }
 }
 
@@ -83,7 +91,11 @@ pub struct Session {
 
 impl std::fmt::Debug for Session {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Session").field("scene", &self.scene.name).field("technique", &self.kind).field("frames", &self.frames).finish_non_exhaustive()
+        f.debug_struct("Session")
+            .field("scene", &self.scene.name)
+            .field("technique", &self.kind)
+            .field("frames", &self.frames)
+            .finish_non_exhaustive()
     }
 }
 

@@ -46,7 +46,11 @@ pub fn write_figure(design: &StudyDesign, summary: &[SummaryRow], png: &Path, sv
 }
 
 fn ensure_font(path: &Path) -> Result<(), StudyError> {
-    if crate::plot_font::ensure_font() { Ok(()) } else { Err(StudyError::Plot { path: path.to_owned(), message: "the bundled font did not load".into() }) }
+    if crate::plot_font::ensure_font() {
+        Ok(())
+    } else {
+        Err(StudyError::Plot { path: path.to_owned(), message: "the bundled font did not load".into() })
+    }
 }
 
 /// `sorting` → `Sorting`, for panel captions.
@@ -59,10 +63,15 @@ fn feedback_style(on: bool) -> (RGBColor, &'static str) {
     if on { (FEEDBACK_ON, "Feedback on (FB)") } else { (FEEDBACK_OFF, "Feedback off") }
 }
 
-fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, design: &StudyDesign, summary: &[SummaryRow]) -> Result<(), String> {
+fn draw<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    design: &StudyDesign,
+    summary: &[SummaryRow],
+) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     root.fill(&WHITE).map_err(e)?;
-    let root = root.titled("Task completion time (mean and 95% CI over participants)", (FONT, TITLE_SIZE)).map_err(e)?;
+    let root =
+        root.titled("Task completion time (mean and 95% CI over participants)", (FONT, TITLE_SIZE)).map_err(e)?;
     let (_, height) = root.dim_in_pixel();
     let (plots, legend) = root.split_vertically(height.saturating_sub(52));
     let panels = plots.split_evenly((1, design.tasks.len().max(1)));
@@ -74,7 +83,11 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, design: &StudyDesign,
 
     for (panel, task) in panels.iter().zip(&design.tasks) {
         let cell = |t, fb| summary.iter().find(|r| r.task == *task && r.technique == t && r.feedback == fb);
-        let top = summary.iter().filter(|r| r.task == *task).filter_map(|r| r.ci95_high_s.or(r.mean_s)).fold(0.0f64, f64::max);
+        let top = summary
+            .iter()
+            .filter(|r| r.task == *task)
+            .filter_map(|r| r.ci95_high_s.or(r.mean_s))
+            .fold(0.0f64, f64::max);
         let y_max = if top > 0.0 { top * 1.12 } else { 1.0 };
         let n = techniques.len();
         let mut chart = ChartBuilder::on(panel)
@@ -86,7 +99,11 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, design: &StudyDesign,
             .map_err(e)?;
         let label = |x: &f64| {
             let i = x.round();
-            if (x - i).abs() < 1e-6 && i >= 0.0 && (i as usize) < n { techniques[i as usize].label().to_owned() } else { String::new() }
+            if (x - i).abs() < 1e-6 && i >= 0.0 && (i as usize) < n {
+                techniques[i as usize].label().to_owned()
+            } else {
+                String::new()
+            }
         };
         chart
             .configure_mesh()
@@ -110,13 +127,19 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, design: &StudyDesign,
                 let x0 = ti as f64 - group_width / 2.0 + li as f64 * bar_width;
                 let (x0, x1) = (x0 + 0.02, x0 + bar_width - 0.02);
                 let (color, _) = feedback_style(fb);
-                chart.draw_series(std::iter::once(Rectangle::new([(x0, 0.0), (x1, mean)], color.filled()))).map_err(e)?;
+                chart
+                    .draw_series(std::iter::once(Rectangle::new([(x0, 0.0), (x1, mean)], color.filled())))
+                    .map_err(e)?;
                 if let (Some(lo), Some(hi)) = (row.ci95_low_s, row.ci95_high_s) {
                     let xc = f64::midpoint(x0, x1);
                     let cap = (x1 - x0) * 0.25;
                     let style = BLACK.stroke_width(2);
                     let lo = lo.max(0.0);
-                    let whisker = [vec![(xc, lo), (xc, hi)], vec![(xc - cap, lo), (xc + cap, lo)], vec![(xc - cap, hi), (xc + cap, hi)]];
+                    let whisker = [
+                        vec![(xc, lo), (xc, hi)],
+                        vec![(xc - cap, lo), (xc + cap, lo)],
+                        vec![(xc - cap, hi), (xc + cap, hi)],
+                    ];
                     chart.draw_series(whisker.into_iter().map(|p| PathElement::new(p, style))).map_err(e)?;
                 }
             }

@@ -18,8 +18,8 @@ use super::design::{Shard, StudyDesign};
 use super::error::StudyError;
 use super::figure::write_figure;
 use super::output::{
-    FIGURE_PNG, FIGURE_SVG, RUN_TOML, RunFile, SUMMARY_CSV, TRIALS_CSV, TrialRow, TrialsWriter, log_error, read_trials, recover_trials,
-    write_trials,
+    FIGURE_PNG, FIGURE_SVG, RUN_TOML, RunFile, SUMMARY_CSV, TRIALS_CSV, TrialRow, TrialsWriter, log_error, read_trials,
+    recover_trials, write_trials,
 };
 use super::summary::{summarize, write_summary};
 use super::trial::{TrialRunner, TrialSpec};
@@ -74,7 +74,12 @@ pub struct RunOutcome {
 
 /// Starts a run in `out_dir` (created if missing). Refuses a folder that
 /// already holds a run: use [`resume_study`] for that.
-pub fn run_study(design: &StudyDesign, out_dir: &Path, runner: &dyn TrialRunner, options: &RunOptions) -> Result<RunOutcome, StudyError> {
+pub fn run_study(
+    design: &StudyDesign,
+    out_dir: &Path,
+    runner: &dyn TrialRunner,
+    options: &RunOptions,
+) -> Result<RunOutcome, StudyError> {
     design.validate()?;
     if out_dir.join(RUN_TOML).exists() || out_dir.join(TRIALS_CSV).exists() {
         return Err(StudyError::AlreadyExists { path: out_dir.to_owned() });
@@ -121,7 +126,11 @@ pub fn merge(out_dir: &Path, shard_dirs: &[PathBuf]) -> Result<MergeOutcome, Stu
     for dir in shard_dirs {
         let run = RunFile::load(&dir.join(RUN_TOML))?;
         if run.design != design {
-            return Err(StudyError::Merge(format!("{} was run from a different design than {}", dir.display(), first.display())));
+            return Err(StudyError::Merge(format!(
+                "{} was run from a different design than {}",
+                dir.display(),
+                first.display()
+            )));
         }
         let shard = run.shard.unwrap_or(Shard::WHOLE);
         let path = dir.join(TRIALS_CSV);
@@ -187,7 +196,13 @@ fn index_by_key(trials: &[TrialSpec]) -> HashMap<Key, usize> {
 }
 
 /// The trial index of a row, if the row belongs to this design and shard.
-fn check_row(path: &Path, trials: &[TrialSpec], index_of: &HashMap<Key, usize>, shard: Shard, row: &TrialRow) -> Result<usize, StudyError> {
+fn check_row(
+    path: &Path,
+    trials: &[TrialSpec],
+    index_of: &HashMap<Key, usize>,
+    shard: Shard,
+    row: &TrialRow,
+) -> Result<usize, StudyError> {
     let name = format!("row P{} #{}", row.participant, row.order_index);
     let Some(&index) = index_of.get(&(row.participant, row.order_index)) else {
         return Err(StudyError::mismatch(path, format!("{name} is not a trial of this run's design")));
@@ -204,7 +219,12 @@ fn check_row(path: &Path, trials: &[TrialSpec], index_of: &HashMap<Key, usize>, 
     Ok(index)
 }
 
-fn execute(dir: &Path, run: &RunFile, runner: &dyn TrialRunner, options: &RunOptions) -> Result<RunOutcome, StudyError> {
+fn execute(
+    dir: &Path,
+    run: &RunFile,
+    runner: &dyn TrialRunner,
+    options: &RunOptions,
+) -> Result<RunOutcome, StudyError> {
     let started = Instant::now();
     let trials = run.design.trials();
     let shard = run.shard.unwrap_or(Shard::WHOLE);
@@ -231,7 +251,8 @@ fn execute(dir: &Path, run: &RunFile, runner: &dyn TrialRunner, options: &RunOpt
     let mut failed = 0usize;
     let mut written = 0usize;
     if !todo.is_empty() {
-        let jobs = if options.jobs == 0 { std::thread::available_parallelism().map_or(1, usize::from) } else { options.jobs };
+        let jobs =
+            if options.jobs == 0 { std::thread::available_parallelism().map_or(1, usize::from) } else { options.jobs };
         let jobs = jobs.clamp(1, todo.len());
         let next = AtomicUsize::new(0);
         let stop = AtomicBool::new(false);
@@ -336,8 +357,9 @@ fn progress_bar(wanted: bool, todo: u64, already_done: usize) -> ProgressBar {
         return ProgressBar::hidden();
     }
     let bar = ProgressBar::with_draw_target(Some(todo), ProgressDrawTarget::stderr());
-    let style = ProgressStyle::with_template("{prefix}[{elapsed_precise}] {wide_bar} {pos}/{len} trials, ETA {eta} {msg}")
-        .unwrap_or_else(|_| ProgressStyle::default_bar());
+    let style =
+        ProgressStyle::with_template("{prefix}[{elapsed_precise}] {wide_bar} {pos}/{len} trials, ETA {eta} {msg}")
+            .unwrap_or_else(|_| ProgressStyle::default_bar());
     bar.set_style(style);
     if already_done > 0 {
         bar.set_prefix(format!("(resumed after {already_done}) "));

@@ -129,15 +129,18 @@ pub fn summarize(design: &StudyDesign, rows: &[TrialRow]) -> Vec<SummaryRow> {
     for task in &design.tasks {
         for &technique in &design.techniques {
             for &feedback in &design.feedback {
-                let cell: Vec<&TrialRow> =
-                    rows.iter().filter(|r| !r.practice && r.task == *task && r.technique == technique && r.feedback == feedback).collect();
+                let cell: Vec<&TrialRow> = rows
+                    .iter()
+                    .filter(|r| !r.practice && r.task == *task && r.technique == technique && r.feedback == feedback)
+                    .collect();
                 let mut per_participant: BTreeMap<u32, Vec<f64>> = BTreeMap::new();
                 for r in &cell {
                     if let Some(t) = r.completion_time_s {
                         per_participant.entry(r.participant).or_default().push(t);
                     }
                 }
-                let means: Vec<f64> = per_participant.values().map(|ts| ts.iter().sum::<f64>() / ts.len() as f64).collect();
+                let means: Vec<f64> =
+                    per_participant.values().map(|ts| ts.iter().sum::<f64>() / ts.len() as f64).collect();
                 let stats = describe(&means);
                 let count = |f: fn(&TrialRow) -> bool| cell.iter().filter(|r| f(r)).count() as u32;
                 out.push(SummaryRow {

@@ -65,7 +65,10 @@ impl FromStr for Technique {
     /// Case-insensitive; surrounding spaces ignored.
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         let t = s.trim();
-        Technique::ALL.into_iter().find(|k| k.name().eq_ignore_ascii_case(t)).ok_or_else(|| UnknownTechnique(s.to_owned()))
+        Technique::ALL
+            .into_iter()
+            .find(|k| k.name().eq_ignore_ascii_case(t))
+            .ok_or_else(|| UnknownTechnique(s.to_owned()))
     }
 }
 

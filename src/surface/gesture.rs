@@ -66,18 +66,9 @@ pub enum GestureError {
         source: std::io::Error,
     },
     #[error("{origin}{}: {message}", at_line(.line.as_ref()))]
-    Syntax {
-        origin: String,
-        line: Option<usize>,
-        message: String,
-    },
+    Syntax { origin: String, line: Option<usize>, message: String },
     #[error("{origin}{}: field `{field}`: {problem}", at_line(.line.as_ref()))]
-    Field {
-        origin: String,
-        line: Option<usize>,
-        field: String,
-        problem: String,
-    },
+    Field { origin: String, line: Option<usize>, field: String, problem: String },
 }
 
 fn at_line(line: Option<&usize>) -> String {
@@ -138,11 +129,7 @@ impl Track {
         Some(Hand {
             id: self.id,
             kind: self.kind,
-            pose: Pose {
-                x: key.pos[0] as f32,
-                y: key.pos[1] as f32,
-                angle: key.angle_deg.to_radians() as f32,
-            },
+            pose: Pose { x: key.pos[0] as f32, y: key.pos[1] as f32, angle: key.angle_deg.to_radians() as f32 },
             spread: key.spread as f32,
             scale: key.scale as f32,
             pressure: key.pressure as f32,
@@ -181,20 +168,16 @@ impl Gesture {
     pub fn load(path: impl AsRef<Path>) -> Result<Self, GestureError> {
         let path = path.as_ref();
         let origin = path.display().to_string();
-        let text = std::fs::read_to_string(path).map_err(|source| GestureError::Io {
-            origin: origin.clone(),
-            source,
-        })?;
+        let text =
+            std::fs::read_to_string(path).map_err(|source| GestureError::Io { origin: origin.clone(), source })?;
         parse(&text, &origin)
     }
 
     /// Writes the gesture in the version-1 format.
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), GestureError> {
         let path = path.as_ref();
-        std::fs::write(path, self.to_string()).map_err(|source| GestureError::Io {
-            origin: path.display().to_string(),
-            source,
-        })
+        std::fs::write(path, self.to_string())
+            .map_err(|source| GestureError::Io { origin: path.display().to_string(), source })
     }
 
     pub fn tracks(&self) -> &[Track] {
@@ -208,10 +191,7 @@ impl Gesture {
 
     /// The hands touching at time `t`, in file order.
     pub fn sample(&self, t: f64) -> Vec<Hand> {
-        self.tracks
-            .iter()
-            .filter_map(|track| track.sample(t))
-            .collect()
+        self.tracks.iter().filter_map(|track| track.sample(t)).collect()
     }
 }
 
@@ -228,10 +208,7 @@ impl fmt::Display for Float {
 
 impl fmt::Display for Gesture {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        writeln!(
-            f,
-            "# surfacelab gesture; format described in src/surface/gesture.rs"
-        )?;
+        writeln!(f, "# surfacelab gesture; format described in src/surface/gesture.rs")?;
         writeln!(f, "format = \"{FORMAT}\"")?;
         writeln!(f, "version = {VERSION}")?;
         for track in &self.tracks {
@@ -307,12 +284,7 @@ impl Reader<'_> {
         self.text.as_bytes()[..end].split(|&b| b == b'\n').count()
     }
 
-    fn field<T>(
-        &self,
-        field: impl Into<String>,
-        at: Option<&Spanned<T>>,
-        problem: impl Into<String>,
-    ) -> GestureError {
+    fn field<T>(&self, field: impl Into<String>, at: Option<&Spanned<T>>, problem: impl Into<String>) -> GestureError {
         GestureError::Field {
             origin: self.origin.to_owned(),
             line: at.map(|s| self.line(s.span().start)),
@@ -322,27 +294,13 @@ impl Reader<'_> {
     }
 
     /// A float field: finite and within `lo..=hi`.
-    fn number(
-        &self,
-        field: &str,
-        value: &Spanned<f64>,
-        lo: f64,
-        hi: f64,
-    ) -> Result<f64, GestureError> {
+    fn number(&self, field: &str, value: &Spanned<f64>, lo: f64, hi: f64) -> Result<f64, GestureError> {
         let v = *value.get_ref();
         if !v.is_finite() {
-            return Err(self.field(
-                field,
-                Some(value),
-                format!("must be a finite number, found {v}"),
-            ));
+            return Err(self.field(field, Some(value), format!("must be a finite number, found {v}")));
         }
         if !(lo..=hi).contains(&v) {
-            return Err(self.field(
-                field,
-                Some(value),
-                format!("{v} is out of range {lo}..={hi}"),
-            ));
+            return Err(self.field(field, Some(value), format!("{v} is out of range {lo}..={hi}")));
         }
         Ok(v)
     }
@@ -352,10 +310,8 @@ fn parse(text: &str, origin: &str) -> Result<Gesture, GestureError> {
     let r = Reader { text, origin };
     let raw: RawFile = toml::from_str(text).map_err(|e| {
         let line = e.span().map(|s| r.line(s.start));
-        let source_line = line
-            .and_then(|l| text.lines().nth(l - 1))
-            .map(|s| format!(" (at `{}`)", s.trim()))
-            .unwrap_or_default();
+        let source_line =
+            line.and_then(|l| text.lines().nth(l - 1)).map(|s| format!(" (at `{}`)", s.trim())).unwrap_or_default();
         GestureError::Syntax {
             origin: origin.to_owned(),
             line,
@@ -365,18 +321,10 @@ fn parse(text: &str, origin: &str) -> Result<Gesture, GestureError> {
 
     match &raw.format {
         None => {
-            return Err(r.field(
-                "format",
-                None::<&Spanned<()>>,
-                format!("missing; expected \"{FORMAT}\""),
-            ));
+            return Err(r.field("format", None::<&Spanned<()>>, format!("missing; expected \"{FORMAT}\"")));
         }
         Some(f) if f.get_ref().as_str() != Some(FORMAT) => {
-            return Err(r.field(
-                "format",
-                Some(f),
-                format!("expected \"{FORMAT}\", found {}", f.get_ref()),
-            ));
+            return Err(r.field("format", Some(f), format!("expected \"{FORMAT}\", found {}", f.get_ref())));
         }
         Some(_) => {}
     }
@@ -392,10 +340,7 @@ fn parse(text: &str, origin: &str) -> Result<Gesture, GestureError> {
             return Err(r.field(
                 "version",
                 Some(v),
-                format!(
-                    "unsupported version {}; this build reads version {VERSION}",
-                    v.get_ref()
-                ),
+                format!("unsupported version {}; this build reads version {VERSION}", v.get_ref()),
             ));
         }
         Some(_) => {}
@@ -435,11 +380,7 @@ fn parse(text: &str, origin: &str) -> Result<Gesture, GestureError> {
 fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureError> {
     let path = format!("hands[{i}]");
     let id = u32::try_from(*hand.id.get_ref()).map_err(|_| {
-        r.field(
-            format!("{path}.id"),
-            Some(&hand.id),
-            format!("{} is not in 0..=4294967295", hand.id.get_ref()),
-        )
+        r.field(format!("{path}.id"), Some(&hand.id), format!("{} is not in 0..=4294967295", hand.id.get_ref()))
     })?;
     let name = hand.kind.get_ref().as_str();
     let mut kind = HandKind::from_name(name).ok_or_else(|| {
@@ -447,24 +388,14 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
         r.field(
             format!("{path}.kind"),
             Some(&hand.kind),
-            format!(
-                "unknown hand kind \"{name}\"; expected one of {}",
-                known.join(", ")
-            ),
+            format!("unknown hand kind \"{name}\"; expected one of {}", known.join(", ")),
         )
     })?;
     match (&mut kind, &hand.fingers) {
         (HandKind::Fingertips(n), Some(f)) => {
-            *n = u8::try_from(*f.get_ref())
-                .ok()
-                .filter(|n| (1..=5).contains(n))
-                .ok_or_else(|| {
-                    r.field(
-                        format!("{path}.fingers"),
-                        Some(f),
-                        format!("{} is out of range 1..=5", f.get_ref()),
-                    )
-                })?;
+            *n = u8::try_from(*f.get_ref()).ok().filter(|n| (1..=5).contains(n)).ok_or_else(|| {
+                r.field(format!("{path}.fingers"), Some(f), format!("{} is out of range 1..=5", f.get_ref()))
+            })?;
         }
         (_, Some(f)) => {
             return Err(r.field(
@@ -478,11 +409,7 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
 
     let raw_keys = hand.keys.get_ref();
     if raw_keys.is_empty() {
-        return Err(r.field(
-            format!("{path}.keys"),
-            Some(&hand.keys),
-            "needs at least one key",
-        ));
+        return Err(r.field(format!("{path}.keys"), Some(&hand.keys), "needs at least one key"));
     }
     let mut keys: Vec<Key> = Vec::with_capacity(raw_keys.len());
     for (j, k) in raw_keys.iter().enumerate() {
@@ -495,21 +422,14 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
             return Err(r.field(
                 at("t"),
                 Some(&k.t),
-                format!(
-                    "keys out of time order: t = {t} does not come after the previous key's t = {}",
-                    p.t
-                ),
+                format!("keys out of time order: t = {t} does not come after the previous key's t = {}", p.t),
             ));
         }
         let pos = match (&k.pos, previous) {
             (Some(p), _) => {
                 let v = *p.get_ref();
                 if !v.iter().all(|c| c.is_finite()) {
-                    return Err(r.field(
-                        at("pos"),
-                        Some(p),
-                        format!("must be finite, found [{}, {}]", v[0], v[1]),
-                    ));
+                    return Err(r.field(at("pos"), Some(p), format!("must be finite, found [{}, {}]", v[0], v[1])));
                 }
                 v
             }
@@ -520,24 +440,11 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
             Some(v) => r.number(&at(name), v, lo, hi),
             None => Ok(default),
         };
-        let base = previous.unwrap_or(Key {
-            t,
-            pos,
-            angle_deg: 0.0,
-            spread: 1.0,
-            scale: 1.0,
-            pressure: 1.0,
-        });
+        let base = previous.unwrap_or(Key { t, pos, angle_deg: 0.0, spread: 1.0, scale: 1.0, pressure: 1.0 });
         keys.push(Key {
             t,
             pos,
-            angle_deg: or(
-                &k.angle_deg,
-                "angle_deg",
-                f64::MIN,
-                f64::MAX,
-                base.angle_deg,
-            )?,
+            angle_deg: or(&k.angle_deg, "angle_deg", f64::MIN, f64::MAX, base.angle_deg)?,
             spread: or(&k.spread, "spread", 0.0, f64::MAX, base.spread)?,
             scale: or(&k.scale, "scale", f64::MIN_POSITIVE, f64::MAX, base.scale)?,
             pressure: or(&k.pressure, "pressure", 0.0, 1.0, base.pressure)?,
@@ -589,14 +496,7 @@ impl GestureRecorder {
         let t = t - *self.start.get_or_insert(t);
         let mut open = Vec::with_capacity(hands.len());
         for hand in hands {
-            let values = [
-                hand.pose.x,
-                hand.pose.y,
-                hand.pose.angle,
-                hand.spread,
-                hand.scale,
-                hand.pressure,
-            ];
+            let values = [hand.pose.x, hand.pose.y, hand.pose.angle, hand.spread, hand.scale, hand.pressure];
             if !values.iter().all(|v| v.is_finite()) || open.iter().any(|&(id, _)| id == hand.id) {
                 continue;
             }
@@ -606,29 +506,19 @@ impl GestureRecorder {
             };
             let key = Key {
                 t,
-                pos: [
-                    round_to(f64::from(hand.pose.x), 1e-6),
-                    round_to(f64::from(hand.pose.y), 1e-6),
-                ],
+                pos: [round_to(f64::from(hand.pose.x), 1e-6), round_to(f64::from(hand.pose.y), 1e-6)],
                 angle_deg: round_to(f64::from(hand.pose.angle).to_degrees(), 1e-4),
                 spread: round_to(f64::from(hand.spread).max(0.0), 1e-4),
                 scale: round_to(f64::from(hand.scale), 1e-4).max(1e-4),
                 pressure: round_to(f64::from(hand.pressure).clamp(0.0, 1.0), 1e-4),
             };
-            let existing = self
-                .open
-                .iter()
-                .find(|&&(id, i)| id == hand.id && self.tracks[i].kind == kind)
-                .map(|&(_, i)| i);
+            let existing =
+                self.open.iter().find(|&&(id, i)| id == hand.id && self.tracks[i].kind == kind).map(|&(_, i)| i);
             let index = if let Some(i) = existing {
                 self.tracks[i].keys.push(key);
                 i
             } else {
-                self.tracks.push(Track {
-                    id: hand.id,
-                    kind,
-                    keys: vec![key],
-                });
+                self.tracks.push(Track { id: hand.id, kind, keys: vec![key] });
                 self.tracks.len() - 1
             };
             open.push((hand.id, index));
@@ -644,16 +534,12 @@ impl GestureRecorder {
 
     /// The gesture recorded so far.
     pub fn gesture(&self) -> Gesture {
-        Gesture {
-            tracks: self.tracks.clone(),
-        }
+        Gesture { tracks: self.tracks.clone() }
     }
 
     /// Ends the recording.
     pub fn finish(self) -> Gesture {
-        Gesture {
-            tracks: self.tracks,
-        }
+        Gesture { tracks: self.tracks }
     }
 }
 

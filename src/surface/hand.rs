@@ -112,14 +112,7 @@ const FINGER_LEVEL: f32 = 0.85;
 impl Hand {
     /// A relaxed hand of `kind` at `(x, y)`, angle 0, full pressure.
     pub fn new(id: u32, kind: HandKind, x: f32, y: f32) -> Self {
-        Self {
-            id,
-            kind,
-            pose: Pose { x, y, angle: 0.0 },
-            spread: 1.0,
-            scale: 1.0,
-            pressure: 1.0,
-        }
+        Self { id, kind, pose: Pose { x, y, angle: 0.0 }, spread: 1.0, scale: 1.0, pressure: 1.0 }
     }
 
     pub fn with_angle(mut self, angle: f32) -> Self {
@@ -163,40 +156,14 @@ impl Hand {
 fn scaled(shape: Shape, s: f32) -> Shape {
     let v = |p: [f32; 2]| [p[0] * s, p[1] * s];
     match shape {
-        Shape::Ellipse {
-            centre,
-            radii,
-            angle,
-        } => Shape::Ellipse {
-            centre: v(centre),
-            radii: v(radii),
-            angle,
-        },
-        Shape::Capsule { a, b, radius } => Shape::Capsule {
-            a: v(a),
-            b: v(b),
-            radius: radius * s,
-        },
-        Shape::RoundedRect {
-            centre,
-            half,
-            angle,
-            corner,
-        } => Shape::RoundedRect {
-            centre: v(centre),
-            half: v(half),
-            angle,
-            corner: corner * s,
-        },
-        Shape::Ring {
-            centre,
-            radius,
-            half_width,
-        } => Shape::Ring {
-            centre: v(centre),
-            radius: radius * s,
-            half_width: half_width * s,
-        },
+        Shape::Ellipse { centre, radii, angle } => Shape::Ellipse { centre: v(centre), radii: v(radii), angle },
+        Shape::Capsule { a, b, radius } => Shape::Capsule { a: v(a), b: v(b), radius: radius * s },
+        Shape::RoundedRect { centre, half, angle, corner } => {
+            Shape::RoundedRect { centre: v(centre), half: v(half), angle, corner: corner * s }
+        }
+        Shape::Ring { centre, radius, half_width } => {
+            Shape::Ring { centre: v(centre), radius: radius * s, half_width: half_width * s }
+        }
     }
 }
 
@@ -208,11 +175,7 @@ fn patch(shape: Shape, level: f32) -> Patch {
 /// counter-clockwise from +y.
 fn digit(base: [f32; 2], angle: f32, length: f32, radius: f32) -> Shape {
     let (sin, cos) = angle.sin_cos();
-    Shape::Capsule {
-        a: base,
-        b: [base[0] - sin * length, base[1] + cos * length],
-        radius,
-    }
+    Shape::Capsule { a: base, b: [base[0] - sin * length, base[1] + cos * length], radius }
 }
 
 /// The footprint of `kind` in its local frame at scale 1.
@@ -226,122 +189,46 @@ fn local_patches(kind: HandKind, spread: f32, out: &mut Vec<Patch>) {
                 let k = f32::from(i) - f32::from(fingers - 1) * 0.5;
                 // The middle fingers reach further than the outer ones.
                 let y = -0.003 * k * k;
-                out.push(patch(
-                    Shape::Ellipse {
-                        centre: [k * spacing, y],
-                        radii: TIP_RADII,
-                        angle: 0.0,
-                    },
-                    1.0,
-                ));
+                out.push(patch(Shape::Ellipse { centre: [k * spacing, y], radii: TIP_RADII, angle: 0.0 }, 1.0));
             }
             if n == 5 {
                 let x = -(1.5 * spacing + 0.012 + 0.01 * spread);
-                out.push(patch(
-                    Shape::Ellipse {
-                        centre: [x, -0.045],
-                        radii: [0.009, 0.011],
-                        angle: 0.5,
-                    },
-                    1.0,
-                ));
+                out.push(patch(Shape::Ellipse { centre: [x, -0.045], radii: [0.009, 0.011], angle: 0.5 }, 1.0));
             }
         }
         HandKind::FlatHand => {
             out.push(patch(
-                Shape::RoundedRect {
-                    centre: [0.0, 0.0],
-                    half: [0.043, 0.048],
-                    angle: 0.0,
-                    corner: 0.02,
-                },
+                Shape::RoundedRect { centre: [0.0, 0.0], half: [0.043, 0.048], angle: 0.0, corner: 0.02 },
                 1.0,
             ));
             // Index, middle, ring, little: base x, length, radius.
-            let fingers = [
-                (-0.030, 0.075, 0.0085),
-                (-0.010, 0.082, 0.0085),
-                (0.010, 0.077, 0.0082),
-                (0.030, 0.060, 0.0075),
-            ];
+            let fingers =
+                [(-0.030, 0.075, 0.0085), (-0.010, 0.082, 0.0085), (0.010, 0.077, 0.0082), (0.030, 0.060, 0.0075)];
             for (i, (x, len, r)) in fingers.into_iter().enumerate() {
                 let splay = (1.5 - i as f32) * 0.12 * spread;
                 out.push(patch(digit([x, 0.040], splay, len, r), FINGER_LEVEL));
             }
-            out.push(patch(
-                digit([-0.036, -0.022], 0.7 + 0.3 * spread, 0.055, 0.0095),
-                FINGER_LEVEL,
-            ));
+            out.push(patch(digit([-0.036, -0.022], 0.7 + 0.3 * spread, 0.055, 0.0095), FINGER_LEVEL));
         }
         HandKind::Edge => {
-            out.push(patch(
-                Shape::Capsule {
-                    a: [0.0, -0.05],
-                    b: [0.0, 0.03],
-                    radius: 0.012,
-                },
-                1.0,
-            ));
-            out.push(patch(
-                Shape::Capsule {
-                    a: [0.0, 0.03],
-                    b: [0.004, 0.09],
-                    radius: 0.008,
-                },
-                0.8,
-            ));
+            out.push(patch(Shape::Capsule { a: [0.0, -0.05], b: [0.0, 0.03], radius: 0.012 }, 1.0));
+            out.push(patch(Shape::Capsule { a: [0.0, 0.03], b: [0.004, 0.09], radius: 0.008 }, 0.8));
         }
         HandKind::Fist => out.push(patch(
-            Shape::RoundedRect {
-                centre: [0.0, 0.0],
-                half: [0.04, 0.0225],
-                angle: 0.0,
-                corner: 0.015,
-            },
+            Shape::RoundedRect { centre: [0.0, 0.0], half: [0.04, 0.0225], angle: 0.0, corner: 0.015 },
             1.0,
         )),
         HandKind::Forearm => {
-            out.push(patch(
-                Shape::Capsule {
-                    a: [0.0, -0.09],
-                    b: [0.0, 0.0],
-                    radius: 0.035,
-                },
-                1.0,
-            ));
-            out.push(patch(
-                Shape::Capsule {
-                    a: [0.0, 0.0],
-                    b: [0.0, 0.1],
-                    radius: 0.027,
-                },
-                0.9,
-            ));
+            out.push(patch(Shape::Capsule { a: [0.0, -0.09], b: [0.0, 0.0], radius: 0.035 }, 1.0));
+            out.push(patch(Shape::Capsule { a: [0.0, 0.0], b: [0.0, 0.1], radius: 0.027 }, 0.9));
         }
         HandKind::Ruler => out.push(patch(
-            Shape::RoundedRect {
-                centre: [0.0, 0.0],
-                half: [0.15, 0.015],
-                angle: 0.0,
-                corner: 0.001,
-            },
+            Shape::RoundedRect { centre: [0.0, 0.0], half: [0.15, 0.015], angle: 0.0, corner: 0.001 },
             1.0,
         )),
-        HandKind::Cup => out.push(patch(
-            Shape::Ring {
-                centre: [0.0, 0.0],
-                radius: 0.035,
-                half_width: 0.003,
-            },
-            1.0,
-        )),
+        HandKind::Cup => out.push(patch(Shape::Ring { centre: [0.0, 0.0], radius: 0.035, half_width: 0.003 }, 1.0)),
         HandKind::Card => out.push(patch(
-            Shape::RoundedRect {
-                centre: [0.0, 0.0],
-                half: [0.043, 0.027],
-                angle: 0.0,
-                corner: 0.003,
-            },
+            Shape::RoundedRect { centre: [0.0, 0.0], half: [0.043, 0.027], angle: 0.0, corner: 0.003 },
             1.0,
         )),
     }
@@ -383,16 +270,11 @@ mod tests {
 
     #[test]
     fn pose_moves_and_turns_the_footprint() {
-        let hand =
-            Hand::new(1, HandKind::Forearm, 0.2, -0.1).with_angle(std::f32::consts::FRAC_PI_2);
+        let hand = Hand::new(1, HandKind::Forearm, 0.2, -0.1).with_angle(std::f32::consts::FRAC_PI_2);
         let [lo, hi] = extent(&hand);
         // A quarter turn counter-clockwise lays the arm along x, wrist to -x.
         assert!(hi[0] - lo[0] > 0.24 && hi[1] - lo[1] < 0.08);
-        assert!(
-            hand.patches()
-                .iter()
-                .any(|p| p.shape.distance([0.2, -0.1]) < 0.0)
-        );
+        assert!(hand.patches().iter().any(|p| p.shape.distance([0.2, -0.1]) < 0.0));
         assert!(lo[0] < 0.2 - 0.12);
     }
 

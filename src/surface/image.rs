@@ -14,20 +14,12 @@ pub struct ContactImage {
 impl ContactImage {
     /// An all-black (untouched) image.
     pub fn new(width: usize, height: usize) -> Self {
-        Self {
-            width,
-            height,
-            pixels: vec![0; width * height],
-        }
+        Self { width, height, pixels: vec![0; width * height] }
     }
 
     /// Wraps existing pixels; `None` when their count is not `width * height`.
     pub fn from_pixels(width: usize, height: usize, pixels: Vec<u8>) -> Option<Self> {
-        (pixels.len() == width * height).then_some(Self {
-            width,
-            height,
-            pixels,
-        })
+        (pixels.len() == width * height).then_some(Self { width, height, pixels })
     }
 
     /// The grey level at column `x`, row `y`; 0 outside the image, so

@@ -12,9 +12,7 @@ pub mod tuio;
 pub use gesture::{FORMAT, Gesture, GestureError, GestureRecorder, Key, Track, VERSION};
 pub use hand::{Hand, HandKind, Pose};
 pub use image::ContactImage;
-pub use mouse::{
-    Button, DEGREES_PER_NOTCH, MAX_SPREAD, Modifiers, Mouse, MouseEvent, SPREAD_PER_NOTCH,
-};
+pub use mouse::{Button, DEGREES_PER_NOTCH, MAX_SPREAD, Modifiers, Mouse, MouseEvent, SPREAD_PER_NOTCH};
 pub use raster::{Noise, RasterParams, rasterize, rasterize_into, rasterize_patches};
 pub use sensor::Sensor;
 pub use shape::{Patch, Prepared, Shape};

@@ -220,20 +220,10 @@ mod tests {
 
     #[test]
     fn modifiers_choose_the_hand_at_press_time() {
-        let with =
-            |m: Modifiers| run(&[MouseEvent::Modifiers(m), Pressed(Button::Left)]).hands()[0].kind;
-        let shift = Modifiers {
-            shift: true,
-            ..Modifiers::default()
-        };
-        let ctrl = Modifiers {
-            ctrl: true,
-            ..Modifiers::default()
-        };
-        let alt = Modifiers {
-            alt: true,
-            ..Modifiers::default()
-        };
+        let with = |m: Modifiers| run(&[MouseEvent::Modifiers(m), Pressed(Button::Left)]).hands()[0].kind;
+        let shift = Modifiers { shift: true, ..Modifiers::default() };
+        let ctrl = Modifiers { ctrl: true, ..Modifiers::default() };
+        let alt = Modifiers { alt: true, ..Modifiers::default() };
         assert_eq!(with(shift), HandKind::FlatHand);
         assert_eq!(with(ctrl), HandKind::Edge);
         assert_eq!(with(alt), HandKind::Fingertips(2));
@@ -254,10 +244,7 @@ mod tests {
     fn wheel_rotates_and_shift_wheel_spreads() {
         let m = run(&[Pressed(Button::Left), Wheel(2.0)]);
         assert!((m.hands()[0].pose.angle.to_degrees() - 30.0).abs() < 1e-4);
-        let shift = Modifiers {
-            shift: true,
-            ..Modifiers::default()
-        };
+        let shift = Modifiers { shift: true, ..Modifiers::default() };
         let m = run(&[
             MouseEvent::Mode(HandKind::Fingertips(2)),
             Pressed(Button::Left),
@@ -302,12 +289,7 @@ mod tests {
 
     #[test]
     fn leaving_the_window_lifts_only_the_dragged_hand() {
-        let m = run(&[
-            Pressed(Button::Right),
-            Pressed(Button::Left),
-            MouseEvent::Left,
-            Wheel(f32::NAN),
-        ]);
+        let m = run(&[Pressed(Button::Right), Pressed(Button::Left), MouseEvent::Left, Wheel(f32::NAN)]);
         assert_eq!(m.hands().len(), 1);
         assert!(!m.is_dragging());
     }

@@ -37,10 +37,7 @@ pub struct RasterParams {
 
 impl Default for RasterParams {
     fn default() -> Self {
-        Self {
-            falloff_px: 4.0,
-            noise: None,
-        }
+        Self { falloff_px: 4.0, noise: None }
     }
 }
 
@@ -53,12 +50,7 @@ pub fn rasterize(hands: &[Hand], sensor: &Sensor, params: &RasterParams) -> Cont
 
 /// Draws `hands` into `image`, resizing it to the sensor and clearing it
 /// first; reuses the allocation from frame to frame.
-pub fn rasterize_into(
-    hands: &[Hand],
-    sensor: &Sensor,
-    params: &RasterParams,
-    image: &mut ContactImage,
-) {
+pub fn rasterize_into(hands: &[Hand], sensor: &Sensor, params: &RasterParams, image: &mut ContactImage) {
     let (w, h) = (sensor.width_px as usize, sensor.height_px as usize);
     if image.width != w || image.height != h || image.pixels.len() != w * h {
         *image = ContactImage::new(w, h);
@@ -71,11 +63,7 @@ pub fn rasterize_into(
 /// Draws bare patches at full pressure (their `level` sets the grey): for
 /// known-answer tests with exact shapes, and for tangibles defined outside
 /// [`Hand`].
-pub fn rasterize_patches(
-    patches: &[Patch],
-    sensor: &Sensor,
-    params: &RasterParams,
-) -> ContactImage {
+pub fn rasterize_patches(patches: &[Patch], sensor: &Sensor, params: &RasterParams) -> ContactImage {
     let mut image = ContactImage::new(sensor.width_px as usize, sensor.height_px as usize);
     for patch in patches {
         draw_patch(patch, 1.0, sensor, params.falloff_px, &mut image);
@@ -104,13 +92,7 @@ fn draw(hands: &[Hand], sensor: &Sensor, params: &RasterParams, image: &mut Cont
     }
 }
 
-fn draw_patch(
-    patch: &Patch,
-    pressure: f32,
-    sensor: &Sensor,
-    falloff_px: f32,
-    image: &mut ContactImage,
-) {
+fn draw_patch(patch: &Patch, pressure: f32, sensor: &Sensor, falloff_px: f32, image: &mut ContactImage) {
     if image.width == 0 || image.height == 0 {
         return;
     }
@@ -129,14 +111,8 @@ fn draw_patch(
     if b[0] < 0.0 || b[1] < 0.0 || a[0] > max_c || a[1] > max_r {
         return;
     }
-    let (c0, c1) = (
-        a[0].ceil().max(0.0) as usize,
-        b[0].floor().min(max_c) as usize,
-    );
-    let (r0, r1) = (
-        a[1].ceil().max(0.0) as usize,
-        b[1].floor().min(max_r) as usize,
-    );
+    let (c0, c1) = (a[0].ceil().max(0.0) as usize, b[0].floor().min(max_c) as usize);
+    let (r0, r1) = (a[1].ceil().max(0.0) as usize, b[1].floor().min(max_r) as usize);
     let [sx, sy] = sensor.pixel_size();
     let x0 = -0.5 * sensor.table_width_m + 0.5 * sx;
     let y0 = 0.5 * sensor.table_depth_m - 0.5 * sy;
@@ -183,16 +159,9 @@ mod tests {
     #[test]
     fn pressure_sets_the_grey_level() {
         let sensor = Sensor::default();
-        let full = rasterize(
-            &[Hand::new(1, HandKind::Fist, 0.0, 0.0)],
-            &sensor,
-            &RasterParams::default(),
-        );
-        let half = rasterize(
-            &[Hand::new(1, HandKind::Fist, 0.0, 0.0).with_pressure(0.5)],
-            &sensor,
-            &RasterParams::default(),
-        );
+        let full = rasterize(&[Hand::new(1, HandKind::Fist, 0.0, 0.0)], &sensor, &RasterParams::default());
+        let half =
+            rasterize(&[Hand::new(1, HandKind::Fist, 0.0, 0.0).with_pressure(0.5)], &sensor, &RasterParams::default());
         assert_eq!(full.pixels.iter().max(), Some(&255));
         assert_eq!(half.pixels.iter().max(), Some(&128));
     }
@@ -209,13 +178,7 @@ mod tests {
     #[test]
     fn noise_is_deterministic() {
         let sensor = Sensor::new(64, 48, 1.0, 0.75);
-        let params = RasterParams {
-            noise: Some(Noise {
-                seed: 7,
-                amplitude: 5,
-            }),
-            ..RasterParams::default()
-        };
+        let params = RasterParams { noise: Some(Noise { seed: 7, amplitude: 5 }), ..RasterParams::default() };
         let a = rasterize(&[], &sensor, &params);
         let b = rasterize(&[], &sensor, &params);
         assert_eq!(a, b);

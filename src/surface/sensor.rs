@@ -34,18 +34,8 @@ impl Default for Sensor {
 }
 
 impl Sensor {
-    pub const fn new(
-        width_px: u32,
-        height_px: u32,
-        table_width_m: f32,
-        table_depth_m: f32,
-    ) -> Self {
-        Self {
-            width_px,
-            height_px,
-            table_width_m,
-            table_depth_m,
-        }
+    pub const fn new(width_px: u32, height_px: u32, table_width_m: f32, table_depth_m: f32) -> Self {
+        Self { width_px, height_px, table_width_m, table_depth_m }
     }
 
     /// The default 640 x 480 camera over a table of the scene's size.
@@ -57,10 +47,7 @@ impl Sensor {
     /// metres.
     pub fn to_table(&self, px: [f32; 2]) -> [f32; 2] {
         let [sx, sy] = self.pixel_size();
-        [
-            (px[0] + 0.5) * sx - self.table_width_m * 0.5,
-            self.table_depth_m * 0.5 - (px[1] + 0.5) * sy,
-        ]
+        [(px[0] + 0.5) * sx - self.table_width_m * 0.5, self.table_depth_m * 0.5 - (px[1] + 0.5) * sy]
     }
 
     /// Table metres to a (fractional) pixel position; the inverse of
@@ -68,10 +55,7 @@ impl Sensor {
     /// image: callers decide whether to clamp.
     pub fn to_pixel(&self, p: [f32; 2]) -> [f32; 2] {
         let [sx, sy] = self.pixel_size();
-        [
-            (p[0] + self.table_width_m * 0.5) / sx - 0.5,
-            (self.table_depth_m * 0.5 - p[1]) / sy - 0.5,
-        ]
+        [(p[0] + self.table_width_m * 0.5) / sx - 0.5, (self.table_depth_m * 0.5 - p[1]) / sy - 0.5]
     }
 
     /// A displacement or velocity in pixels (rows grow downwards) to metres
@@ -91,10 +75,7 @@ impl Sensor {
 
     /// Size of one pixel on the table along x and y, metres.
     pub fn pixel_size(&self) -> [f32; 2] {
-        [
-            self.table_width_m / self.width_px.max(1) as f32,
-            self.table_depth_m / self.height_px.max(1) as f32,
-        ]
+        [self.table_width_m / self.width_px.max(1) as f32, self.table_depth_m / self.height_px.max(1) as f32]
     }
 
     /// Size of one pixel in metres, the mean of the x and y sizes (they are

@@ -114,12 +114,7 @@ struct Profile<T> {
 
 impl<T> Default for Profile<T> {
     fn default() -> Self {
-        Self {
-            live: Vec::new(),
-            pending_alive: None,
-            pending_set: Vec::new(),
-            last_frame: 0,
-        }
+        Self { live: Vec::new(), pending_alive: None, pending_set: Vec::new(), last_frame: 0 }
     }
 }
 
@@ -143,8 +138,7 @@ impl<T: Session> Profile<T> {
     /// Ends a frame: returns false when it came late and was dropped.
     fn commit(&mut self, frame: i32) -> bool {
         let frame = i64::from(frame);
-        let on_time =
-            frame <= 0 || frame >= self.last_frame || self.last_frame - frame > LATE_WINDOW;
+        let on_time = frame <= 0 || frame >= self.last_frame || self.last_frame - frame > LATE_WINDOW;
         if on_time {
             if frame > 0 {
                 self.last_frame = frame;
@@ -227,10 +221,7 @@ impl TuioState {
     /// Live cursors and blobs of sources heard from in the last
     /// [`STALE_AFTER_S`] seconds.
     pub fn live(&self, now: f64) -> (Vec<Cursor>, Vec<Blob>) {
-        let fresh = self
-            .sources
-            .iter()
-            .filter(|s| now - s.last_seen <= STALE_AFTER_S);
+        let fresh = self.sources.iter().filter(|s| now - s.last_seen <= STALE_AFTER_S);
         let mut cursors = Vec::new();
         let mut blobs = Vec::new();
         for s in fresh {
@@ -243,25 +234,13 @@ impl TuioState {
     /// The hands touching a table of `table` = [width, depth] metres now.
     pub fn hands(&self, table: [f32; 2], now: f64) -> Vec<Hand> {
         let mut out = Vec::new();
-        for s in self
-            .sources
-            .iter()
-            .filter(|s| now - s.last_seen <= STALE_AFTER_S)
-        {
+        for s in self.sources.iter().filter(|s| now - s.last_seen <= STALE_AFTER_S) {
             let ns = (s.index % 32) << 24;
             for c in &s.cursors.live {
-                out.push(cursor_hand(
-                    c,
-                    table,
-                    CURSOR_ID_BASE | ns | (c.session as u32 & 0x00FF_FFFF),
-                ));
+                out.push(cursor_hand(c, table, CURSOR_ID_BASE | ns | (c.session as u32 & 0x00FF_FFFF)));
             }
             for b in &s.blobs.live {
-                out.push(blob_hand(
-                    b,
-                    table,
-                    BLOB_ID_BASE | ns | (b.session as u32 & 0x00FF_FFFF),
-                ));
+                out.push(blob_hand(b, table, BLOB_ID_BASE | ns | (b.session as u32 & 0x00FF_FFFF)));
             }
         }
         out
@@ -343,9 +322,7 @@ pub fn centroid(patches: &[Patch]) -> [f32; 2] {
     let mut total = 0.0f32;
     for p in patches {
         let c = match p.shape {
-            Shape::Ellipse { centre, .. }
-            | Shape::RoundedRect { centre, .. }
-            | Shape::Ring { centre, .. } => centre,
+            Shape::Ellipse { centre, .. } | Shape::RoundedRect { centre, .. } | Shape::Ring { centre, .. } => centre,
             Shape::Capsule { a, b, .. } => [(a[0] + b[0]) * 0.5, (a[1] + b[1]) * 0.5],
         };
         let area = p.shape.area();
@@ -353,11 +330,7 @@ pub fn centroid(patches: &[Patch]) -> [f32; 2] {
         sum[1] += c[1] * area;
         total += area;
     }
-    if total > 0.0 {
-        [sum[0] / total, sum[1] / total]
-    } else {
-        [0.0, 0.0]
-    }
+    if total > 0.0 { [sum[0] / total, sum[1] / total] } else { [0.0, 0.0] }
 }
 
 /// Which hand a blob of this long side and aspect (long / short) is: small
@@ -367,11 +340,7 @@ pub fn blob_kind(long_m: f32, aspect: f32) -> HandKind {
     if long_m < 0.03 {
         HandKind::Fingertips(1)
     } else if aspect >= 2.2 {
-        if long_m >= 0.17 {
-            HandKind::Forearm
-        } else {
-            HandKind::Edge
-        }
+        if long_m >= 0.17 { HandKind::Forearm } else { HandKind::Edge }
     } else if long_m >= 0.11 {
         HandKind::FlatHand
     } else {
@@ -389,30 +358,18 @@ pub fn blob_hand(b: &Blob, table: [f32; 2], id: u32) -> Hand {
     let width_axis = [b.width * cos * table[0], -b.width * sin * table[1]];
     let height_axis = [-b.height * sin * table[0], -b.height * cos * table[1]];
     let len = |v: [f32; 2]| v[0].hypot(v[1]);
-    let (long, short) = if len(width_axis) >= len(height_axis) {
-        (width_axis, height_axis)
-    } else {
-        (height_axis, width_axis)
-    };
+    let (long, short) =
+        if len(width_axis) >= len(height_axis) { (width_axis, height_axis) } else { (height_axis, width_axis) };
     let long_m = len(long);
     let kind = blob_kind(long_m, long_m / len(short).max(1e-6));
     let (nominal, centre, along_y) = footprint(kind);
     let scale = (long_m / nominal).clamp(0.4, 2.5);
     let direction = long[1].atan2(long[0]);
     // Local +y points along angle + 90°; local +x along the angle itself.
-    let angle = if along_y {
-        direction - std::f32::consts::FRAC_PI_2
-    } else {
-        direction
-    };
+    let angle = if along_y { direction - std::f32::consts::FRAC_PI_2 } else { direction };
     let (s, c) = angle.sin_cos();
-    let offset = [
-        (centre[0] * c - centre[1] * s) * scale,
-        (centre[0] * s + centre[1] * c) * scale,
-    ];
-    Hand::new(id, kind, cx - offset[0], cy - offset[1])
-        .with_angle(angle)
-        .with_scale(scale)
+    let offset = [(centre[0] * c - centre[1] * s) * scale, (centre[0] * s + centre[1] * c) * scale];
+    Hand::new(id, kind, cx - offset[0], cy - offset[1]).with_angle(angle).with_scale(scale)
 }
 
 fn to_table(p: [f32; 2], table: [f32; 2]) -> [f32; 2] {
@@ -461,10 +418,7 @@ fn check_nesting(bytes: &[u8], depth: usize) -> Result<(), TuioError> {
         return Ok(());
     }
     // A message: address, then the type-tag string starting with ','.
-    let after_address = bytes
-        .iter()
-        .position(|&b| b == 0)
-        .map_or(bytes.len(), |i| (i + 4) & !3);
+    let after_address = bytes.iter().position(|&b| b == 0).map_or(bytes.len(), |i| (i + 4) & !3);
     let tags = bytes.get(after_address..).unwrap_or_default();
     let tags = &tags[..tags.iter().position(|&b| b == 0).unwrap_or(tags.len())];
     let mut level = 0usize;
@@ -494,19 +448,12 @@ fn op(m: &rosc::OscMessage) -> Result<Op, TuioError> {
         "/tuio/2Dblb" => Kind::Blob,
         _ => return Ok(Op::Ignored),
     };
-    let bad = |problem: String| TuioError::Message {
-        address: m.addr.clone(),
-        problem,
-    };
+    let bad = |problem: String| TuioError::Message { address: m.addr.clone(), problem };
     let Some(command) = m.args.first() else {
-        return Err(bad(
-            "no command (expected source, alive, set or fseq)".into()
-        ));
+        return Err(bad("no command (expected source, alive, set or fseq)".into()));
     };
     let rosc::OscType::String(command) = command else {
-        return Err(bad(format!(
-            "the first argument must be the command string, found {command}"
-        )));
+        return Err(bad(format!("the first argument must be the command string, found {command}")));
     };
     let args = &m.args[1..];
     match command.as_str() {
@@ -516,22 +463,13 @@ fn op(m: &rosc::OscMessage) -> Result<Op, TuioError> {
         },
         "alive" => {
             let ids = args.iter().enumerate().map(|(i, a)| {
-                int(a).ok_or_else(|| {
-                    bad(format!(
-                        "alive: argument {i} is not an int32 session id ({a})"
-                    ))
-                })
+                int(a).ok_or_else(|| bad(format!("alive: argument {i} is not an int32 session id ({a})")))
             });
             Ok(Op::Alive(kind, ids.collect::<Result<_, _>>()?))
         }
         "fseq" => match args {
-            [a] => int(a)
-                .map(|f| Op::Fseq(kind, f))
-                .ok_or_else(|| bad(format!("fseq: {a} is not an int32 frame id"))),
-            _ => Err(bad(format!(
-                "fseq takes one frame id, found {} arguments",
-                args.len()
-            ))),
+            [a] => int(a).map(|f| Op::Fseq(kind, f)).ok_or_else(|| bad(format!("fseq: {a} is not an int32 frame id"))),
+            _ => Err(bad(format!("fseq takes one frame id, found {} arguments", args.len()))),
         },
         "set" => {
             let need = if kind == Kind::Cursor { 3 } else { 6 };
@@ -542,46 +480,24 @@ fn op(m: &rosc::OscMessage) -> Result<Op, TuioError> {
                     args.len()
                 )));
             }
-            let session = int(&args[0])
-                .ok_or_else(|| bad(format!("set: session id {} is not an int32", args[0])))?;
+            let session = int(&args[0]).ok_or_else(|| bad(format!("set: session id {} is not an int32", args[0])))?;
             let mut v = [0.0f32; 5];
             for (i, slot) in v.iter_mut().enumerate().take(need - 1) {
-                *slot = float(&args[i + 1]).ok_or_else(|| {
-                    bad(format!(
-                        "set: argument {} ({}) is not a finite number",
-                        i + 1,
-                        args[i + 1]
-                    ))
-                })?;
+                *slot = float(&args[i + 1])
+                    .ok_or_else(|| bad(format!("set: argument {} ({}) is not a finite number", i + 1, args[i + 1])))?;
             }
             let coord_ok = |c: f32| (-COORD_MARGIN..=1.0 + COORD_MARGIN).contains(&c);
             if !coord_ok(v[0]) || !coord_ok(v[1]) {
-                return Err(bad(format!(
-                    "set: position ({}, {}) is far outside 0..1",
-                    v[0], v[1]
-                )));
+                return Err(bad(format!("set: position ({}, {}) is far outside 0..1", v[0], v[1])));
             }
             Ok(match kind {
-                Kind::Cursor => Op::SetCursor(Cursor {
-                    session,
-                    x: v[0],
-                    y: v[1],
-                }),
+                Kind::Cursor => Op::SetCursor(Cursor { session, x: v[0], y: v[1] }),
                 Kind::Blob => {
                     let [x, y, angle, width, height] = v;
                     if !(width > 0.0 && width <= 2.0 && height > 0.0 && height <= 2.0) {
-                        return Err(bad(format!(
-                            "set: blob size {width} x {height} is not in (0, 2]"
-                        )));
+                        return Err(bad(format!("set: blob size {width} x {height} is not in (0, 2]")));
                     }
-                    Op::SetBlob(Blob {
-                        session,
-                        x,
-                        y,
-                        angle,
-                        width,
-                        height,
-                    })
+                    Op::SetBlob(Blob { session, x, y, angle, width, height })
                 }
             })
         }
@@ -616,21 +532,12 @@ mod tests {
     const TABLE: [f32; 2] = [1.0, 0.75];
 
     fn msg(addr: &str, args: Vec<OscType>) -> OscPacket {
-        OscPacket::Message(OscMessage {
-            addr: addr.into(),
-            args,
-        })
+        OscPacket::Message(OscMessage { addr: addr.into(), args })
     }
 
     fn bundle(content: Vec<OscPacket>) -> Vec<u8> {
-        encoder::encode(&OscPacket::Bundle(OscBundle {
-            timetag: OscTime {
-                seconds: 0,
-                fractional: 1,
-            },
-            content,
-        }))
-        .expect("encodes")
+        encoder::encode(&OscPacket::Bundle(OscBundle { timetag: OscTime { seconds: 0, fractional: 1 }, content }))
+            .expect("encodes")
     }
 
     fn s(v: &str) -> OscType {
@@ -640,9 +547,7 @@ mod tests {
     fn cursor_frame(frame: i32, cursors: &[(i32, f32, f32)]) -> Vec<u8> {
         let mut content = vec![msg(
             "/tuio/2Dcur",
-            std::iter::once(s("alive"))
-                .chain(cursors.iter().map(|c| OscType::Int(c.0)))
-                .collect(),
+            std::iter::once(s("alive")).chain(cursors.iter().map(|c| OscType::Int(c.0))).collect(),
         )];
         for &(id, x, y) in cursors {
             content.push(msg(
@@ -665,8 +570,7 @@ mod tests {
     #[test]
     fn cursors_become_fingertips_where_they_touch() {
         let mut t = TuioState::new();
-        t.receive(&cursor_frame(1, &[(7, 0.5, 0.5), (8, 0.0, 0.0)]), 0.0)
-            .expect("valid");
+        t.receive(&cursor_frame(1, &[(7, 0.5, 0.5), (8, 0.0, 0.0)]), 0.0).expect("valid");
         let hands = t.hands(TABLE, 0.0);
         assert_eq!(hands.len(), 2);
         assert!(hands.iter().all(|h| h.kind == HandKind::Fingertips(1)));
@@ -679,20 +583,11 @@ mod tests {
     #[test]
     fn alive_removes_and_set_waits_for_fseq() {
         let mut t = TuioState::new();
-        t.receive(&cursor_frame(1, &[(1, 0.2, 0.2), (2, 0.8, 0.8)]), 0.0)
-            .expect("valid");
+        t.receive(&cursor_frame(1, &[(1, 0.2, 0.2), (2, 0.8, 0.8)]), 0.0).expect("valid");
         // Only alive, no fseq yet: nothing changes.
-        t.receive(
-            &bundle(vec![msg("/tuio/2Dcur", vec![s("alive"), OscType::Int(2)])]),
-            0.1,
-        )
-        .expect("valid");
+        t.receive(&bundle(vec![msg("/tuio/2Dcur", vec![s("alive"), OscType::Int(2)])]), 0.1).expect("valid");
         assert_eq!(t.hands(TABLE, 0.1).len(), 2);
-        t.receive(
-            &bundle(vec![msg("/tuio/2Dcur", vec![s("fseq"), OscType::Int(2)])]),
-            0.1,
-        )
-        .expect("valid");
+        t.receive(&bundle(vec![msg("/tuio/2Dcur", vec![s("fseq"), OscType::Int(2)])]), 0.1).expect("valid");
         let hands = t.hands(TABLE, 0.1);
         assert_eq!(hands.len(), 1);
         assert_eq!(hands[0].id & 0xFF_FFFF, 2);
@@ -704,19 +599,15 @@ mod tests {
     #[test]
     fn late_frames_are_dropped_and_restarts_accepted() {
         let mut t = TuioState::new();
-        t.receive(&cursor_frame(500, &[(1, 0.5, 0.5)]), 0.0)
-            .expect("valid");
-        t.receive(&cursor_frame(499, &[(1, 0.9, 0.9)]), 0.0)
-            .expect("valid");
+        t.receive(&cursor_frame(500, &[(1, 0.5, 0.5)]), 0.0).expect("valid");
+        t.receive(&cursor_frame(499, &[(1, 0.9, 0.9)]), 0.0).expect("valid");
         assert_eq!(t.stats().late_frames, 1);
         assert_eq!(t.hands(TABLE, 0.0)[0].pose.x, 0.0);
         // Far lower: the tracker restarted.
-        t.receive(&cursor_frame(3, &[(1, 0.9, 0.5)]), 0.0)
-            .expect("valid");
+        t.receive(&cursor_frame(3, &[(1, 0.9, 0.5)]), 0.0).expect("valid");
         assert!((t.hands(TABLE, 0.0)[0].pose.x - 0.4).abs() < 1e-6);
         // -1 is always applied.
-        t.receive(&cursor_frame(-1, &[(1, 0.5, 0.5)]), 0.0)
-            .expect("valid");
+        t.receive(&cursor_frame(-1, &[(1, 0.5, 0.5)]), 0.0).expect("valid");
         assert_eq!(t.hands(TABLE, 0.0)[0].pose.x, 0.0);
     }
 
@@ -727,15 +618,7 @@ mod tests {
             bundle(vec![
                 msg("/tuio/2Dcur", vec![s("source"), s(name)]),
                 msg("/tuio/2Dcur", vec![s("alive"), OscType::Int(id)]),
-                msg(
-                    "/tuio/2Dcur",
-                    vec![
-                        s("set"),
-                        OscType::Int(id),
-                        OscType::Float(x),
-                        OscType::Float(0.5),
-                    ],
-                ),
+                msg("/tuio/2Dcur", vec![s("set"), OscType::Int(id), OscType::Float(x), OscType::Float(0.5)]),
                 msg("/tuio/2Dcur", vec![s("fseq"), OscType::Int(10)]),
             ])
         };
@@ -751,14 +634,7 @@ mod tests {
 
     #[test]
     fn blobs_become_hands_of_their_size_and_angle() {
-        let blob = |w: f32, h: f32, angle: f32| Blob {
-            session: 1,
-            x: 0.5,
-            y: 0.5,
-            angle,
-            width: w,
-            height: h,
-        };
+        let blob = |w: f32, h: f32, angle: f32| Blob { session: 1, x: 0.5, y: 0.5, angle, width: w, height: h };
         // 1.5 cm across: a fingertip.
         let tip = blob_hand(&blob(0.015, 0.02, 0.0), TABLE, 1);
         assert_eq!(tip.kind, HandKind::Fingertips(1));
@@ -767,35 +643,22 @@ mod tests {
         assert_eq!(arm.kind, HandKind::Forearm);
         assert!((arm.scale - 1.0).abs() < 0.02, "{}", arm.scale);
         let [lo, hi] = extent(&arm);
-        assert!(
-            (hi[0] - lo[0] - 0.25).abs() < 0.01 && hi[1] - lo[1] < 0.09,
-            "{lo:?} {hi:?}"
-        );
+        assert!((hi[0] - lo[0] - 0.25).abs() < 0.01 && hi[1] - lo[1] < 0.09, "{lo:?} {hi:?}");
         // Centred on the blob even though the arm's footprint is not
         // centred on its pose.
         assert!(centroid(&arm.patches())[0].abs() < 1e-4);
         // Turned a quarter (clockwise on screen): along the table's y,
         // where a normalized unit is the table's depth.
-        let arm = blob_hand(
-            &blob(0.25 / 0.75, 0.07, std::f32::consts::FRAC_PI_2),
-            TABLE,
-            1,
-        );
+        let arm = blob_hand(&blob(0.25 / 0.75, 0.07, std::f32::consts::FRAC_PI_2), TABLE, 1);
         let [lo, hi] = extent(&arm);
-        assert!(
-            (hi[1] - lo[1] - 0.25).abs() < 0.01 && hi[0] - lo[0] < 0.09,
-            "{lo:?} {hi:?}"
-        );
+        assert!((hi[1] - lo[1] - 0.25).abs() < 0.01 && hi[0] - lo[0] < 0.09, "{lo:?} {hi:?}");
         // A large roundish blob: a flat hand, centred.
         let hand = blob_hand(&blob(0.12, 0.18 / 0.75, 0.3), TABLE, 1);
         assert_eq!(hand.kind, HandKind::FlatHand);
         let c = centroid(&hand.patches());
         assert!(c[0].abs() < 1e-4 && c[1].abs() < 1e-4, "{c:?}");
         // Short and thin: the edge of a hand.
-        assert_eq!(
-            blob_hand(&blob(0.1, 0.02 / 0.75, 0.0), TABLE, 1).kind,
-            HandKind::Edge
-        );
+        assert_eq!(blob_hand(&blob(0.1, 0.02 / 0.75, 0.0), TABLE, 1).kind, HandKind::Edge);
     }
 
     fn extent(hand: &Hand) -> [[f32; 2]; 2] {
@@ -818,10 +681,7 @@ mod tests {
             "/tuio/2Dblb",
             [s("set"), OscType::Int(5)]
                 .into_iter()
-                .chain(
-                    [0.25f32, 0.5, 0.0, 0.2, 0.05, 0.01, 0.0, 0.0, 0.0, 0.0, 0.0]
-                        .map(OscType::Float),
-                )
+                .chain([0.25f32, 0.5, 0.0, 0.2, 0.05, 0.01, 0.0, 0.0, 0.0, 0.0, 0.0].map(OscType::Float))
                 .collect(),
         );
         let packet = bundle(vec![
@@ -839,8 +699,7 @@ mod tests {
     #[test]
     fn malformed_packets_are_counted_and_change_nothing() {
         let mut t = TuioState::new();
-        t.receive(&cursor_frame(1, &[(1, 0.5, 0.5)]), 0.0)
-            .expect("valid");
+        t.receive(&cursor_frame(1, &[(1, 0.5, 0.5)]), 0.0).expect("valid");
         let bad: Vec<Vec<u8>> = vec![
             Vec::new(),
             b"garbage".to_vec(),
@@ -848,30 +707,14 @@ mod tests {
             // A valid alive, then a set with a string where x goes: the whole packet is refused.
             bundle(vec![
                 msg("/tuio/2Dcur", vec![s("alive")]),
-                msg(
-                    "/tuio/2Dcur",
-                    vec![s("set"), OscType::Int(1), s("x"), OscType::Float(0.5)],
-                ),
+                msg("/tuio/2Dcur", vec![s("set"), OscType::Int(1), s("x"), OscType::Float(0.5)]),
                 msg("/tuio/2Dcur", vec![s("fseq"), OscType::Int(2)]),
             ]),
             bundle(vec![msg(
                 "/tuio/2Dcur",
-                vec![
-                    s("set"),
-                    OscType::Int(1),
-                    OscType::Float(f32::NAN),
-                    OscType::Float(0.5),
-                ],
+                vec![s("set"), OscType::Int(1), OscType::Float(f32::NAN), OscType::Float(0.5)],
             )]),
-            bundle(vec![msg(
-                "/tuio/2Dcur",
-                vec![
-                    s("set"),
-                    OscType::Int(1),
-                    OscType::Float(1e9),
-                    OscType::Float(0.5),
-                ],
-            )]),
+            bundle(vec![msg("/tuio/2Dcur", vec![s("set"), OscType::Int(1), OscType::Float(1e9), OscType::Float(0.5)])]),
             bundle(vec![msg(
                 "/tuio/2Dblb",
                 vec![
@@ -892,32 +735,21 @@ mod tests {
             assert!(t.receive(p, 0.0).is_err(), "packet {i} should be refused");
         }
         assert_eq!(t.stats().malformed, bad.len() as u64);
-        assert_eq!(
-            t.hands(TABLE, 0.0).len(),
-            1,
-            "nothing of a refused packet is applied"
-        );
+        assert_eq!(t.hands(TABLE, 0.0).len(), 1, "nothing of a refused packet is applied");
         // Truncations of a valid packet never panic.
         let good = cursor_frame(9, &[(1, 0.1, 0.1), (2, 0.3, 0.3)]);
         for n in 0..good.len() {
             let _ = t.receive(&good[..n], 0.0);
         }
         // Other profiles and commands are skipped, not refused.
-        t.receive(
-            &bundle(vec![
-                msg("/tuio/2Dobj", vec![s("alive")]),
-                msg("/tuio/2Dcur", vec![s("hello")]),
-            ]),
-            0.0,
-        )
-        .expect("valid");
+        t.receive(&bundle(vec![msg("/tuio/2Dobj", vec![s("alive")]), msg("/tuio/2Dcur", vec![s("hello")])]), 0.0)
+            .expect("valid");
         assert_eq!(t.stats().ignored_messages, 2);
     }
 
     #[test]
     fn deep_nesting_is_refused_before_decoding() {
-        let mut packet = encoder::encode(&msg("/tuio/2Dcur", vec![s("fseq"), OscType::Int(1)]))
-            .expect("encodes");
+        let mut packet = encoder::encode(&msg("/tuio/2Dcur", vec![s("fseq"), OscType::Int(1)])).expect("encodes");
         for _ in 0..50 {
             let mut b = b"#bundle\0".to_vec();
             b.extend_from_slice(&[0, 0, 0, 0, 0, 0, 0, 1]);

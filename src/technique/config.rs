@@ -120,9 +120,9 @@ pub struct ConfigError {
 impl TechniqueConfig {
     /// Defaults overridden by a scene's `[technique]` table.
     pub fn from_scene_table(table: &toml::Table, origin: &str) -> Result<Self, ConfigError> {
-        let cfg: TechniqueConfig = toml::Value::Table(table.clone())
-            .try_into()
-            .map_err(|e: toml::de::Error| ConfigError { origin: origin.to_string(), message: e.message().to_string() })?;
+        let cfg: TechniqueConfig = toml::Value::Table(table.clone()).try_into().map_err(|e: toml::de::Error| {
+            ConfigError { origin: origin.to_string(), message: e.message().to_string() }
+        })?;
         cfg.validate().map_err(|message| ConfigError { origin: origin.to_string(), message })?;
         Ok(cfg)
     }

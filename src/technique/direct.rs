@@ -40,13 +40,15 @@ impl Technique for DirectForce {
             if c.age_frames == 0 {
                 continue;
             }
-            let v_hand = clamp_len(table_velocity(input.sensor, c.velocity_px, input.dt), self.config.max_contact_speed);
+            let v_hand =
+                clamp_len(table_velocity(input.sensor, c.velocity_px, input.dt), self.config.max_contact_speed);
             if let Some((h, i)) = hit.soft {
                 // On a soft body: the same drag on the touched particle.
                 let Some(b) = world.physics_mut().soft_bodies.get_mut(h) else { continue };
                 let particle = &b.particles()[i as usize];
                 let v = particle.velocity();
-                let force = (v_hand.extend(0.0) - Vec3::new(v.x, v.y, 0.0)) * (self.config.direct_gain * particle.mass());
+                let force =
+                    (v_hand.extend(0.0) - Vec3::new(v.x, v.y, 0.0)) * (self.config.direct_gain * particle.mass());
                 b.add_particle_force(i as usize, force, true);
                 self.soft_touched.push((h, i));
                 self.touched.push(hit.point);

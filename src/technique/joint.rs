@@ -82,7 +82,14 @@ pub struct JointTechnique {
 
 impl JointTechnique {
     pub fn new(config: TechniqueConfig) -> Self {
-        JointTechnique { config, grabs: BTreeMap::new(), soft_grabs: BTreeMap::new(), pushers: BTreeMap::new(), broken: BTreeSet::new(), contacts: 0 }
+        JointTechnique {
+            config,
+            grabs: BTreeMap::new(),
+            soft_grabs: BTreeMap::new(),
+            pushers: BTreeMap::new(),
+            broken: BTreeSet::new(),
+            contacts: 0,
+        }
     }
 
     fn try_grab(&self, world: &mut World, target: Vec2, v_hand: Vec2) -> Option<Hold> {
@@ -123,7 +130,8 @@ impl JointTechnique {
     fn release_soft(world: &mut World, g: SoftGrab) {
         let physics = world.physics_mut();
         for (_, b) in physics.soft_bodies.iter_mut() {
-            let held: Vec<u32> = b.particle_attachments().iter().filter(|a| a.body == g.anchor).map(|a| a.particle).collect();
+            let held: Vec<u32> =
+                b.particle_attachments().iter().filter(|a| a.body == g.anchor).map(|a| a.particle).collect();
             for p in held {
                 b.detach_particle(p as usize);
             }
@@ -154,7 +162,12 @@ impl JointTechnique {
             // The outline where it appears at the prism's mid-height.
             let mid = p.base_z + PRISM_HEIGHT / 2.0;
             let target = at_height(world, screen, mid);
-            let hull: Vec<Vec2> = c.blob.hull.iter().map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target).collect();
+            let hull: Vec<Vec2> = c
+                .blob
+                .hull
+                .iter()
+                .map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target)
+                .collect();
             let shape = prism(&hull, input.sensor.metres_per_pixel());
             let physics = world.physics_mut();
             if let Some(b) = physics.bodies.get_mut(p.body) {
@@ -171,10 +184,17 @@ impl JointTechnique {
             let base_z = support_below(world, screen).map_or(0.0, |h| h.point.z) + 0.001;
             let mid = base_z + PRISM_HEIGHT / 2.0;
             let target = at_height(world, screen, mid);
-            let hull: Vec<Vec2> = c.blob.hull.iter().map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target).collect();
+            let hull: Vec<Vec2> = c
+                .blob
+                .hull
+                .iter()
+                .map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target)
+                .collect();
             let shape = prism(&hull, input.sensor.metres_per_pixel());
             let physics = world.physics_mut();
-            let body = physics.bodies.insert(RigidBodyBuilder::kinematic_position_based().translation(target.extend(base_z)).build());
+            let body = physics
+                .bodies
+                .insert(RigidBodyBuilder::kinematic_position_based().translation(target.extend(base_z)).build());
             let col = ColliderBuilder::new(shape)
                 .friction(self.config.friction)
                 .collision_groups(Layer::Proxy.groups())

@@ -18,7 +18,8 @@ pub enum TechniqueKind {
 }
 
 impl TechniqueKind {
-    pub const ALL: [TechniqueKind; 4] = [TechniqueKind::Direct, TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle];
+    pub const ALL: [TechniqueKind; 4] =
+        [TechniqueKind::Direct, TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle];
 
     pub fn name(self) -> &'static str {
         match self {

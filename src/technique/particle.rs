@@ -92,7 +92,11 @@ impl ParticleTechnique {
             // Tangential only: the plane projection already removed the normal part.
             v -= hit.normal * v.dot(hit.normal);
             let vt = clamp_len(Vec2::new(v.x, v.y), self.config.max_contact_speed);
-            let vz = if v.z.abs() > self.config.max_contact_speed { v.z.signum() * self.config.max_contact_speed } else { v.z };
+            let vz = if v.z.abs() > self.config.max_contact_speed {
+                v.z.signum() * self.config.max_contact_speed
+            } else {
+                v.z
+            };
             let offset = if self.config.particle_capsules { r * 3.0 } else { r };
             let weight = pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey)) * share;
             out.push(Placement {
@@ -111,7 +115,11 @@ impl ParticleTechnique {
 
     fn new_body(&self, world: &mut World, p: &Placement) -> RigidBodyHandle {
         let r = self.config.particle_radius;
-        let shape = if self.config.particle_capsules { ColliderBuilder::capsule_z(r * 2.0, r) } else { ColliderBuilder::ball(r) };
+        let shape = if self.config.particle_capsules {
+            ColliderBuilder::capsule_z(r * 2.0, r)
+        } else {
+            ColliderBuilder::ball(r)
+        };
         let physics = world.physics_mut();
         // Rotations locked: a rolling ball would transmit no friction.
         let body = physics.bodies.insert(
@@ -233,9 +241,17 @@ impl Technique for ParticleTechnique {
         if self.config.particle_pooled {
             let flows: Vec<[f32; 2]> = {
                 // Flow of each placement's sample, looked up by pixel.
-                let map: HashMap<(u32, u32), [f32; 2]> =
-                    input.frame.edges.iter().map(|e| ((e.px[0].to_bits()), (e.px[1].to_bits()))).zip(input.frame.edges.iter().map(|e| e.flow_px)).collect();
-                placements.iter().map(|p| map.get(&(p.px[0].to_bits(), p.px[1].to_bits())).copied().unwrap_or([0.0, 0.0])).collect()
+                let map: HashMap<(u32, u32), [f32; 2]> = input
+                    .frame
+                    .edges
+                    .iter()
+                    .map(|e| ((e.px[0].to_bits()), (e.px[1].to_bits())))
+                    .zip(input.frame.edges.iter().map(|e| e.flow_px))
+                    .collect();
+                placements
+                    .iter()
+                    .map(|p| map.get(&(p.px[0].to_bits(), p.px[1].to_bits())).copied().unwrap_or([0.0, 0.0]))
+                    .collect()
             };
             self.place_pooled(world, &placements, &flows);
         } else {

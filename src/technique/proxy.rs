@@ -7,7 +7,9 @@
 //! friction move objects, and from the side it collides.
 
 use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
-use super::{Feedback, PressureMode, ProxyShape, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use super::{
+    Feedback, PressureMode, ProxyShape, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind,
+};
 use crate::world::{Layer, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
@@ -140,7 +142,10 @@ impl Technique for ProxyTechnique {
                 // its press comes from a gravity scale of tens of g, which
                 // would throw it through the table in one step should the
                 // cloth under it slide away.
-                let supported = !p.light || world.cast_ray(pos, Vec3::NEG_Z, 1.0).is_some_and(|h| h.toi <= p.half_height + LIGHT_SUPPORT_GAP);
+                let supported = !p.light
+                    || world
+                        .cast_ray(pos, Vec3::NEG_Z, 1.0)
+                        .is_some_and(|h| h.toi <= p.half_height + LIGHT_SUPPORT_GAP);
                 let Some(b) = world.physics_mut().bodies.get_mut(p.body) else { continue };
                 if p.light {
                     let scale = if supported { gravity_scale_for(b.mass(), p.weight) } else { 1.0 };

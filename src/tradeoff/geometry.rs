@@ -40,12 +40,14 @@ pub fn circle_segments(quick: bool) -> Vec<Row> {
     let half = 0.03;
     let mut rng = ChaCha8Rng::seed_from_u64(5);
     let centers: Vec<Vec2> = (0..if quick { 300 } else { 2000 })
-        .map(|_| loop {
-            let c = Vec2::new(rng.random_range(-0.1..0.1), rng.random_range(-0.1..0.1));
-            let out = Vec2::new((c.x.abs() - half).max(0.0), (c.y.abs() - half).max(0.0));
-            let d = (out.x * out.x + out.y * out.y).sqrt();
-            if d > 0.001 && d < 0.06 {
-                break c;
+        .map(|_| {
+            loop {
+                let c = Vec2::new(rng.random_range(-0.1..0.1), rng.random_range(-0.1..0.1));
+                let out = Vec2::new((c.x.abs() - half).max(0.0), (c.y.abs() - half).max(0.0));
+                let d = (out.x * out.x + out.y * out.y).sqrt();
+                if d > 0.001 && d < 0.06 {
+                    break c;
+                }
             }
         })
         .collect();
@@ -53,7 +55,8 @@ pub fn circle_segments(quick: bool) -> Vec<Row> {
     let mut rows = Vec::new();
     for n in [6usize, 8, 12, 16, 24, 32, 48, 64, 128, 256] {
         let mut err = 0.0;
-        let circles: Vec<ConvexPolygon> = centers.iter().map(|c| discretize_circle(*c, r, n, CircleFit::Inscribed, 0.0).expect("circle")).collect();
+        let circles: Vec<ConvexPolygon> =
+            centers.iter().map(|c| discretize_circle(*c, r, n, CircleFit::Inscribed, 0.0).expect("circle")).collect();
         for (c, poly) in centers.iter().zip(&circles) {
             let out = Vec2::new((c.x.abs() - half).max(0.0), (c.y.abs() - half).max(0.0));
             let exact = (out.x * out.x + out.y * out.y).sqrt() - r;
@@ -64,7 +67,16 @@ pub fn circle_segments(quick: bool) -> Vec<Row> {
             k = (k + 1) % circles.len();
             contact::contact_report(&circles[k], &boxp).distance
         });
-        rows.push(Row::new("circle_segments", n.to_string(), n == DEFAULT_CIRCLE_SEGMENTS, ns, "ns/query", err / centers.len() as f64 * 1000.0, "mm", "analytic circle"));
+        rows.push(Row::new(
+            "circle_segments",
+            n.to_string(),
+            n == DEFAULT_CIRCLE_SEGMENTS,
+            ns,
+            "ns/query",
+            err / centers.len() as f64 * 1000.0,
+            "mm",
+            "analytic circle",
+        ));
     }
     rows
 }
@@ -86,14 +98,28 @@ pub fn contact_methods(quick: bool) -> Vec<Row> {
         };
         let iters = if quick { 200 } else { 2000 } * 64 / n.max(8);
         let mut push = |method: &str, default: bool, ns: f64, d: f64| {
-            rows.push(Row::new("contact_method", format!("{method} n={n}"), default, ns, "ns/query", (d - reference).abs(), "m", "brute force"));
+            rows.push(Row::new(
+                "contact_method",
+                format!("{method} n={n}"),
+                default,
+                ns,
+                "ns/query",
+                (d - reference).abs(),
+                "m",
+                "brute force",
+            ));
         };
         let d = contact::contact_report(&a, &b).distance;
         push("entrance_block", true, time_ns(iters, 5, || contact::contact_report(&a, &b).distance), d);
         let d = EntranceBlock::new(&a, &b).report().distance;
         push("entrance_block_stored", false, time_ns(iters, 5, || EntranceBlock::new(&a, &b).report().distance), d);
         if n <= 256 {
-            push("brute_force", false, time_ns((iters / n).max(4), 5, || contact::brute_force_report(&a, &b).distance), reference);
+            push(
+                "brute_force",
+                false,
+                time_ns((iters / n).max(4), 5, || contact::brute_force_report(&a, &b).distance),
+                reference,
+            );
         }
         if let (Some(pa), Some(pb)) = (to_parry(&a), to_parry(&b)) {
             let id = Pose::identity();

@@ -89,7 +89,10 @@ fn base() -> anyhow::Result<Setup> {
 }
 
 fn with_config(mut s: Setup, f: impl FnOnce(&mut TechniqueConfig)) -> Setup {
-    let mut c = s.options.config.clone().unwrap_or_else(|| TechniqueConfig::from_scene_table(&s.scene.technique, &s.scene.origin).unwrap_or_default());
+    let mut c =
+        s.options.config.clone().unwrap_or_else(|| {
+            TechniqueConfig::from_scene_table(&s.scene.technique, &s.scene.origin).unwrap_or_default()
+        });
     f(&mut c);
     s.options.config = Some(c);
     s
@@ -108,39 +111,70 @@ pub fn knobs(quick: bool) -> anyhow::Result<Vec<Knob>> {
     let dp = b.scene.physics;
     let mut out = Vec::new();
 
-    let res: &[(u32, u32)] = if quick { &[(160, 120), (320, 240), (640, 480), (960, 720)] } else { &[(160, 120), (320, 240), (480, 360), (640, 480), (960, 720)] };
+    let res: &[(u32, u32)] = if quick {
+        &[(160, 120), (320, 240), (640, 480), (960, 720)]
+    } else {
+        &[(160, 120), (320, 240), (480, 360), (640, 480), (960, 720)]
+    };
     out.push(Knob {
         name: "resolution",
         reference: Setup { options: SessionOptions { sensor_px: (1280, 960), ..b.options.clone() }, ..b.clone() },
-        values: res.iter().map(|&(w, h)| (format!("{w}x{h}"), (w, h) == (640, 480), Setup { options: SessionOptions { sensor_px: (w, h), ..b.options.clone() }, ..b.clone() })).collect(),
+        values: res
+            .iter()
+            .map(|&(w, h)| {
+                (
+                    format!("{w}x{h}"),
+                    (w, h) == (640, 480),
+                    Setup { options: SessionOptions { sensor_px: (w, h), ..b.options.clone() }, ..b.clone() },
+                )
+            })
+            .collect(),
         scripted: false,
     });
     let strides: &[usize] = if quick { &[1, 2, 3, 6] } else { &[1, 2, 3, 4, 6, 8] };
     out.push(Knob {
         name: "particle_stride",
         reference: with_config(b.clone(), |c| c.particle_stride = 1),
-        values: strides.iter().map(|&n| (n.to_string(), n == defaults.particle_stride, with_config(b.clone(), |c| c.particle_stride = n))).collect(),
+        values: strides
+            .iter()
+            .map(|&n| (n.to_string(), n == defaults.particle_stride, with_config(b.clone(), |c| c.particle_stride = n)))
+            .collect(),
         scripted: false,
     });
     let thresholds: &[f32] = if quick { &[6.0, 12.0, 24.0, 48.0] } else { &[4.0, 6.0, 12.0, 24.0, 36.0, 48.0] };
     out.push(Knob {
         name: "edge_threshold",
         reference: with_config(b.clone(), |c| c.particle_edge_threshold = 4.0),
-        values: thresholds.iter().map(|&t| (t.to_string(), t == defaults.particle_edge_threshold, with_config(b.clone(), |c| c.particle_edge_threshold = t))).collect(),
+        values: thresholds
+            .iter()
+            .map(|&t| {
+                (
+                    t.to_string(),
+                    t == defaults.particle_edge_threshold,
+                    with_config(b.clone(), |c| c.particle_edge_threshold = t),
+                )
+            })
+            .collect(),
         scripted: false,
     });
     let blocks: &[usize] = if quick { &[3, 5, 7, 11] } else { &[3, 5, 7, 9, 11, 15] };
     out.push(Knob {
         name: "flow_block",
         reference: with_vision(b.clone(), |v| v.block_size = 15),
-        values: blocks.iter().map(|&n| (n.to_string(), n == dv.block_size, with_vision(b.clone(), |v| v.block_size = n))).collect(),
+        values: blocks
+            .iter()
+            .map(|&n| (n.to_string(), n == dv.block_size, with_vision(b.clone(), |v| v.block_size = n)))
+            .collect(),
         scripted: false,
     });
     let radii: &[usize] = if quick { &[1, 2, 3, 5] } else { &[1, 2, 3, 4, 6, 8] };
     out.push(Knob {
         name: "flow_radius",
         reference: with_vision(b.clone(), |v| v.search_radius = 8),
-        values: radii.iter().map(|&n| (n.to_string(), n == dv.search_radius, with_vision(b.clone(), |v| v.search_radius = n))).collect(),
+        values: radii
+            .iter()
+            .map(|&n| (n.to_string(), n == dv.search_radius, with_vision(b.clone(), |v| v.search_radius = n)))
+            .collect(),
         scripted: false,
     });
     let iters: &[usize] = if quick { &[1, 2, 4, 8] } else { &[1, 2, 4, 8, 16] };
@@ -206,7 +240,16 @@ pub fn measure(knob: &Knob, gesture: &Gesture, repeats: usize, mut progress: imp
     let mut rows = Vec::new();
     for (label, default, setup) in &knob.values {
         let r = replay(setup, gesture, 1.0, repeats)?;
-        let mut row = Row::new(knob.name, label.clone(), *default, r.frame_us, "us/frame", deviation_cm(&r, &reference), "cm", "high-accuracy run");
+        let mut row = Row::new(
+            knob.name,
+            label.clone(),
+            *default,
+            r.frame_us,
+            "us/frame",
+            deviation_cm(&r, &reference),
+            "cm",
+            "high-accuracy run",
+        );
         if let Some(t_ref) = ref_trial {
             let t = scripted_trial_s(setup)?;
             row.trial_time_diff_s = Some((t - t_ref).abs());

@@ -30,7 +30,10 @@ pub fn run_tradeoff(options: &TradeoffOptions) -> anyhow::Result<Vec<Row>> {
     let knobs = pipeline::knobs(options.quick)?;
     let total = knobs.iter().map(|k| k.values.len()).sum::<usize>() + 2;
     let bar = if options.progress { ProgressBar::new(total as u64) } else { ProgressBar::hidden() };
-    bar.set_style(ProgressStyle::with_template("{bar:40} {pos}/{len} {msg} (eta {eta})").unwrap_or_else(|_| ProgressStyle::default_bar()));
+    bar.set_style(
+        ProgressStyle::with_template("{bar:40} {pos}/{len} {msg} (eta {eta})")
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+    );
     let repeats = if options.quick { 1 } else { 3 };
     let mut rows = Vec::new();
     for knob in &knobs {
@@ -75,7 +78,10 @@ fn mark_fronts(rows: &mut [Row]) {
         }
         seen.push(g);
         let idx: Vec<usize> = (0..rows.len()).filter(|&i| &groups[i] == g).collect();
-        let pts: Vec<Point> = idx.iter().map(|&i| Point { label: rows[i].value.clone(), time: rows[i].time, error: rows[i].error }).collect();
+        let pts: Vec<Point> = idx
+            .iter()
+            .map(|&i| Point { label: rows[i].value.clone(), time: rows[i].time, error: rows[i].error })
+            .collect();
         for k in pareto_front(&pts) {
             rows[idx[k]].on_front = true;
         }
@@ -159,12 +165,23 @@ fn plot(path: &Path, knob: &str, rows: &[&Row]) -> anyhow::Result<()> {
         .map_err(e)?;
     let mut front: Vec<&&Row> = rows.iter().filter(|r| r.on_front).collect();
     front.sort_by(|a, b| a.time.total_cmp(&b.time));
-    chart.draw_series(LineSeries::new(front.iter().map(|r| (r.time, r.error)), ShapeStyle::from(&RGBColor(31, 119, 180)).stroke_width(3))).map_err(e)?;
+    chart
+        .draw_series(LineSeries::new(
+            front.iter().map(|r| (r.time, r.error)),
+            ShapeStyle::from(&RGBColor(31, 119, 180)).stroke_width(3),
+        ))
+        .map_err(e)?;
     for r in rows {
         let color = if r.on_front { RGBColor(31, 119, 180) } else { RGBColor(150, 150, 150) };
         chart.draw_series(std::iter::once(Circle::new((r.time, r.error), 7, color.filled()))).map_err(e)?;
         if r.default {
-            chart.draw_series(std::iter::once(Circle::new((r.time, r.error), 14, ShapeStyle::from(&RGBColor(214, 39, 40)).stroke_width(3)))).map_err(e)?;
+            chart
+                .draw_series(std::iter::once(Circle::new(
+                    (r.time, r.error),
+                    14,
+                    ShapeStyle::from(&RGBColor(214, 39, 40)).stroke_width(3),
+                )))
+                .map_err(e)?;
         }
         let label = if r.default { format!("{} (default)", r.value) } else { r.value.clone() };
         chart.draw_series(std::iter::once(Text::new(label, (r.time, r.error), (FONT, 20).into_font()))).map_err(e)?;

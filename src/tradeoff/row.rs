@@ -24,7 +24,16 @@ pub struct Row {
 
 impl Row {
     #[allow(clippy::too_many_arguments)]
-    pub fn new(knob: &str, value: String, default: bool, time: f64, time_unit: &str, error: f64, error_unit: &str, reference: &str) -> Row {
+    pub fn new(
+        knob: &str,
+        value: String,
+        default: bool,
+        time: f64,
+        time_unit: &str,
+        error: f64,
+        error_unit: &str,
+        reference: &str,
+    ) -> Row {
         Row {
             knob: knob.to_string(),
             value,

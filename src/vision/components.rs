@@ -50,10 +50,7 @@ impl BBox {
     }
 
     pub fn contains(self, x: i64, y: i64) -> bool {
-        x >= i64::from(self.x0)
-            && x <= i64::from(self.x1)
-            && y >= i64::from(self.y0)
-            && y <= i64::from(self.y1)
+        x >= i64::from(self.x0) && x <= i64::from(self.x1) && y >= i64::from(self.y0) && y <= i64::from(self.y1)
     }
 }
 
@@ -163,11 +160,7 @@ fn row_runs(row: &[u8], y: u32, out: &mut Vec<Run>) {
         while x < n && row[x] != 0 {
             x += 1;
         }
-        out.push(Run {
-            y,
-            x0: start as u32,
-            x1: x as u32,
-        });
+        out.push(Run { y, x0: start as u32, x1: x as u32 });
     }
 }
 
@@ -241,25 +234,15 @@ pub fn find_blobs(image: &ContactImage, mask: &Mask, min_area: u32) -> Vec<Blob>
 
 /// Sum of the integers `0..n`, and of their squares.
 fn sums(n: u64) -> (u64, u64) {
-    if n == 0 {
-        (0, 0)
-    } else {
-        (n * (n - 1) / 2, (n - 1) * n * (2 * n - 1) / 6)
-    }
+    if n == 0 { (0, 0) } else { (n * (n - 1) / 2, (n - 1) * n * (2 * n - 1) / 6) }
 }
 
 /// Statistics of one component from its runs.
 fn describe(image: &ContactImage, mask: &Mask, runs: Vec<Run>) -> Blob {
     let w = image.width;
-    let (mut area, mut sx, mut sy, mut sxx, mut syy, mut sxy) =
-        (0u64, 0u64, 0u64, 0u64, 0u64, 0u64);
+    let (mut area, mut sx, mut sy, mut sxx, mut syy, mut sxy) = (0u64, 0u64, 0u64, 0u64, 0u64, 0u64);
     let (mut g_sum, mut g_x, mut g_y, mut g_max) = (0u64, 0u64, 0u64, 0u8);
-    let mut bbox = BBox {
-        x0: u32::MAX,
-        y0: runs[0].y,
-        x1: 0,
-        y1: runs[runs.len() - 1].y,
-    };
+    let mut bbox = BBox { x0: u32::MAX, y0: runs[0].y, x1: 0, y1: runs[runs.len() - 1].y };
     for r in &runs {
         let (n, y) = (u64::from(r.len()), u64::from(r.y));
         let (s1a, s2a) = sums(u64::from(r.x0));
@@ -299,10 +282,7 @@ fn describe(image: &ContactImage, mask: &Mask, runs: Vec<Run>) -> Blob {
         angle += std::f64::consts::PI;
     }
     let weighted_centroid = if g_sum > 0 {
-        [
-            (g_x as f64 / g_sum as f64) as f32,
-            (g_y as f64 / g_sum as f64) as f32,
-        ]
+        [(g_x as f64 / g_sum as f64) as f32, (g_y as f64 / g_sum as f64) as f32]
     } else {
         [cx as f32, cy as f32]
     };
@@ -340,10 +320,7 @@ mod tests {
     use crate::vision::threshold::threshold;
 
     fn image(rows: &[&str]) -> ContactImage {
-        let pixels = rows
-            .iter()
-            .flat_map(|r| r.bytes().map(|b| if b == b'#' { 200 } else { 0 }))
-            .collect();
+        let pixels = rows.iter().flat_map(|r| r.bytes().map(|b| if b == b'#' { 200 } else { 0 })).collect();
         ContactImage::from_pixels(rows[0].len(), rows.len(), pixels).expect("rectangular")
     }
 
@@ -353,15 +330,7 @@ mod tests {
         let blobs = find_blobs(&img, &threshold(&img, 1), 1);
         let areas: Vec<u32> = blobs.iter().map(|b| b.area).collect();
         assert_eq!(areas, vec![3, 3, 2, 1]);
-        assert_eq!(
-            blobs[0].bbox,
-            BBox {
-                x0: 0,
-                y0: 0,
-                x1: 2,
-                y1: 2
-            }
-        );
+        assert_eq!(blobs[0].bbox, BBox { x0: 0, y0: 0, x1: 2, y1: 2 });
         assert!(blobs[0].contains(1, 1) && !blobs[0].contains(1, 0));
         assert_eq!(blobs[0].distance_within(4, 2, 2), Some(2));
         assert_eq!(find_blobs(&img, &threshold(&img, 1), 2).len(), 3);

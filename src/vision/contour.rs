@@ -5,16 +5,7 @@ use super::threshold::Mask;
 
 /// The eight neighbours, clockwise on screen (rows grow downwards) starting
 /// at west: W, NW, N, NE, E, SE, S, SW.
-const RING: [[i32; 2]; 8] = [
-    [-1, 0],
-    [-1, -1],
-    [0, -1],
-    [1, -1],
-    [1, 0],
-    [1, 1],
-    [0, 1],
-    [-1, 1],
-];
+const RING: [[i32; 2]; 8] = [[-1, 0], [-1, -1], [0, -1], [1, -1], [1, 0], [1, 1], [0, 1], [-1, 1]];
 
 fn ring_index(d: [i32; 2]) -> usize {
     RING.iter().position(|&r| r == d).unwrap_or(0)
@@ -47,9 +38,8 @@ pub fn trace_contour(mask: &Mask, start: [i32; 2]) -> Vec<[i32; 2]> {
     // A boundary pixel is visited at most four times (once per side).
     let limit = 4 * mask.width.max(1) * mask.height.max(1) + 8;
     let (w, h) = (mask.width as i32, mask.height as i32);
-    let set = |q: [i32; 2]| {
-        q[0] >= 0 && q[1] >= 0 && q[0] < w && q[1] < h && mask.bits[(q[1] * w + q[0]) as usize] != 0
-    };
+    let set =
+        |q: [i32; 2]| q[0] >= 0 && q[1] >= 0 && q[0] < w && q[1] < h && mask.bits[(q[1] * w + q[0]) as usize] != 0;
     for _ in 0..limit {
         let mut next = None;
         for k in 1..=8 {
@@ -97,10 +87,7 @@ mod tests {
         Mask {
             width: rows[0].len(),
             height: rows.len(),
-            bits: rows
-                .iter()
-                .flat_map(|r| r.bytes().map(|b| u8::from(b == b'#')))
-                .collect(),
+            bits: rows.iter().flat_map(|r| r.bytes().map(|b| u8::from(b == b'#'))).collect(),
         }
     }
 
@@ -117,10 +104,7 @@ mod tests {
         let m = mask(&["...", ".#.", "..."]);
         assert_eq!(trace_contour(&m, [1, 1]), vec![[1, 1]]);
         let m = mask(&["###"]);
-        assert_eq!(
-            trace_contour(&m, [0, 0]),
-            vec![[0, 0], [1, 0], [2, 0], [1, 0]]
-        );
+        assert_eq!(trace_contour(&m, [0, 0]), vec![[0, 0], [1, 0], [2, 0], [1, 0]]);
     }
 
     #[test]

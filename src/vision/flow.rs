@@ -72,11 +72,7 @@ type Block = [[u8; LANES]; MAX_CHUNKS];
 #[inline(never)]
 #[allow(clippy::trivially_copy_pass_by_ref)]
 fn sad8(a: &[u8; LANES], b: &[u8; LANES], mask: &[u8; LANES]) -> u32 {
-    a.iter()
-        .zip(b.iter())
-        .zip(mask.iter())
-        .map(|((&x, &y), &m)| (i32::from(x) - i32::from(y & m)).unsigned_abs())
-        .sum()
+    a.iter().zip(b.iter()).zip(mask.iter()).map(|((&x, &y), &m)| (i32::from(x) - i32::from(y & m)).unsigned_abs()).sum()
 }
 
 /// Sum of squared differences of one chunk; `a` is already masked. Kept
@@ -103,16 +99,7 @@ fn lanes(pixels: &[u8], at: usize) -> [u8; LANES] {
 }
 
 /// The eight neighbours of a candidate.
-const NEIGHBOURS: [[i32; 2]; 8] = [
-    [-1, 0],
-    [1, 0],
-    [0, -1],
-    [0, 1],
-    [-1, -1],
-    [1, -1],
-    [-1, 1],
-    [1, 1],
-];
+const NEIGHBOURS: [[i32; 2]; 8] = [[-1, 0], [1, 0], [0, -1], [0, 1], [-1, -1], [1, -1], [-1, 1], [1, 1]];
 
 /// Mean absolute difference per block pixel (grey levels) above which the
 /// descent's result is distrusted and the whole window is scanned. A good
@@ -139,27 +126,15 @@ impl BlockMatcher {
         let mut offsets: Vec<([i32; 2], u32)> = (-radius..=radius)
             .flat_map(|dy| (-radius..=radius).map(move |dx| [dx, dy]))
             .map(|[dx, dy]| {
-                (
-                    [dx, dy],
-                    (STRAY_COST * pixels as f32 * ((dx * dx + dy * dy) as f32).sqrt()).round()
-                        as u32,
-                )
+                ([dx, dy], (STRAY_COST * pixels as f32 * ((dx * dx + dy * dy) as f32).sqrt()).round() as u32)
             })
             .collect();
         let stray = offsets.iter().map(|&(_, s)| s).collect();
         offsets.sort_by_key(|&([dx, dy], _)| (dx * dx + dy * dy, dy, dx));
         let n = (2 * half + 1) as usize;
-        let masks = (0..n.div_ceil(LANES))
-            .map(|c| std::array::from_fn(|i| if c * LANES + i < n { 0xff } else { 0 }))
-            .collect();
-        Self {
-            half,
-            radius,
-            pixels,
-            offsets,
-            stray,
-            masks,
-        }
+        let masks =
+            (0..n.div_ceil(LANES)).map(|c| std::array::from_fn(|i| if c * LANES + i < n { 0xff } else { 0 })).collect();
+        Self { half, radius, pixels, offsets, stray, masks }
     }
 
     pub fn block_size(&self) -> usize {
@@ -172,21 +147,9 @@ impl BlockMatcher {
 
     /// Flow at pixel `at` of `cur` since `prev` (pixels per frame), searched
     /// around `guess`. `None` when the frames differ in size or are empty.
-    pub fn flow_at(
-        &self,
-        prev: &ContactImage,
-        cur: &ContactImage,
-        at: [u32; 2],
-        guess: [f32; 2],
-    ) -> Option<[f32; 2]> {
+    pub fn flow_at(&self, prev: &ContactImage, cur: &ContactImage, at: [u32; 2], guess: [f32; 2]) -> Option<[f32; 2]> {
         let (w, h) = (cur.width, cur.height);
-        if w == 0
-            || h == 0
-            || prev.width != w
-            || prev.height != h
-            || !guess[0].is_finite()
-            || !guess[1].is_finite()
-        {
+        if w == 0 || h == 0 || prev.width != w || prev.height != h || !guess[0].is_finite() || !guess[1].is_finite() {
             return None;
         }
         let p = [at[0] as i32, at[1] as i32];
@@ -206,21 +169,13 @@ impl BlockMatcher {
             && p[1] - self.half >= 0
             && p[0] + self.half < w as i32
             && p[1] + self.half < h as i32;
-        let block = if fast {
-            self.block(cur, p)
-        } else {
-            [[0; LANES]; MAX_CHUNKS]
-        };
+        let block = if fast { self.block(cur, p) } else { [[0; LANES]; MAX_CHUNKS] };
         let cost = |d: [i32; 2], bound: u32| {
-            if fast {
-                self.sad_fast(&block, prev, p, d, bound)
-            } else {
-                self.sad_clamped(prev, cur, p, d, bound)
-            }
+            if fast { self.sad_fast(&block, prev, p, d, bound) } else { self.sad_clamped(prev, cur, p, d, bound) }
         };
         let stray = |d: [i32; 2]| {
-            self.stray[((d[1] - centre[1] + self.radius) * (2 * self.radius + 1) + d[0] - centre[0]
-                + self.radius) as usize]
+            self.stray
+                [((d[1] - centre[1] + self.radius) * (2 * self.radius + 1) + d[0] - centre[0] + self.radius) as usize]
         };
         // Descent from the guess: move to the cheapest of the eight
         // neighbours while that lowers the cost. The soft outline makes the
@@ -233,8 +188,7 @@ impl BlockMatcher {
             let from = best;
             for o in NEIGHBOURS {
                 let d = [from[0] + o[0], from[1] + o[1]];
-                if (d[0] - centre[0]).abs() > self.radius || (d[1] - centre[1]).abs() > self.radius
-                {
+                if (d[0] - centre[0]).abs() > self.radius || (d[1] - centre[1]).abs() > self.radius {
                     continue;
                 }
                 let s = stray(d);
@@ -275,19 +229,10 @@ impl BlockMatcher {
         let costs = if fast {
             self.ssd_around(&block, prev, p, best)
         } else {
-            let at =
-                |dx: i32, dy: i32| self.ssd_clamped(prev, cur, p, [best[0] + dx, best[1] + dy]);
-            [
-                [at(-1, -1), at(0, -1), at(1, -1)],
-                [at(-1, 0), at(0, 0), at(1, 0)],
-                [at(-1, 1), at(0, 1), at(1, 1)],
-            ]
+            let at = |dx: i32, dy: i32| self.ssd_clamped(prev, cur, p, [best[0] + dx, best[1] + dy]);
+            [[at(-1, -1), at(0, -1), at(1, -1)], [at(-1, 0), at(0, 0), at(1, 0)], [at(-1, 1), at(0, 1), at(1, 1)]]
         };
-        let delta = refine(
-            costs,
-            [guess[0] - best[0] as f32, guess[1] - best[1] as f32],
-            self.radius as f32 + 1.0,
-        );
+        let delta = refine(costs, [guess[0] - best[0] as f32, guess[1] - best[1] as f32], self.radius as f32 + 1.0);
         let flow = [best[0] as f32 + delta[0], best[1] as f32 + delta[1]];
         Some(flow)
     }
@@ -316,29 +261,15 @@ impl BlockMatcher {
     /// SAD between `block` (from [`Self::block`] at `p`) and the block at
     /// `p - d` in `prev`, all inside the frame (with [`LANES`] - 1 pixels to
     /// spare on the right); stops once it reaches `bound`.
-    fn sad_fast(
-        &self,
-        block: &Block,
-        prev: &ContactImage,
-        p: [i32; 2],
-        d: [i32; 2],
-        bound: u32,
-    ) -> u32 {
+    fn sad_fast(&self, block: &Block, prev: &ContactImage, p: [i32; 2], d: [i32; 2], bound: u32) -> u32 {
         let w = prev.width;
         let chunks = self.masks.len();
-        let (qx, qy) = (
-            (p[0] - d[0] - self.half) as usize,
-            (p[1] - d[1] - self.half) as usize,
-        );
+        let (qx, qy) = ((p[0] - d[0] - self.half) as usize, (p[1] - d[1] - self.half) as usize);
         let mut sum = 0u32;
         for k in 0..self.rows() {
             let rb = (qy + k) * w + qx;
             for c in 0..chunks {
-                sum += sad8(
-                    &block[k * chunks + c],
-                    &lanes(&prev.pixels, rb + c * LANES),
-                    &self.masks[c],
-                );
+                sum += sad8(&block[k * chunks + c], &lanes(&prev.pixels, rb + c * LANES), &self.masks[c]);
             }
             if sum >= bound {
                 break;
@@ -350,21 +281,12 @@ impl BlockMatcher {
     /// Sums of squared differences between `block` and the blocks of `prev`
     /// at `p - (d + (dx, dy))` for the 3 x 3 `(dx, dy)` around `d`, as
     /// `[row dy][column dx]`; one pass over the block rows.
-    fn ssd_around(
-        &self,
-        block: &Block,
-        prev: &ContactImage,
-        p: [i32; 2],
-        d: [i32; 2],
-    ) -> [[f32; 3]; 3] {
+    fn ssd_around(&self, block: &Block, prev: &ContactImage, p: [i32; 2], d: [i32; 2]) -> [[f32; 3]; 3] {
         let w = prev.width;
         let chunks = self.masks.len();
         // Origin of the prev block for the centre displacement; a
         // displacement one more to the right reads one pixel further left.
-        let (qx, qy) = (
-            (p[0] - d[0] - self.half) as usize,
-            (p[1] - d[1] - self.half) as usize,
-        );
+        let (qx, qy) = ((p[0] - d[0] - self.half) as usize, (p[1] - d[1] - self.half) as usize);
         let mut sums = [[0u32; 3]; 3];
         for k in 0..self.rows() {
             for c in 0..chunks {
@@ -378,9 +300,7 @@ impl BlockMatcher {
                         continue;
                     };
                     for (i, sum) in row.iter_mut().enumerate() {
-                        let b: &[u8; LANES] = window[2 - i..2 - i + LANES]
-                            .try_into()
-                            .unwrap_or(&[0; LANES]);
+                        let b: &[u8; LANES] = window[2 - i..2 - i + LANES].try_into().unwrap_or(&[0; LANES]);
                         *sum += ssd8(a, b, mask);
                     }
                 }
@@ -390,13 +310,7 @@ impl BlockMatcher {
     }
 
     /// The same near the image border, replicating border pixels.
-    fn ssd_clamped(
-        &self,
-        prev: &ContactImage,
-        cur: &ContactImage,
-        p: [i32; 2],
-        d: [i32; 2],
-    ) -> f32 {
+    fn ssd_clamped(&self, prev: &ContactImage, cur: &ContactImage, p: [i32; 2], d: [i32; 2]) -> f32 {
         let (w, h) = (cur.width as i32, cur.height as i32);
         let at = |img: &ContactImage, x: i32, y: i32| {
             i32::from(img.pixels[(y.clamp(0, h - 1) * w + x.clamp(0, w - 1)) as usize])
@@ -404,8 +318,7 @@ impl BlockMatcher {
         let mut sum = 0i64;
         for dy in -self.half..=self.half {
             for dx in -self.half..=self.half {
-                let e =
-                    at(cur, p[0] + dx, p[1] + dy) - at(prev, p[0] - d[0] + dx, p[1] - d[1] + dy);
+                let e = at(cur, p[0] + dx, p[1] + dy) - at(prev, p[0] - d[0] + dx, p[1] - d[1] + dy);
                 sum += i64::from(e * e);
             }
         }
@@ -413,18 +326,9 @@ impl BlockMatcher {
     }
 
     /// The same near the image border, replicating border pixels.
-    fn sad_clamped(
-        &self,
-        prev: &ContactImage,
-        cur: &ContactImage,
-        p: [i32; 2],
-        d: [i32; 2],
-        bound: u32,
-    ) -> u32 {
+    fn sad_clamped(&self, prev: &ContactImage, cur: &ContactImage, p: [i32; 2], d: [i32; 2], bound: u32) -> u32 {
         let (w, h) = (cur.width as i32, cur.height as i32);
-        let at = |img: &ContactImage, x: i32, y: i32| {
-            img.pixels[(y.clamp(0, h - 1) * w + x.clamp(0, w - 1)) as usize]
-        };
+        let at = |img: &ContactImage, x: i32, y: i32| img.pixels[(y.clamp(0, h - 1) * w + x.clamp(0, w - 1)) as usize];
         let mut sum = 0u32;
         for dy in -self.half..=self.half {
             for dx in -self.half..=self.half {
@@ -454,10 +358,7 @@ impl BlockMatcher {
 /// estimate slides back.
 fn refine(costs: [[f32; 3]; 3], towards_guess: [f32; 2], max_slide: f32) -> [f32; 2] {
     let c0 = costs[1][1];
-    let g = [
-        0.5 * (costs[1][2] - costs[1][0]),
-        0.5 * (costs[2][1] - costs[0][1]),
-    ];
+    let g = [0.5 * (costs[1][2] - costs[1][0]), 0.5 * (costs[2][1] - costs[0][1])];
     let hxx = costs[1][2] + costs[1][0] - 2.0 * c0;
     let hyy = costs[2][1] + costs[0][1] - 2.0 * c0;
     let hxy = 0.25 * (costs[2][2] - costs[2][0] - costs[0][2] + costs[0][0]);
@@ -469,29 +370,21 @@ fn refine(costs: [[f32; 3]; 3], towards_guess: [f32; 2], max_slide: f32) -> [f32
         return [0.0, 0.0];
     }
     let v_big = if spread > 0.0 {
-        let (x, y) = if hxx >= hyy {
-            (big - hyy, hxy)
-        } else {
-            (hxy, big - hxx)
-        };
+        let (x, y) = if hxx >= hyy { (big - hyy, hxy) } else { (hxy, big - hxx) };
         let n = x.hypot(y);
         [x / n, y / n]
     } else {
         [1.0, 0.0]
     };
     let v_small = [-v_big[1], v_big[0]];
-    let newton =
-        |v: [f32; 2], lambda: f32| (-(v[0] * g[0] + v[1] * g[1]) / lambda).clamp(-1.0, 1.0);
+    let newton = |v: [f32; 2], lambda: f32| (-(v[0] * g[0] + v[1] * g[1]) / lambda).clamp(-1.0, 1.0);
     let across = newton(v_big, big);
     let along = if small > 0.05 * big {
         newton(v_small, small)
     } else {
         (v_small[0] * towards_guess[0] + v_small[1] * towards_guess[1]).clamp(-max_slide, max_slide)
     };
-    [
-        across * v_big[0] + along * v_small[0],
-        across * v_big[1] + along * v_small[1],
-    ]
+    [across * v_big[0] + along * v_small[0], across * v_big[1] + along * v_small[1]]
 }
 
 #[cfg(test)]
@@ -517,18 +410,11 @@ mod tests {
         let m = BlockMatcher::new(7, 3);
         // A point of the outline the motion crosses head-on: the whole
         // vector is observable.
-        let f = m
-            .flow_at(&prev, &cur, [38, 23], [0.0, 0.0])
-            .expect("same size");
-        assert!(
-            (f[0] - 1.4).abs() < 0.25 && (f[1] + 1.3).abs() < 0.25,
-            "{f:?}"
-        );
+        let f = m.flow_at(&prev, &cur, [38, 23], [0.0, 0.0]).expect("same size");
+        assert!((f[0] - 1.4).abs() < 0.25 && (f[1] + 1.3).abs() < 0.25, "{f:?}");
         // Where the outline runs along the motion only the normal component
         // is observable (aperture problem): check that one.
-        let f = m
-            .flow_at(&prev, &cur, [24, 21], [0.0, 0.0])
-            .expect("same size");
+        let f = m.flow_at(&prev, &cur, [24, 21], [0.0, 0.0]).expect("same size");
         let n = [-7.4f32 / 10.7, -7.7 / 10.7];
         let normal = |v: [f32; 2]| v[0] * n[0] + v[1] * n[1];
         assert!((normal(f) - normal([1.4, -1.3])).abs() < 0.2, "{f:?}");
@@ -536,13 +422,8 @@ mod tests {
         let far = disc(64, 64, [40.0, 30.0], 10.0);
         // There the outline is vertical: the vertical component is not
         // observable and follows the guess.
-        let f = m
-            .flow_at(&prev, &far, [31, 30], [9.0, 0.3])
-            .expect("same size");
-        assert!(
-            (f[0] - 10.0).abs() < 0.2 && (f[1] - 0.3).abs() < 0.1,
-            "{f:?}"
-        );
+        let f = m.flow_at(&prev, &far, [31, 30], [9.0, 0.3]).expect("same size");
+        assert!((f[0] - 10.0).abs() < 0.2 && (f[1] - 0.3).abs() < 0.1, "{f:?}");
     }
 
     #[test]
@@ -550,14 +431,9 @@ mod tests {
         let prev = disc(16, 16, [2.0, 2.0], 4.0);
         let cur = disc(16, 16, [3.0, 2.0], 4.0);
         let m = BlockMatcher::new(7, 4);
-        let f = m
-            .flow_at(&prev, &cur, [7, 2], [0.0, 0.0])
-            .expect("same size");
+        let f = m.flow_at(&prev, &cur, [7, 2], [0.0, 0.0]).expect("same size");
         assert!((f[0] - 1.0).abs() < 0.3, "{f:?}");
-        assert!(
-            m.flow_at(&prev, &ContactImage::new(8, 8), [0, 0], [0.0, 0.0])
-                .is_none()
-        );
+        assert!(m.flow_at(&prev, &ContactImage::new(8, 8), [0, 0], [0.0, 0.0]).is_none());
         let one = ContactImage::new(1, 1);
         assert_eq!(m.flow_at(&one, &one, [0, 0], [0.0, 0.0]), Some([0.0, 0.0]));
     }

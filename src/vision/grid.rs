@@ -27,12 +27,7 @@ impl BoxGrid {
         let max_x = boxes.iter().map(|b| b[2]).max().unwrap_or(0).max(0);
         let max_y = boxes.iter().map(|b| b[3]).max().unwrap_or(0).max(0);
         let (cols, rows) = (max_x / CELL + 1, max_y / CELL + 1);
-        let mut grid = Self {
-            cell: CELL,
-            cols,
-            rows,
-            cells: vec![Vec::new(); (cols * rows) as usize],
-        };
+        let mut grid = Self { cell: CELL, cols, rows, cells: vec![Vec::new(); (cols * rows) as usize] };
         for (i, b) in boxes.iter().enumerate() {
             let [c0, r0, c1, r1] = grid.span(*b);
             for r in r0..=r1 {
@@ -48,12 +43,7 @@ impl BoxGrid {
     fn span(&self, area: [i64; 4]) -> [i64; 4] {
         let col = |x: i64| (x.max(0) / self.cell).min(self.cols - 1);
         let row = |y: i64| (y.max(0) / self.cell).min(self.rows - 1);
-        [
-            col(area[0]),
-            row(area[1]),
-            col(area[2].max(area[0])),
-            row(area[3].max(area[1])),
-        ]
+        [col(area[0]), row(area[1]), col(area[2].max(area[0])), row(area[3].max(area[1]))]
     }
 
     /// Indices of the boxes filed in the cells `area` covers, each once, in

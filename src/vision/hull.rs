@@ -14,8 +14,7 @@ pub fn convex_hull(points: &[[i32; 2]]) -> Vec<[i32; 2]> {
     }
     // Cross product of (a - o) x (b - o) in pixel coordinates.
     let cross = |o: [i32; 2], a: [i32; 2], b: [i32; 2]| {
-        i64::from(a[0] - o[0]) * i64::from(b[1] - o[1])
-            - i64::from(a[1] - o[1]) * i64::from(b[0] - o[0])
+        i64::from(a[0] - o[0]) * i64::from(b[1] - o[1]) - i64::from(a[1] - o[1]) * i64::from(b[0] - o[0])
     };
     // Keep right turns in pixel coordinates (= left turns with y up): the
     // first pass builds the chain along the larger rows, the second comes
@@ -60,16 +59,7 @@ mod tests {
 
     #[test]
     fn square_with_inner_and_collinear_points() {
-        let pts = [
-            [0, 0],
-            [2, 0],
-            [4, 0],
-            [4, 4],
-            [0, 4],
-            [2, 2],
-            [1, 3],
-            [0, 2],
-        ];
+        let pts = [[0, 0], [2, 0], [4, 0], [4, 4], [0, 4], [2, 2], [1, 3], [0, 2]];
         let hull = convex_hull(&pts);
         assert_eq!(hull.len(), 4);
         assert_eq!(signed_area(&hull), -16.0);

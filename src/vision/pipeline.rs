@@ -143,10 +143,7 @@ impl Pipeline {
         Self {
             params,
             matcher: BlockMatcher::new(params.block_size, params.search_radius),
-            tracker: Tracker::new(TrackerParams {
-                max_jump_px: params.max_jump_px,
-                ..TrackerParams::default()
-            }),
+            tracker: Tracker::new(TrackerParams { max_jump_px: params.max_jump_px, ..TrackerParams::default() }),
             previous: None,
             mask: Mask::default(),
         }
@@ -185,10 +182,7 @@ impl Pipeline {
         timings.sobel_us = micros(t);
 
         let t = Instant::now();
-        let previous = self
-            .previous
-            .as_ref()
-            .filter(|q| q.width == image.width && q.height == image.height);
+        let previous = self.previous.as_ref().filter(|q| q.width == image.width && q.height == image.height);
         let edges = outline
             .iter()
             .map(|e| {
@@ -196,11 +190,8 @@ impl Pipeline {
                 let px = [e.x as f32, e.y as f32];
                 let flow_px = match previous {
                     Some(prev) if track.age > 0 => {
-                        let guess =
-                            rigid_guess(px, blob.weighted_centroid, track.velocity, track.rotation);
-                        self.matcher
-                            .flow_at(prev, image, [e.x, e.y], guess)
-                            .unwrap_or([0.0, 0.0])
+                        let guess = rigid_guess(px, blob.weighted_centroid, track.velocity, track.rotation);
+                        self.matcher.flow_at(prev, image, [e.x, e.y], guess).unwrap_or([0.0, 0.0])
                     }
                     _ => [0.0, 0.0],
                 };
@@ -231,11 +222,7 @@ impl Pipeline {
             })
             .collect();
         timings.total_us = micros(start);
-        VisionFrame {
-            contacts,
-            edges,
-            timings,
-        }
+        VisionFrame { contacts, edges, timings }
     }
 }
 
@@ -258,20 +245,9 @@ mod tests {
     fn rigid_guess_of_a_pure_turn() {
         // A quarter turn clockwise on screen about the origin moves (10, 0)
         // to (0, 10): the point now at (0, 10) came from (10, 0).
-        let g = rigid_guess(
-            [0.0, 10.0],
-            [0.0, 0.0],
-            [0.0, 0.0],
-            std::f32::consts::FRAC_PI_2,
-        );
-        assert!(
-            (g[0] + 10.0).abs() < 1e-4 && (g[1] - 10.0).abs() < 1e-4,
-            "{g:?}"
-        );
-        assert_eq!(
-            rigid_guess([5.0, 5.0], [1.0, 1.0], [2.0, -1.0], 0.0),
-            [2.0, -1.0]
-        );
+        let g = rigid_guess([0.0, 10.0], [0.0, 0.0], [0.0, 0.0], std::f32::consts::FRAC_PI_2);
+        assert!((g[0] + 10.0).abs() < 1e-4 && (g[1] - 10.0).abs() < 1e-4, "{g:?}");
+        assert_eq!(rigid_guess([5.0, 5.0], [1.0, 1.0], [2.0, -1.0], 0.0), [2.0, -1.0]);
     }
 
     #[test]

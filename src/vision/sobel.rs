@@ -79,12 +79,7 @@ pub fn gradient_magnitude(image: &ContactImage) -> Vec<f32> {
         let d = &image.pixels[(y + 1) * w..(y + 2) * w];
         // Interior columns as three-wide windows over the three rows, a
         // loop the compiler vectorises.
-        for (((o, u), m), d) in row[1..w - 1]
-            .iter_mut()
-            .zip(u.windows(3))
-            .zip(m.windows(3))
-            .zip(d.windows(3))
-        {
+        for (((o, u), m), d) in row[1..w - 1].iter_mut().zip(u.windows(3)).zip(m.windows(3)).zip(d.windows(3)) {
             let g = |v: u8| i32::from(v);
             let gx = g(u[2]) + 2 * g(m[2]) + g(d[2]) - g(u[0]) - 2 * g(m[0]) - g(d[0]);
             let gy = g(d[0]) + 2 * g(d[1]) + g(d[2]) - g(u[0]) - 2 * g(u[1]) - g(u[2]);
@@ -107,12 +102,7 @@ pub fn gradient_magnitude(image: &ContactImage) -> Vec<f32> {
 /// particles can stay on them). Overlapping boxes are merged per row, so no
 /// pixel is reported twice; where boxes overlap, a pixel goes to the blob
 /// with a pixel nearest to it.
-pub fn find_edges(
-    image: &ContactImage,
-    blobs: &[Blob],
-    threshold: f32,
-    stride: usize,
-) -> Vec<EdgePixel> {
+pub fn find_edges(image: &ContactImage, blobs: &[Blob], threshold: f32, stride: usize) -> Vec<EdgePixel> {
     let (w, h) = (image.width, image.height);
     let mut edges = Vec::new();
     if w == 0 || h == 0 || blobs.is_empty() {
@@ -131,24 +121,13 @@ pub fn find_edges(
             ]
         })
         .collect();
-    let y_first = boxes
-        .iter()
-        .map(|b| b[1])
-        .min()
-        .unwrap_or(0)
-        .div_ceil(stride)
-        * stride;
+    let y_first = boxes.iter().map(|b| b[1]).min().unwrap_or(0).div_ceil(stride) * stride;
     let y_last = boxes.iter().map(|b| b[3]).max().unwrap_or(0);
     let limit = threshold.max(0.0) / NORMALISE;
     let limit2 = limit * limit;
     // Column intervals of the boxes covering the current row, with the
     // boxes that cover them.
-    let grid = BoxGrid::new(
-        &boxes
-            .iter()
-            .map(|b| b.map(|v| v as i64))
-            .collect::<Vec<_>>(),
-    );
+    let grid = BoxGrid::new(&boxes.iter().map(|b| b.map(|v| v as i64)).collect::<Vec<_>>());
     let mut near: Vec<u32> = Vec::new();
     let mut spans: Vec<(usize, usize, usize)> = Vec::new();
     let mut owners: Vec<usize> = Vec::new();
@@ -185,15 +164,13 @@ pub fn find_edges(
                     owners.push(spans[k].2);
                 } else {
                     grid.query([x as i64, y as i64, x as i64, y as i64], &mut near);
-                    owners.extend(near.iter().map(|&i| i as usize).filter(|&i| {
-                        boxes[i][0] <= x && x <= boxes[i][2] && boxes[i][1] <= y && y <= boxes[i][3]
-                    }));
+                    owners.extend(
+                        near.iter()
+                            .map(|&i| i as usize)
+                            .filter(|&i| boxes[i][0] <= x && x <= boxes[i][2] && boxes[i][1] <= y && y <= boxes[i][3]),
+                    );
                 }
-                let blob = if owners.len() == 1 {
-                    owners[0]
-                } else {
-                    nearest(blobs, &owners, x, y)
-                };
+                let blob = if owners.len() == 1 { owners[0] } else { nearest(blobs, &owners, x, y) };
                 edges.push(EdgePixel {
                     x: x as u32,
                     y: y as u32,
@@ -213,11 +190,7 @@ fn nearest(blobs: &[Blob], candidates: &[usize], x: usize, y: usize) -> usize {
     let reach = i64::from(EDGE_PAD) + 2;
     candidates
         .iter()
-        .min_by_key(|&&i| {
-            blobs[i]
-                .distance_within(x as i64, y as i64, reach)
-                .unwrap_or(i64::MAX)
-        })
+        .min_by_key(|&&i| blobs[i].distance_within(x as i64, y as i64, reach).unwrap_or(i64::MAX))
         .copied()
         .unwrap_or(0)
 }
@@ -242,11 +215,7 @@ mod tests {
         let edges = find_edges(&img, &blobs, 10.0, 1);
         assert!(edges.iter().all(|e| e.x == 9 || e.x == 10));
         assert_eq!(edges.len(), 20);
-        assert!(
-            edges
-                .iter()
-                .all(|e| e.gradient[0] > 0.0 && e.magnitude == 80.0)
-        );
+        assert!(edges.iter().all(|e| e.gradient[0] > 0.0 && e.magnitude == 80.0));
         let full = gradient_magnitude(&img);
         assert_eq!(full[5 * 20 + 10], 80.0);
         assert_eq!(find_edges(&img, &blobs, 10.0, 2).len(), 5);
@@ -269,11 +238,6 @@ mod tests {
         seen.sort_unstable();
         seen.dedup();
         assert_eq!(seen.len(), n);
-        assert!(
-            edges
-                .iter()
-                .filter(|e| e.x >= 18 && e.y >= 18)
-                .all(|e| e.blob == 1)
-        );
+        assert!(edges.iter().filter(|e| e.x >= 18 && e.y >= 18).all(|e| e.blob == 1));
     }
 }

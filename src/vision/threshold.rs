@@ -41,8 +41,7 @@ pub fn threshold_into(image: &ContactImage, level: u8, mask: &mut Mask) {
     mask.width = image.width;
     mask.height = image.height;
     mask.bits.clear();
-    mask.bits
-        .extend(image.pixels.iter().map(|&p| u8::from(p >= level)));
+    mask.bits.extend(image.pixels.iter().map(|&p| u8::from(p >= level)));
 }
 
 #[cfg(test)]

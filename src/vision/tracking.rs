@@ -50,10 +50,7 @@ pub struct TrackerParams {
 
 impl Default for TrackerParams {
     fn default() -> Self {
-        Self {
-            max_jump_px: 40.0,
-            min_elongation: 1.2,
-        }
+        Self { max_jump_px: 40.0, min_elongation: 1.2 }
     }
 }
 
@@ -98,20 +95,13 @@ struct Live {
 
 impl Live {
     fn predicted(&self) -> [f32; 2] {
-        [
-            self.centroid[0] + self.velocity[0],
-            self.centroid[1] + self.velocity[1],
-        ]
+        [self.centroid[0] + self.velocity[0], self.centroid[1] + self.velocity[1]]
     }
 
     /// The identities it carries, its own first when single.
     fn identities(&self) -> Vec<Identity> {
         if self.members.is_empty() {
-            vec![Identity {
-                id: self.id,
-                birth: self.birth,
-                offset: [0.0, 0.0],
-            }]
+            vec![Identity { id: self.id, birth: self.birth, offset: [0.0, 0.0] }]
         } else {
             self.members.clone()
         }
@@ -145,16 +135,12 @@ fn distance(a: [f32; 2], b: [f32; 2]) -> f32 {
 /// Pixels shared by `a` moved by `shift` and `b`; both sorted by row, then
 /// column.
 fn overlap(a: &[Run], shift: [i32; 2], b: &[Run]) -> u32 {
-    let (Some(af), Some(al), Some(bf), Some(bl)) = (a.first(), a.last(), b.first(), b.last())
-    else {
+    let (Some(af), Some(al), Some(bf), Some(bl)) = (a.first(), a.last(), b.first(), b.last()) else {
         return 0;
     };
     // Only the rows both cover: a small blob against a huge one (a frame
     // of speckle) then costs the small one's rows, not the huge one's.
-    let (a_first, a_last) = (
-        i64::from(af.y) + i64::from(shift[1]),
-        i64::from(al.y) + i64::from(shift[1]),
-    );
+    let (a_first, a_last) = (i64::from(af.y) + i64::from(shift[1]), i64::from(al.y) + i64::from(shift[1]));
     let (lo, hi) = (a_first.max(i64::from(bf.y)), a_last.min(i64::from(bl.y)));
     if lo > hi {
         return 0;
@@ -187,18 +173,9 @@ fn overlap(a: &[Run], shift: [i32; 2], b: &[Run]) -> u32 {
 }
 
 fn boxes_meet(a: BBox, shift: [i32; 2], b: BBox) -> bool {
-    let (ax0, ax1) = (
-        i64::from(a.x0) + i64::from(shift[0]),
-        i64::from(a.x1) + i64::from(shift[0]),
-    );
-    let (ay0, ay1) = (
-        i64::from(a.y0) + i64::from(shift[1]),
-        i64::from(a.y1) + i64::from(shift[1]),
-    );
-    ax0 <= i64::from(b.x1)
-        && i64::from(b.x0) <= ax1
-        && ay0 <= i64::from(b.y1)
-        && i64::from(b.y0) <= ay1
+    let (ax0, ax1) = (i64::from(a.x0) + i64::from(shift[0]), i64::from(a.x1) + i64::from(shift[0]));
+    let (ay0, ay1) = (i64::from(a.y0) + i64::from(shift[1]), i64::from(a.y1) + i64::from(shift[1]));
+    ax0 <= i64::from(b.x1) && i64::from(b.x0) <= ax1 && ay0 <= i64::from(b.y1) && i64::from(b.y0) <= ay1
 }
 
 /// Difference of two axis angles (defined modulo pi), in `(-pi/2, pi/2]`.
@@ -213,12 +190,7 @@ fn axis_turn(from: f32, to: f32) -> f32 {
 
 impl Tracker {
     pub fn new(params: TrackerParams) -> Self {
-        Self {
-            params,
-            live: Vec::new(),
-            next_id: 1,
-            frame: 0,
-        }
+        Self { params, live: Vec::new(), next_id: 1, frame: 0 }
     }
 
     pub fn params(&self) -> TrackerParams {
@@ -254,21 +226,13 @@ impl Tracker {
                 i64::from(b.y1) + shift[1],
             ]
         };
-        let grid = BoxGrid::new(
-            &blobs
-                .iter()
-                .map(|b| as_box(b.bbox, [0, 0]))
-                .collect::<Vec<_>>(),
-        );
+        let grid = BoxGrid::new(&blobs.iter().map(|b| as_box(b.bbox, [0, 0])).collect::<Vec<_>>());
         let mut near = Vec::new();
         let mut overlaps: Vec<Vec<(usize, u32)>> = Vec::with_capacity(prev.len());
         let mut overlapped_by: Vec<Vec<(usize, u32)>> = vec![Vec::new(); blobs.len()];
         for (i, p) in prev.iter().enumerate() {
             let shift = [p.velocity[0].round() as i32, p.velocity[1].round() as i32];
-            grid.query(
-                as_box(p.bbox, [i64::from(shift[0]), i64::from(shift[1])]),
-                &mut near,
-            );
+            grid.query(as_box(p.bbox, [i64::from(shift[0]), i64::from(shift[1])]), &mut near);
             let found: Vec<(usize, u32)> = near
                 .iter()
                 .map(|&j| j as usize)
@@ -283,11 +247,7 @@ impl Tracker {
         }
         let best: Vec<Option<usize>> = overlaps
             .iter()
-            .map(|o| {
-                o.iter()
-                    .max_by_key(|&&(j, a)| (a, std::cmp::Reverse(j)))
-                    .map(|&(j, _)| j)
-            })
+            .map(|o| o.iter().max_by_key(|&&(j, a)| (a, std::cmp::Reverse(j))).map(|&(j, _)| j))
             .collect();
         let mut owners: Vec<Vec<usize>> = vec![Vec::new(); blobs.len()];
         for (i, b) in best.iter().enumerate() {
@@ -299,9 +259,7 @@ impl Tracker {
         // them most: the parts a split produced.
         let mut split_parts: Vec<Vec<usize>> = vec![Vec::new(); prev.len()];
         for j in (0..blobs.len()).filter(|&j| owners[j].is_empty()) {
-            let parent = overlapped_by[j]
-                .iter()
-                .max_by_key(|&&(i, a)| (a, std::cmp::Reverse(i)));
+            let parent = overlapped_by[j].iter().max_by_key(|&&(i, a)| (a, std::cmp::Reverse(i)));
             if let Some(&(i, _)) = parent {
                 split_parts[i].push(j);
             }
@@ -311,11 +269,7 @@ impl Tracker {
 
         // Rules 1 and 2: continue and merge.
         for j in 0..blobs.len() {
-            let Some(keeper) = owners[j]
-                .iter()
-                .copied()
-                .min_by_key(|&i| (prev[i].birth, prev[i].id))
-            else {
+            let Some(keeper) = owners[j].iter().copied().min_by_key(|&i| (prev[i].birth, prev[i].id)) else {
                 continue;
             };
             let p = &prev[keeper];
@@ -323,10 +277,7 @@ impl Tracker {
                 Assignment {
                     id: p.id,
                     birth: p.birth,
-                    velocity: [
-                        centroid(j)[0] - p.centroid[0],
-                        centroid(j)[1] - p.centroid[1],
-                    ],
+                    velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
                     previous_angle: p.angle,
                     members: p.members.clone(),
                 }
@@ -343,13 +294,7 @@ impl Tracker {
                         })
                     })
                     .collect();
-                Assignment {
-                    id: p.id,
-                    birth: p.birth,
-                    velocity: p.velocity,
-                    previous_angle: None,
-                    members,
-                }
+                Assignment { id: p.id, birth: p.birth, velocity: p.velocity, previous_angle: None, members }
             });
         }
 
@@ -361,19 +306,13 @@ impl Tracker {
                 continue;
             }
             let main = best[i].filter(|&b| owners[b].len() == 1);
-            let parts: Vec<usize> = main
-                .into_iter()
-                .chain(split_parts[i].iter().copied())
-                .collect();
+            let parts: Vec<usize> = main.into_iter().chain(split_parts[i].iter().copied()).collect();
             let mut identities = p.identities();
             if main.is_none() {
                 // The main part merged with others this same frame and keeps
                 // that result; the other parts draw from what is left.
                 let taken = taken.get_or_insert_with(|| {
-                    out.iter()
-                        .flatten()
-                        .flat_map(|a| a.members.iter().map(|m| m.id).chain([a.id]))
-                        .collect()
+                    out.iter().flatten().flat_map(|a| a.members.iter().map(|m| m.id).chain([a.id])).collect()
                 });
                 identities.retain(|m| !taken.contains(&m.id));
             }
@@ -402,15 +341,9 @@ impl Tracker {
                 && let Some(own) = identities.iter().position(|m| m.id == p.id)
                 && identity_part[own].is_none()
             {
-                let overlap_of = |j: usize| {
-                    overlaps[i]
-                        .iter()
-                        .find(|&&(k, _)| k == j)
-                        .map_or(0, |&(_, a)| a)
-                };
-                if let Some(k) = (0..parts.len())
-                    .filter(|&k| part_identity[k].is_none())
-                    .max_by_key(|&k| overlap_of(parts[k]))
+                let overlap_of = |j: usize| overlaps[i].iter().find(|&&(k, _)| k == j).map_or(0, |&(_, a)| a);
+                if let Some(k) =
+                    (0..parts.len()).filter(|&k| part_identity[k].is_none()).max_by_key(|&k| overlap_of(parts[k]))
                 {
                     part_identity[k] = Some(own);
                     identity_part[own] = Some(k);
@@ -442,23 +375,15 @@ impl Tracker {
                     continue;
                 }
                 let spot = place(m);
-                if let Some(k) = (0..parts.len()).min_by(|&a, &b| {
-                    distance(centroid(parts[a]), spot)
-                        .total_cmp(&distance(centroid(parts[b]), spot))
-                }) {
+                if let Some(k) = (0..parts.len())
+                    .min_by(|&a, &b| distance(centroid(parts[a]), spot).total_cmp(&distance(centroid(parts[b]), spot)))
+                {
                     let c = centroid(parts[k]);
                     let a = &mut assigned[k];
                     if a.members.is_empty() {
-                        a.members.push(Identity {
-                            id: a.id,
-                            birth: a.birth,
-                            offset: [0.0, 0.0],
-                        });
+                        a.members.push(Identity { id: a.id, birth: a.birth, offset: [0.0, 0.0] });
                     }
-                    a.members.push(Identity {
-                        offset: [spot[0] - c[0], spot[1] - c[1]],
-                        ..*m
-                    });
+                    a.members.push(Identity { offset: [spot[0] - c[0], spot[1] - c[1]], ..*m });
                 }
             }
             for (k, a) in assigned.into_iter().enumerate() {
@@ -471,23 +396,11 @@ impl Tracker {
 
         // Rule 4: jumps, nearest first.
         let orphans: Vec<usize> = (0..blobs.len()).filter(|&j| out[j].is_none()).collect();
-        let lost: Vec<usize> = (0..prev.len())
-            .filter(|&i| overlaps[i].is_empty())
-            .collect();
+        let lost: Vec<usize> = (0..prev.len()).filter(|&i| overlaps[i].is_empty()).collect();
         let spot = |c: [f32; 2], r: f32| {
-            [
-                (c[0] - r).floor() as i64,
-                (c[1] - r).floor() as i64,
-                (c[0] + r).ceil() as i64,
-                (c[1] + r).ceil() as i64,
-            ]
+            [(c[0] - r).floor() as i64, (c[1] - r).floor() as i64, (c[0] + r).ceil() as i64, (c[1] + r).ceil() as i64]
         };
-        let lost_grid = BoxGrid::new(
-            &lost
-                .iter()
-                .map(|&i| spot(prev[i].predicted(), 0.0))
-                .collect::<Vec<_>>(),
-        );
+        let lost_grid = BoxGrid::new(&lost.iter().map(|&i| spot(prev[i].predicted(), 0.0)).collect::<Vec<_>>());
         let mut pairs: Vec<(f32, usize, usize)> = Vec::new();
         for &j in &orphans {
             lost_grid.query(spot(centroid(j), gate), &mut near);
@@ -508,10 +421,7 @@ impl Tracker {
                 out[j] = Some(Assignment {
                     id: p.id,
                     birth: p.birth,
-                    velocity: [
-                        centroid(j)[0] - p.centroid[0],
-                        centroid(j)[1] - p.centroid[1],
-                    ],
+                    velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
                     previous_angle: p.angle,
                     members: p.members.clone(),
                 });
@@ -531,23 +441,13 @@ impl Tracker {
                     members: Vec::new(),
                 },
             };
-            let angle = (blob.ellipse.elongation() >= self.params.min_elongation)
-                .then_some(blob.ellipse.angle);
+            let angle = (blob.ellipse.elongation() >= self.params.min_elongation).then_some(blob.ellipse.angle);
             let rotation = match (a.previous_angle, angle) {
                 (Some(from), Some(to)) => axis_turn(from, to),
                 _ => 0.0,
             };
-            let members = if a.members.len() > 1 {
-                a.members
-            } else {
-                Vec::new()
-            };
-            result.push(Tracked {
-                id: a.id,
-                velocity: a.velocity,
-                rotation,
-                age: (frame - a.birth) as u32,
-            });
+            let members = if a.members.len() > 1 { a.members } else { Vec::new() };
+            result.push(Tracked { id: a.id, velocity: a.velocity, rotation, age: (frame - a.birth) as u32 });
             self.live.push(Live {
                 id: a.id,
                 birth: a.birth,

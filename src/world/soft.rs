@@ -115,7 +115,12 @@ impl World {
                             .get(other)
                             .and_then(Collider::parent)
                             .and_then(|p| physics.bodies.get(p))
-                            .is_some_and(|rb| (rb.is_dynamic() || rb.is_kinematic()) && !rb.is_sleeping() && !rb.is_soft_frame() && rb.linvel().length() > 1e-3)
+                            .is_some_and(|rb| {
+                                (rb.is_dynamic() || rb.is_kinematic())
+                                    && !rb.is_sleeping()
+                                    && !rb.is_soft_frame()
+                                    && rb.linvel().length() > 1e-3
+                            })
                 })
             });
             if touched {
@@ -196,7 +201,10 @@ impl World {
 
     /// Whether every particle of every soft body is finite.
     pub fn soft_all_finite(&self) -> bool {
-        self.physics().soft_bodies.iter().all(|(_, b)| b.particle_positions().all(Vec3::is_finite) && b.particle_velocities().all(Vec3::is_finite))
+        self.physics()
+            .soft_bodies
+            .iter()
+            .all(|(_, b)| b.particle_positions().all(Vec3::is_finite) && b.particle_velocities().all(Vec3::is_finite))
     }
 
     /// Volume enclosed by soft body `index` now, and at rest (m³; 0 for a cloth).
@@ -242,7 +250,11 @@ impl World {
                 for i in i0..=i1.min(n.x - 1) {
                     let q = lo + (Vec2::new(i as f32, j as f32) + 0.5) * CELL;
                     let (w0, w1, w2) = ((c - b).perp_dot(q - b), (a - c).perp_dot(q - c), (b - a).perp_dot(q - a));
-                    let inside = if area > 0.0 { w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0 } else { w0 <= 0.0 && w1 <= 0.0 && w2 <= 0.0 };
+                    let inside = if area > 0.0 {
+                        w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0
+                    } else {
+                        w0 <= 0.0 && w1 <= 0.0 && w2 <= 0.0
+                    };
                     if inside {
                         covered[(j * n.x + i) as usize] = true;
                     }

@@ -215,7 +215,11 @@ impl World {
         if self.config.joints {
             Ok(())
         } else {
-            Err(WorldError::EffectNotDeclared { scene: self.scene.name.clone(), effect: "joints", what: what.to_string() })
+            Err(WorldError::EffectNotDeclared {
+                scene: self.scene.name.clone(),
+                effect: "joints",
+                what: what.to_string(),
+            })
         }
     }
 
@@ -273,10 +277,13 @@ impl World {
     pub fn measure_penetration(&mut self) -> f32 {
         let mut deepest = 0.0f32;
         for pair in self.physics.narrow_phase.contact_pairs() {
-            let (Some(c1), Some(c2)) = (self.physics.colliders.get(pair.collider1), self.physics.colliders.get(pair.collider2)) else {
+            let (Some(c1), Some(c2)) =
+                (self.physics.colliders.get(pair.collider1), self.physics.colliders.get(pair.collider2))
+            else {
                 continue;
             };
-            let scene_pair = |c: &Collider| matches!(super::groups::collider_layer(c), Layer::Object | Layer::Environment);
+            let scene_pair =
+                |c: &Collider| matches!(super::groups::collider_layer(c), Layer::Object | Layer::Environment);
             if !(scene_pair(c1) && scene_pair(c2)) {
                 continue;
             }
@@ -424,7 +431,13 @@ impl World {
         if c.user_data == SOFT_TAG {
             // A cloth is two-sided: its normal faces the ray.
             let normal = if hit.normal.dot(dir) > 0.0 { -hit.normal } else { hit.normal };
-            return Some(RayHit { object: None, point, normal, toi: hit.time_of_impact, soft: self.soft_hit(c, point) });
+            return Some(RayHit {
+                object: None,
+                point,
+                normal,
+                toi: hit.time_of_impact,
+                soft: self.soft_hit(c, point),
+            });
         }
         let object = if c.user_data == ENV_TAG { None } else { Some(c.user_data as usize) };
         let mut out = RayHit { object, point, normal: hit.normal, toi: hit.time_of_impact, soft: None };
