@@ -135,6 +135,20 @@ impl Hand {
         self
     }
 
+    /// The footprint's bounding box on the table, `[min, max]` in metres.
+    pub fn bounds(&self) -> [[f32; 2]; 2] {
+        let mut lo = [f32::MAX; 2];
+        let mut hi = [f32::MIN; 2];
+        for p in self.patches() {
+            let [a, b] = p.shape.bounds();
+            for k in 0..2 {
+                lo[k] = lo[k].min(a[k]);
+                hi[k] = hi[k].max(b[k]);
+            }
+        }
+        [lo, hi]
+    }
+
     /// The footprint on the table, in table metres.
     pub fn patches(&self) -> Vec<Patch> {
         let mut out = Vec::new();
@@ -239,16 +253,7 @@ mod tests {
     use super::*;
 
     fn extent(hand: &Hand) -> [[f32; 2]; 2] {
-        let mut lo = [f32::MAX; 2];
-        let mut hi = [f32::MIN; 2];
-        for p in hand.patches() {
-            let [a, b] = p.shape.bounds();
-            for k in 0..2 {
-                lo[k] = lo[k].min(a[k]);
-                hi[k] = hi[k].max(b[k]);
-            }
-        }
-        [lo, hi]
+        hand.bounds()
     }
 
     #[test]

@@ -662,16 +662,7 @@ mod tests {
     }
 
     fn extent(hand: &Hand) -> [[f32; 2]; 2] {
-        let mut lo = [f32::MAX; 2];
-        let mut hi = [f32::MIN; 2];
-        for p in hand.patches() {
-            let [a, b] = p.shape.bounds();
-            for k in 0..2 {
-                lo[k] = lo[k].min(a[k]);
-                hi[k] = hi[k].max(b[k]);
-            }
-        }
-        [lo, hi]
+        hand.bounds()
     }
 
     #[test]
