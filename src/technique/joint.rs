@@ -159,16 +159,7 @@ impl JointTechnique {
     fn update_pusher(&mut self, world: &mut World, c: &Contact, input: &TechniqueInput<'_>, screen: Vec2) {
         let max_step = self.config.max_contact_speed * input.dt;
         if let Some(p) = self.pushers.get(&c.id).copied() {
-            // The outline where it appears at the prism's mid-height.
-            let mid = p.base_z + PRISM_HEIGHT / 2.0;
-            let target = at_height(world, screen, mid);
-            let hull: Vec<Vec2> = c
-                .blob
-                .hull
-                .iter()
-                .map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target)
-                .collect();
-            let shape = prism(&hull, input.sensor.metres_per_pixel());
+            let (target, shape) = pusher_shape(world, c, input, screen, p.base_z);
             let physics = world.physics_mut();
             if let Some(b) = physics.bodies.get_mut(p.body) {
                 let cur = b.translation();
@@ -182,15 +173,7 @@ impl JointTechnique {
             // Stand on the surface under the finger (beside an object, that
             // is the surface next to it, not the object's side).
             let base_z = support_below(world, screen).map_or(0.0, |h| h.point.z) + 0.001;
-            let mid = base_z + PRISM_HEIGHT / 2.0;
-            let target = at_height(world, screen, mid);
-            let hull: Vec<Vec2> = c
-                .blob
-                .hull
-                .iter()
-                .map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target)
-                .collect();
-            let shape = prism(&hull, input.sensor.metres_per_pixel());
+            let (target, shape) = pusher_shape(world, c, input, screen, base_z);
             let physics = world.physics_mut();
             let body = physics
                 .bodies
@@ -203,6 +186,27 @@ impl JointTechnique {
             self.pushers.insert(c.id, Pusher { body, collider, base_z });
         }
     }
+}
+
+/// Where a pusher standing at `base_z` goes and its shape: the contact's
+/// hull where it appears at the prism's mid-height (perspective), relative
+/// to the contact's own point there.
+fn pusher_shape(
+    world: &World,
+    c: &Contact,
+    input: &TechniqueInput<'_>,
+    screen: Vec2,
+    base_z: f32,
+) -> (Vec2, SharedShape) {
+    let mid = base_z + PRISM_HEIGHT / 2.0;
+    let target = at_height(world, screen, mid);
+    let hull: Vec<Vec2> = c
+        .blob
+        .hull
+        .iter()
+        .map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target)
+        .collect();
+    (target, prism(&hull, input.sensor.metres_per_pixel()))
 }
 
 /// A prism over a contact hull (points relative to its centroid), from the
