@@ -51,6 +51,29 @@ fn run_writes_the_documented_report() {
     assert!(x > 0.08, "the proxy drag moved the box {x} m");
 }
 
+/// `run` on a soft scene reports each soft body: the torn paper in two
+/// pieces with its goal met, the rigid scene with none.
+#[test]
+fn run_reports_the_state_of_soft_bodies() {
+    let dir = tmp("soft_report");
+    let report = dir.join("tear.json");
+    let o = bin()
+        .args(["run", "--task", "tear", "--technique", "particle", "--gesture", "assets/gestures/tear_two_hands.toml"])
+        .arg("--report")
+        .arg(&report)
+        .output()
+        .expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&report).expect("report")).expect("json");
+    let paper = &r["soft_bodies"][0];
+    assert_eq!(paper["name"], "paper", "{r}");
+    assert_eq!(paper["kind"], "cloth");
+    assert!(paper["pieces"].as_u64().expect("pieces") >= 2, "{paper}");
+    assert!(paper["coverage"].as_f64().expect("coverage") > 0.5, "{paper}");
+    assert!(paper["volume_ratio"].is_null() && paper["finite"] == true, "{paper}");
+    assert_eq!(r["completion"]["complete"], true, "{r}");
+}
+
 #[test]
 fn bad_inputs_exit_2_and_name_the_file_and_field() {
     let dir = tmp("bad");

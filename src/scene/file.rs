@@ -175,6 +175,8 @@ pub struct SoftBodyFile {
     pub damping: Option<f32>,
     #[serde(default)]
     pub crumple: Option<f32>,
+    #[serde(default)]
+    pub crease: Option<f32>,
     pub color: String,
 }
 

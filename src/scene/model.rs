@@ -247,8 +247,13 @@ pub struct SoftBodySpec {
     pub thickness: f32,
     /// Air drag on the particles (1/s).
     pub damping: f32,
-    /// 0 = starts flat; up to 0.6 = starts rumpled into this much less area.
+    /// 0 = starts flat; up to 0.6 = starts rumpled into this much less area
+    /// (creased that way: the rumpled shape is the sheet's rest shape).
     pub crumple: f32,
+    /// Strain (and fold angle, in radians) past which a cloth's springs take
+    /// a permanent set: 0 = perfectly elastic, springs back to its rest
+    /// shape; 0.03 = cotton, keeps the creases a hand presses in or out.
+    pub crease: f32,
     pub color_name: String,
     pub color: Color,
 }

@@ -430,6 +430,9 @@ impl Checker<'_> {
         if b.crumple.is_some() && kind != SoftKind::Cloth {
             return Err(self.err(&span, f("crumple"), "only a cloth can start crumpled"));
         }
+        if b.crease.is_some() && kind != SoftKind::Cloth {
+            return Err(self.err(&span, f("crease"), "only a cloth creases"));
+        }
         let tear_strain = match b.tear_strain {
             Some(t) => Some(
                 self.positive(&span, &f("tear_strain"), t)
@@ -459,6 +462,7 @@ impl Checker<'_> {
             thickness,
             damping: self.num(&span, &f("damping"), b.damping.unwrap_or(0.5), 0.0, 100.0)?,
             crumple: self.num(&span, &f("crumple"), b.crumple.unwrap_or(0.0), 0.0, 0.6)?,
+            crease: self.num(&span, &f("crease"), b.crease.unwrap_or(0.0), 0.0, 0.5)?,
             color_name: b.color,
             color,
         };

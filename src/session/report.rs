@@ -2,6 +2,7 @@
 
 use super::Session;
 use crate::goal::Progress;
+use crate::scene::SoftKind;
 use serde::Serialize;
 
 /// Mean time per stage, µs.
@@ -23,6 +24,30 @@ pub struct ObjectReport {
     pub linvel: [f32; 3],
     /// False once it vanished (placed on its positioning target).
     pub active: bool,
+}
+
+/// The state of one declared soft body at the end of the run.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct SoftReport {
+    pub name: String,
+    /// `cloth` or `volume`.
+    pub kind: &'static str,
+    /// Whether it exists (its effect is declared).
+    pub simulated: bool,
+    /// Pieces it is in now (more than 1 after a tear).
+    pub pieces: usize,
+    /// Mass of each piece (kg), largest first.
+    pub piece_masses: Vec<f32>,
+    /// Centre of mass of all its pieces.
+    pub center: Option<[f32; 3]>,
+    /// Cloth: share of its rest area it covers seen from above (null for a volume).
+    pub coverage: Option<f32>,
+    /// Volume: its volume over its rest volume (null for a cloth).
+    pub volume_ratio: Option<f32>,
+    /// Fastest particle now (m/s).
+    pub max_particle_speed: f32,
+    /// Every particle position and velocity is finite.
+    pub finite: bool,
 }
 
 #[derive(Debug, Clone, Serialize, PartialEq)]
@@ -62,6 +87,8 @@ pub struct RunReport {
     pub sim_time_s: f64,
     pub wall_time_s: f64,
     pub objects: Vec<ObjectReport>,
+    /// Declared soft bodies (empty for a rigid scene).
+    pub soft_bodies: Vec<SoftReport>,
     /// Highest speed of any scene object (m/s), before the speed cap.
     pub max_speed: f32,
     /// Deepest contact penetration between scene bodies (m).
@@ -95,6 +122,26 @@ impl RunReport {
                 }
             })
             .collect();
+        let soft_bodies = (0..w.soft_body_count())
+            .map(|i| {
+                let spec = w.soft_spec(i);
+                let simulated = w.soft_exists(i);
+                let masses = w.soft_piece_masses(i);
+                let (volume, rest) = w.soft_volume(i);
+                SoftReport {
+                    name: spec.name.clone(),
+                    kind: spec.kind.name(),
+                    simulated,
+                    pieces: masses.len(),
+                    piece_masses: masses,
+                    center: w.soft_center(i).map(|c| c.to_array()),
+                    coverage: (simulated && spec.kind == SoftKind::Cloth).then(|| w.soft_coverage(i)),
+                    volume_ratio: (simulated && spec.kind == SoftKind::Volume && rest > 0.0).then(|| volume / rest),
+                    max_particle_speed: w.soft_max_speed(i),
+                    finite: w.soft_all_finite(),
+                }
+            })
+            .collect();
         let m = session.mean_times();
         let stats = w.stats();
         RunReport {
@@ -108,6 +155,7 @@ impl RunReport {
             sim_time_s: session.time(),
             wall_time_s,
             objects,
+            soft_bodies,
             max_speed: stats.max_speed_seen,
             max_penetration: stats.max_penetration_seen,
             nan_count: stats.nan_count,

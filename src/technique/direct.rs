@@ -6,8 +6,11 @@
 
 use super::surface_point::{clamp_len, table_point, table_velocity};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use crate::surface::Sensor;
+use crate::vision::Blob;
 use crate::world::{World, WorldError};
 use glam::Vec3;
+use rapier3d::prelude::SoftBodyHandle;
 
 #[derive(Debug)]
 pub struct DirectForce {
@@ -15,7 +18,7 @@ pub struct DirectForce {
     /// Points where a force was applied this frame (feedback: a cube each).
     touched: Vec<Vec3>,
     /// Soft particles given a force this frame (cleared after the step).
-    soft_touched: Vec<(rapier3d::prelude::SoftBodyHandle, u32)>,
+    soft_touched: Vec<(SoftBodyHandle, u32)>,
     contacts: usize,
 }
 
@@ -23,6 +26,23 @@ impl DirectForce {
     pub fn new(config: TechniqueConfig) -> Self {
         DirectForce { config, touched: Vec::new(), soft_touched: Vec::new(), contacts: 0 }
     }
+}
+
+/// Largest share of its slip a soft particle may make up in one step.
+const MAX_SERVO: f32 = 1.5;
+
+/// The soft particles that appear (seen from the camera) inside `blob`.
+fn soft_particles_under(world: &World, sensor: &Sensor, blob: &Blob) -> Vec<(SoftBodyHandle, u32)> {
+    let mut out = Vec::new();
+    for (h, b) in world.physics().soft_bodies.iter() {
+        for (i, p) in b.particle_positions().enumerate() {
+            let [x, y] = sensor.to_pixel(world.screen_point(p).to_array());
+            if blob.contains(x.round() as i64, y.round() as i64) {
+                out.push((h, i as u32));
+            }
+        }
+    }
+    out
 }
 
 impl Technique for DirectForce {
@@ -42,15 +62,34 @@ impl Technique for DirectForce {
             }
             let v_hand =
                 clamp_len(table_velocity(input.sensor, c.velocity_px, input.dt), self.config.max_contact_speed);
-            if let Some((h, i)) = hit.soft {
-                // On a soft body: the same drag on the touched particle.
-                let Some(b) = world.physics_mut().soft_bodies.get_mut(h) else { continue };
-                let particle = &b.particles()[i as usize];
-                let v = particle.velocity();
-                let force =
-                    (v_hand.extend(0.0) - Vec3::new(v.x, v.y, 0.0)) * (self.config.direct_gain * particle.mass());
-                b.add_particle_force(i as usize, force, true);
-                self.soft_touched.push((h, i));
+            if hit.soft.is_some() {
+                // On a soft body the touched "point" is every particle that
+                // appears under the contact's footprint. As on a rigid body,
+                // the drag is the whole body's mass times the gain times the
+                // slip (here the mean slip under the hand), shared among
+                // those particles: a hand drags a sheet like it drags a box.
+                let mut under = soft_particles_under(world, input.sensor, &c.blob);
+                if under.is_empty() {
+                    // A fingertip between particles: the one the ray landed nearest.
+                    under.extend(hit.soft);
+                }
+                under.sort_unstable_by_key(|&(h, i)| (h.0.into_raw_parts(), i));
+                for group in under.chunk_by(|a, b| a.0 == b.0) {
+                    let Some(b) = world.physics_mut().soft_bodies.get_mut(group[0].0) else { continue };
+                    let slip = group.iter().fold(Vec3::ZERO, |acc, &(_, i)| {
+                        let v = b.particles()[i as usize].velocity();
+                        acc + v_hand.extend(0.0) - Vec3::new(v.x, v.y, 0.0)
+                    }) / group.len() as f32;
+                    // ...but never more than takes a particle 1.5 times its
+                    // slip in one step: past 2 the servo overshoots more each
+                    // frame, and a fingertip on one particle would fling it.
+                    let share = self.config.direct_gain * b.mass() / group.len() as f32;
+                    for &(_, i) in group {
+                        let m = b.particles()[i as usize].mass();
+                        b.add_particle_force(i as usize, slip * share.min(MAX_SERVO * m / input.dt), true);
+                    }
+                }
+                self.soft_touched.extend(under);
                 self.touched.push(hit.point);
                 continue;
             }

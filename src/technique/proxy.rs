@@ -96,17 +96,21 @@ pub(super) fn pressure_weight(config: &TechniqueConfig, base: f32, grey: f32) ->
 }
 
 /// The mass of a technique body standing on a soft body. Its weight (the
-/// press) is kept through the gravity scale; only its inertia shrinks.
+/// press) is kept through the gravity scale; only its inertia changes.
 /// rapier's soft solver cannot hold a heavy body on light particles: in a
 /// probe, a 0.2 kg box pressing 2 N sank into a 30 g, 256-particle cloth
-/// (0.12 g particles) and a 1 kg one went through; at 10 g it rested on
-/// top. A finger's velocity is imposed every frame anyway, so little is lost.
+/// (0.12 g particles) and a 1 kg one went through. Too light, and a
+/// per-frame particle carries too little momentum to drag the sheet under
+/// it. Four fingertips sliding 10 cm over the flat 50 g task cloth moved it
+/// 3.2 cm at 5 g a particle, 6.1 cm at 10 g, 7.3 cm at 20 g and 1.0 cm at
+/// 50 g (the particles pushed into the sheet); at 20 g two hands smoothing
+/// it outwards stretched it for good by 14% on average, at 10 g by 5%.
 pub(super) fn soft_mass(weight: f32) -> f32 {
-    SOFT_CONTACT_MASS.max(weight / (9.81 * SOFT_MAX_GRAVITY_SCALE)).min(weight / 9.81).max(1e-4)
+    SOFT_CONTACT_MASS.max(weight / (9.81 * SOFT_MAX_GRAVITY_SCALE))
 }
 
 /// Inertia (kg) of a proxy or particle standing on a soft body...
-const SOFT_CONTACT_MASS: f32 = 0.005;
+const SOFT_CONTACT_MASS: f32 = 0.01;
 /// ...unless its press would need a gravity scale above this: a body
 /// falling at 8 g still moves only 2 cm in a step if its support gives way.
 const SOFT_MAX_GRAVITY_SCALE: f32 = 8.0;

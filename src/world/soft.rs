@@ -21,6 +21,17 @@ use rapier3d::prelude::*;
 /// Extra internal PGS iterations for soft bodies and what touches them.
 const SOFT_PGS_ITERATIONS: usize = 12;
 
+/// How fast (1/s) strain past a cloth's `crease` sets into its rest shape:
+/// a crease forms within a few frames of a hand pressing it.
+const CREASE_RATE: f32 = 20.0;
+
+/// Largest set (fraction of an edge's rest length) a crease may take. Warp
+/// and weft share the bend edges' plasticity in rapier, so two hands
+/// pulling a cloth apart also stretch it for good; this caps that at 20%
+/// (the flatten gesture leaves about 5% on average, see `tests/soft_bodies.rs`),
+/// while the bend edges of the task's rumples need at most 17% to lie flat.
+const CREASE_MAX: f32 = 0.2;
+
 /// `user_data` of every soft-body surface collider (pieces copy it).
 pub(super) const SOFT_TAG: u128 = u128::MAX - 1;
 
@@ -88,12 +99,6 @@ impl World {
         // before the first step, which would file the new root body as
         // untouched: ask for a wake-up at the first step explicitly.
         physics.soft_bodies[h].wake_up();
-        if spec.kind == SoftKind::Cloth && spec.crumple > 0.0 {
-            let sb = &mut physics.soft_bodies[h];
-            for (i, p) in crumpled(&spec).into_iter().enumerate() {
-                sb.set_particle_position(i, p);
-            }
-        }
         h
     }
 
@@ -307,11 +312,19 @@ fn soft_builder(spec: &SoftBodySpec, index: usize, friction: bool, sleeping: boo
             let dv = Vec3::Y * spec.size.y / (ny - 1) as f32;
             let mut material = SoftBodyMaterial::uniform(stretch);
             material.bend_softness = SpringCoefficients::new(spec.bending.max(0.01), 1.0);
+            // Creases: past `crease` strain an edge's rest length flows to
+            // where the hand left it, so a cloth pressed flat stays flat and
+            // one bunched up stays bunched (rapier's edge plasticity).
+            material.edge_plastic_yield = spec.crease;
+            material.edge_plastic_creep = CREASE_RATE;
+            material.edge_plastic_max = CREASE_MAX;
             let mut cloth = SoftBodyBuilder::cloth(origin, du, dv, nx, ny).material(material);
-            // Cloth buckles freely and resists stretching only: its stretch
-            // and shear edges are tension-only, so a crumpled sheet stays
-            // crumpled until pulled out. The bending springs push both ways.
-            cloth.tension_only_edges = (0..cloth.edges.len() as u32).collect();
+            if spec.crumple > 0.0 {
+                // Built in its rumpled shape: that is its rest shape (the
+                // creases it came with). Warp and weft keep their lengths;
+                // only shear and bending differ from the flat sheet.
+                cloth.positions = crumpled(spec);
+            }
             cloth
         }
         SoftKind::Volume => {
@@ -350,26 +363,82 @@ fn soft_builder(spec: &SoftBodySpec, index: usize, friction: bool, sleeping: boo
     builder
 }
 
-/// A cloth's particles rumpled into `1 - crumple` of its width and depth by
-/// waves whose arc length roughly keeps the edges at their rest length
-/// (a compressed sine, `z = A(1 - cos kx)/2`, has length ≈ `L'(1 + (Ak/2)²/4)`).
+/// A cloth's particles rumpled into `1 - crumple` of its width and depth:
+/// waves `z = A(1 - cos kx)/2` along x plus waves along y, with the
+/// particles spaced by arc length along each wave, so every warp and weft
+/// edge keeps its flat length (the sheet is rumpled, not shrunk).
 fn crumpled(spec: &SoftBodySpec) -> Vec<Vec3> {
     let [nu, nv, _] = spec.resolution;
-    let s = 1.0 - spec.crumple;
-    let amplitude = |len: f32, waves: f32| {
-        let k = std::f32::consts::TAU * waves / (len * s);
-        (4.0 * (1.0 / s - 1.0).sqrt() / k, k)
-    };
-    let (ax, kx) = amplitude(spec.size.x, 3.0);
-    let (ay, ky) = amplitude(spec.size.y, 2.0);
+    let along_x = Wave::new(spec.size.x, 1.0 - spec.crumple, 3.0);
+    let along_y = Wave::new(spec.size.y, 1.0 - spec.crumple, 2.0);
     let mut out = Vec::with_capacity(nu * nv);
     for i in 0..nu {
+        let (x, zx) = along_x.at(i as f32 / (nu - 1) as f32);
         for j in 0..nv {
-            let x = (i as f32 / (nu - 1) as f32 - 0.5) * spec.size.x * s;
-            let y = (j as f32 / (nv - 1) as f32 - 0.5) * spec.size.y * s;
-            let z = 0.5 * ax * (1.0 - (kx * x).cos()) + 0.5 * ay * (1.0 - (ky * y).cos());
-            out.push(Vec3::new(spec.position.x + x, spec.position.y + y, spec.position.z + z));
+            let (y, zy) = along_y.at(j as f32 / (nv - 1) as f32);
+            out.push(spec.position + Vec3::new(x, y, zx + zy));
         }
     }
     out
+}
+
+/// A cosine wave of a given arc length squeezed into a shorter span,
+/// sampled by arc length.
+struct Wave {
+    /// `(x, z)` at evenly spaced arc lengths, `x` centred on 0.
+    table: Vec<(f32, f32)>,
+}
+
+impl Wave {
+    const SAMPLES: usize = 2048;
+
+    /// A wave of arc length `len` spanning `len * squeeze` in `waves` periods.
+    fn new(len: f32, squeeze: f32, waves: f32) -> Self {
+        let span = len * squeeze;
+        let k = std::f32::consts::TAU * waves / span;
+        let curve = |a: f32| -> Vec<(f32, f32, f32)> {
+            // (x, z, arc length so far) along the span.
+            let mut out = Vec::with_capacity(Self::SAMPLES + 1);
+            let mut arc = 0.0;
+            let mut prev = (-span / 2.0, 0.0);
+            for n in 0..=Self::SAMPLES {
+                let x = span * (n as f32 / Self::SAMPLES as f32 - 0.5);
+                let z = 0.5 * a * (1.0 - (k * (x + span / 2.0)).cos());
+                arc += ((x - prev.0).powi(2) + (z - prev.1).powi(2)).sqrt();
+                prev = (x, z);
+                out.push((x, z, arc));
+            }
+            out
+        };
+        // The amplitude whose arc length is `len` (bisection: arc grows with it).
+        let (mut lo, mut hi) = (0.0f32, len);
+        for _ in 0..40 {
+            let mid = 0.5 * (lo + hi);
+            if curve(mid).last().map_or(0.0, |c| c.2) < len {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let samples = curve(0.5 * (lo + hi));
+        let total = samples.last().map_or(len, |c| c.2);
+        let mut table = Vec::with_capacity(Self::SAMPLES + 1);
+        let mut n = 0;
+        for m in 0..=Self::SAMPLES {
+            let s = total * m as f32 / Self::SAMPLES as f32;
+            while n + 1 < samples.len() && samples[n + 1].2 < s {
+                n += 1;
+            }
+            let (a, b) = (samples[n], samples[(n + 1).min(samples.len() - 1)]);
+            let t = if b.2 > a.2 { ((s - a.2) / (b.2 - a.2)).clamp(0.0, 1.0) } else { 0.0 };
+            table.push((a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t));
+        }
+        Self { table }
+    }
+
+    /// `(x, z)` at fraction `f` of the arc length.
+    fn at(&self, f: f32) -> (f32, f32) {
+        let m = (f.clamp(0.0, 1.0) * Self::SAMPLES as f32).round() as usize;
+        self.table[m]
+    }
 }

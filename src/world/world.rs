@@ -431,13 +431,13 @@ impl World {
         if c.user_data == SOFT_TAG {
             // A cloth is two-sided: its normal faces the ray.
             let normal = if hit.normal.dot(dir) > 0.0 { -hit.normal } else { hit.normal };
-            return Some(RayHit {
-                object: None,
-                point,
-                normal,
-                toi: hit.time_of_impact,
-                soft: self.soft_hit(c, point),
-            });
+            // The ray meets the mesh through the particles' centres, but
+            // bodies touch it at its contact skin (the particles' radius):
+            // report that surface, or whatever is placed "on" the cloth
+            // starts half its thickness inside it and is thrown off.
+            let skin = c.contact_skin();
+            let toi = (hit.time_of_impact - skin / normal.dot(-dir).max(0.2)).max(0.0);
+            return Some(RayHit { object: None, point: ray.point_at(toi), normal, toi, soft: self.soft_hit(c, point) });
         }
         let object = if c.user_data == ENV_TAG { None } else { Some(c.user_data as usize) };
         let mut out = RayHit { object, point, normal: hit.normal, toi: hit.time_of_impact, soft: None };
