@@ -74,6 +74,37 @@ fn run_reports_the_state_of_soft_bodies() {
     assert_eq!(r["completion"]["complete"], true, "{r}");
 }
 
+/// The study harness times the soft scenes too: replayed participants
+/// (`--replay DIR` with `<task>.toml` gestures) smooth the cloth and tear
+/// the paper, and each trial's completion lands in `trials.csv`.
+#[test]
+fn study_replays_the_soft_scenes_and_times_them() {
+    let dir = tmp("soft_study");
+    let gestures = dir.join("gestures");
+    std::fs::create_dir_all(&gestures).expect("dir");
+    for (task, gesture) in [("cloth", "flatten"), ("tear", "tear_two_hands")] {
+        std::fs::copy(format!("assets/gestures/{gesture}.toml"), gestures.join(format!("{task}.toml"))).expect("copy");
+    }
+    let out = dir.join("run");
+    let o = bin()
+        .args(["study", "--tasks", "cloth,tear", "--techniques", "particle,proxy", "--participants", "1"])
+        .args(["--reps", "1", "--no-practice", "--no-progress", "--replay"])
+        .arg(&gestures)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let csv = std::fs::read_to_string(out.join("trials.csv")).expect("trials.csv");
+    let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 8, "2 tasks x 2 techniques x feedback on/off:\n{csv}");
+    let completed = |task: &str, technique: &str| {
+        rows.iter().filter(|r| r[2] == task && r[3] == technique).all(|r| r[8] == "true")
+    };
+    assert!(completed("tear", "particle") && completed("tear", "proxy"), "{csv}");
+    assert!(completed("cloth", "particle"), "{csv}");
+}
+
 #[test]
 fn bad_inputs_exit_2_and_name_the_file_and_field() {
     let dir = tmp("bad");

@@ -90,6 +90,15 @@ fn soft_bodies_exist_only_when_their_effect_is_declared() {
     assert!(e.contains("jelly"), "{e}");
     let e = scene::parse(&text.replace("mass = 0.03", "mass = -1"), "tear.toml").expect_err("bad mass").to_string();
     assert!(e.contains("soft_bodies[0].mass") && e.contains("-1"), "{e}");
+    let e = scene::parse(&text.replace("mass = 0.03", "mass = 0.03\ncrease = 2.0"), "tear.toml")
+        .expect_err("crease out of range")
+        .to_string();
+    assert!(e.contains("soft_bodies[0].crease"), "{e}");
+    let soft = std::fs::read_to_string(root("tasks/soft.toml")).expect("read");
+    let e = scene::parse(&soft.replace("mass = 0.08", "mass = 0.08\ncrease = 0.03"), "soft.toml")
+        .expect_err("a volume does not crease")
+        .to_string();
+    assert!(e.contains("soft_bodies[0].crease") && e.contains("only a cloth"), "{e}");
 }
 
 /// A light box on the cloth rests on it (rigid–soft contacts happen), and
