@@ -98,9 +98,8 @@ fn study_replays_the_soft_scenes_and_times_them() {
     let csv = std::fs::read_to_string(out.join("trials.csv")).expect("trials.csv");
     let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 8, "2 tasks x 2 techniques x feedback on/off:\n{csv}");
-    let completed = |task: &str, technique: &str| {
-        rows.iter().filter(|r| r[2] == task && r[3] == technique).all(|r| r[8] == "true")
-    };
+    let completed =
+        |task: &str, technique: &str| rows.iter().filter(|r| r[2] == task && r[3] == technique).all(|r| r[8] == "true");
     assert!(completed("tear", "particle") && completed("tear", "proxy"), "{csv}");
     assert!(completed("cloth", "particle"), "{csv}");
 }
