@@ -489,3 +489,26 @@ keys = [{ t = 0.0, pos = [0.0, -0.02] }, { t = 0.3 }, { t = 0.8, pos = [0.2, -0.
     assert!(moved > 0.02, "direct force moved the sheet only {moved:.3} m");
     assert_eq!(s.world().soft_piece_masses(0).len(), 1, "direct force tore the sheet");
 }
+
+/// The slot's goal counts the jelly inside the slot, not perched on its
+/// walls: placed resting across the wall tops, right over the goal
+/// rectangle, it never completes; without the height bound it would.
+#[test]
+fn a_block_perched_on_the_slot_walls_is_not_in_the_slot() {
+    let text = std::fs::read_to_string(root("tasks/soft.toml")).expect("read");
+    let perched = text.replace("position = [-0.05, -0.10]", "position = [0.0, 0.17, 0.072]");
+    assert_ne!(perched, text, "the jelly's position line moved");
+    for (label, text, want) in
+        [("with max_height", perched.clone(), false), ("without", perched.replace("max_height = 0.04", ""), true)]
+    {
+        let scene = scene::parse(&text, "soft.toml").expect("scene");
+        let mut s = session(&scene, TechniqueKind::Particle);
+        while s.time() < 2.0 {
+            s.step(&[]).expect("step");
+        }
+        let c = s.world().soft_center(0).expect("jelly");
+        println!("jelly perched on the slot walls ({label}): centre {c:.3}, goal complete: {}", s.progress().complete);
+        assert!(c.z > 0.05, "the jelly fell into the slot by itself: {c}");
+        assert_eq!(s.progress().complete, want, "{label}");
+    }
+}

@@ -152,18 +152,22 @@ impl Tracker {
                 self.progress.placed = inside;
                 !dynamic.is_empty() && inside as f32 >= fraction * dynamic.len() as f32
             }
-            Goal::Region { object, min, max, dwell_s } => {
-                let p = poses[*object].position.truncate();
-                let ok = p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y && resting(&poses[*object]);
+            Goal::Region { object, min, max, max_height, dwell_s } => {
+                let p = poses[*object].position;
+                let ok = p.x >= min.x
+                    && p.x <= max.x
+                    && p.y >= min.y
+                    && p.y <= max.y
+                    && p.z <= *max_height
+                    && resting(&poses[*object]);
                 let done = self.dwell_step(*object, ok, dt, *dwell_s);
                 self.progress.placed = usize::from(done);
                 done
             }
-            Goal::SoftRegion { body, min, max, dwell_s } => {
-                let ok = world
-                    .soft_center(*body)
-                    .is_some_and(|c| c.x >= min.x && c.x <= max.x && c.y >= min.y && c.y <= max.y)
-                    && world.soft_max_speed(*body) < SOFT_REST_SPEED;
+            Goal::SoftRegion { body, min, max, max_height, dwell_s } => {
+                let ok = world.soft_center(*body).is_some_and(|c| {
+                    c.x >= min.x && c.x <= max.x && c.y >= min.y && c.y <= max.y && c.z <= *max_height
+                }) && world.soft_max_speed(*body) < SOFT_REST_SPEED;
                 let done = self.soft_dwell_step(ok, dt, *dwell_s);
                 self.progress.placed = usize::from(done);
                 done

@@ -245,6 +245,10 @@ pub struct GoalFile {
     pub min: Option<[f32; 2]>,
     #[serde(default)]
     pub max: Option<[f32; 2]>,
+    /// region: the object's centre at most this high (m), so resting on top
+    /// of the cavity does not count as inside it.
+    #[serde(default)]
+    pub max_height: Option<f32>,
     // cloth_flat / torn: the soft body
     #[serde(default)]
     pub body: Option<String>,

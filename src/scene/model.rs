@@ -325,11 +325,12 @@ pub enum Goal {
     Steering(SteeringGoal),
     /// At least `fraction` of the dynamic objects rest inside the circle.
     Gather { center: Vec2, radius: f32, fraction: f32, dwell_s: f32 },
-    /// The named object rests inside the rectangle.
-    Region { object: usize, min: Vec2, max: Vec2, dwell_s: f32 },
-    /// The named soft body's centre of mass rests inside the rectangle
-    /// (`kind = "region"` naming a soft body).
-    SoftRegion { body: usize, min: Vec2, max: Vec2, dwell_s: f32 },
+    /// The named object rests inside the rectangle (its centre no higher
+    /// than `max_height` above the table).
+    Region { object: usize, min: Vec2, max: Vec2, max_height: f32, dwell_s: f32 },
+    /// The named soft body's centre of mass rests inside the rectangle, no
+    /// higher than `max_height` (`kind = "region"` naming a soft body).
+    SoftRegion { body: usize, min: Vec2, max: Vec2, max_height: f32, dwell_s: f32 },
     /// The named cloth, at rest, covers at least `min_area_fraction` of its
     /// rest area on the table (crumpled cloth smoothed out).
     ClothFlat { body: usize, min_area_fraction: f32, dwell_s: f32 },

@@ -617,12 +617,16 @@ impl Checker<'_> {
                     &span,
                     "goal.max",
                 )?;
+                let max_height = match g.max_height {
+                    Some(h) => self.positive(&span, "goal.max_height", h)?,
+                    None => f32::INFINITY,
+                };
                 // The named thing may be a soft body (a block squeezed into a cavity).
                 if let Some(body) = g.object.as_ref().and_then(|n| soft.iter().position(|b| &b.name == n)) {
-                    Goal::SoftRegion { body, min, max, dwell_s }
+                    Goal::SoftRegion { body, min, max, max_height, dwell_s }
                 } else {
                     let object = object_named(&g.object, "goal.object")?;
-                    Goal::Region { object, min, max, dwell_s }
+                    Goal::Region { object, min, max, max_height, dwell_s }
                 }
             }
             GoalKind::ClothFlat | GoalKind::Torn => {
