@@ -76,6 +76,12 @@ pub struct TechniqueConfig {
     pub particle_pooled: bool,
     /// Long capsule particles that hug non-flat objects.
     pub particle_capsules: bool,
+    /// Simulate only particles that can touch something movable this step:
+    /// one landing on bare table or a fixed object, out of reach of every
+    /// dynamic object and soft body, is drawn as feedback but gets no body
+    /// (it would press on the table and nothing else). Off: the paper's
+    /// every-particle-a-body.
+    pub particle_cull: bool,
 
     // Shared limits
     /// Contact speeds above this are clamped (m/s): lost tracking never flings.
@@ -103,6 +109,7 @@ impl Default for TechniqueConfig {
             particle_cap: 4000,
             particle_pooled: true,
             particle_capsules: false,
+            particle_cull: true,
             max_contact_speed: 4.0,
             pressure: PressureMode::Off,
         }

@@ -26,6 +26,10 @@ use std::collections::HashMap;
 /// time without changing how hard a hand presses.
 pub const REFERENCE_SPACING: f32 = 3.0 * 0.001_562_5;
 
+/// Extra distance (m) at which a particle is still simulated near a
+/// movable body, beyond what both can travel in the step.
+const CULL_SLACK: f32 = 0.01;
+
 /// Grid cell (px) for matching pooled particles to this frame's samples.
 const CELL: f32 = 4.0;
 /// A pooled particle is re-used for a sample within this many pixels of its
@@ -48,6 +52,8 @@ pub struct ParticleTechnique {
     /// Pooled bodies (pooled variant) or this frame's bodies (per-frame variant).
     slots: Vec<Slot>,
     positions: Vec<Vec3>,
+    /// This frame's culled particles (feedback only, see `particle_cull`).
+    sensed_only: Vec<Vec3>,
     contacts: usize,
 }
 
@@ -65,11 +71,12 @@ struct Placement {
 
 impl ParticleTechnique {
     pub fn new(config: TechniqueConfig) -> Self {
-        ParticleTechnique { config, slots: Vec::new(), positions: Vec::new(), contacts: 0 }
+        ParticleTechnique { config, slots: Vec::new(), positions: Vec::new(), sensed_only: Vec::new(), contacts: 0 }
     }
 
-    /// Where each particle goes this frame: pure given the frame and world.
-    fn placements(&self, input: &TechniqueInput<'_>, world: &World) -> Vec<Placement> {
+    /// Where each particle goes this frame, and where the culled ones sit
+    /// (pure given the frame and world).
+    fn placements(&self, input: &TechniqueInput<'_>, world: &World) -> (Vec<Placement>, Vec<Vec3>) {
         // Stride and edge threshold were applied by the vision stage, which
         // the session configures from `particle_stride` and
         // `particle_edge_threshold`: one knob each, not two.
@@ -82,7 +89,9 @@ impl ParticleTechnique {
         }
         let r = self.config.particle_radius;
         let share = self.config.particle_stride as f32 * input.sensor.metres_per_pixel() / REFERENCE_SPACING;
+        let reach = if self.config.particle_cull { world.movable_reach() } else { Vec::new() };
         let mut out = Vec::with_capacity(samples.len());
+        let mut culled = Vec::new();
         for e in samples {
             let p = table_point(input.sensor, e.px);
             let Some(hit) = world.cast_contact_ray(p) else { continue };
@@ -98,19 +107,27 @@ impl ParticleTechnique {
                 v.z
             };
             let offset = if self.config.particle_capsules { r * 3.0 } else { r };
+            let center = hit.point + hit.normal * (offset - 0.0001);
+            if self.config.particle_cull
+                && hit.soft.is_none()
+                && !reach.iter().any(|b| b.can_touch(center, offset, v.length(), input.dt, CULL_SLACK))
+            {
+                culled.push(center);
+                continue;
+            }
             let weight = pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey)) * share;
             out.push(Placement {
                 px: e.px,
                 // Just touching (0.1 mm in): a particle that starts in contact presses
                 // with its full weight within its one step.
-                center: hit.point + hit.normal * (offset - 0.0001),
+                center,
                 velocity: Vec3::new(vt.x, vt.y, vz),
                 weight,
                 // On a soft body a particle weighs what it presses (see `soft_mass`).
                 mass: if hit.soft.is_some() { soft_mass(weight) } else { self.config.particle_mass * share },
             });
         }
-        out
+        (out, culled)
     }
 
     fn new_body(&self, world: &mut World, p: &Placement) -> RigidBodyHandle {
@@ -237,7 +254,8 @@ impl Technique for ParticleTechnique {
 
     fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
         self.contacts = input.frame.contacts.len();
-        let placements = self.placements(input, world);
+        let (placements, culled) = self.placements(input, world);
+        self.sensed_only = culled;
         if self.config.particle_pooled {
             let flows: Vec<[f32; 2]> = {
                 // Flow of each placement's sample, looked up by pixel.
@@ -281,7 +299,8 @@ impl Technique for ParticleTechnique {
 
     fn feedback(&self, _world: &World) -> Feedback {
         let half = self.config.particle_radius;
-        Feedback { lines: Vec::new(), cubes: self.positions.iter().map(|p| (*p, half)).collect() }
+        let all = self.positions.iter().chain(&self.sensed_only);
+        Feedback { lines: Vec::new(), cubes: all.map(|p| (*p, half)).collect() }
     }
 
     fn counts(&self) -> TechniqueCounts {
@@ -293,6 +312,7 @@ impl Technique for ParticleTechnique {
             remove_body(world, s.body);
         }
         self.positions.clear();
+        self.sensed_only.clear();
     }
 
     fn config_mut(&mut self) -> &mut TechniqueConfig {

@@ -7,6 +7,7 @@
 mod config;
 mod groups;
 mod ray;
+mod reach;
 mod soft;
 mod stats;
 #[allow(clippy::module_inception)]
@@ -15,6 +16,7 @@ mod world;
 pub use config::WorldConfig;
 pub use groups::{Layer, collider_layer};
 pub use ray::RayHit;
+pub use reach::Reach;
 pub use soft::SoftSurface;
 pub use stats::{StepStats, WorldStats};
 pub use world::{ObjectPose, World, WorldError};
