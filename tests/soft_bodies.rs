@@ -29,6 +29,17 @@ fn session(scene: &Scene, kind: TechniqueKind) -> Session {
     Session::new(scene, kind, SessionOptions::default()).expect("session")
 }
 
+/// A flat hand that lands at `x0` (y = -0.02), rests 0.3 s, then slides
+/// along x to `x1` in `seconds`.
+fn flat_hand_drag(x0: f32, x1: f32, seconds: f32) -> Gesture {
+    let text = format!(
+        "format = \"surfacelab-gesture\"\nversion = 1\n[[hands]]\nid = 1\nkind = \"flat_hand\"\n\
+         keys = [{{ t = 0.0, pos = [{x0}, -0.02] }}, {{ t = 0.3 }}, {{ t = {}, pos = [{x1}, -0.02] }}]\n",
+        0.3 + seconds
+    );
+    Gesture::from_str(&text, "flat_hand_drag").expect("gesture")
+}
+
 /// Replays `g` and then `settle` more seconds with no hands.
 fn replay(scene: &Scene, kind: TechniqueKind, g: &Gesture, settle: f64) -> Session {
     let mut s = session(scene, kind);
@@ -147,18 +158,7 @@ position = [0.0, 0.0, 0.0165]
 fn two_opposing_hands_tear_the_sheet_one_hand_drags_it_whole() {
     let scene = task("tear");
     let two = gesture("tear_two_hands");
-    let one = Gesture::from_str(
-        r#"
-format = "surfacelab-gesture"
-version = 1
-[[hands]]
-id = 1
-kind = "flat_hand"
-keys = [{ t = 0.0, pos = [0.05, -0.02] }, { t = 0.3 }, { t = 1.5, pos = [0.25, -0.02] }]
-"#,
-        "one_hand_drag",
-    )
-    .expect("gesture");
+    let one = flat_hand_drag(0.05, 0.25, 1.2);
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy, TechniqueKind::Joint] {
         let torn = replay(&scene, kind, &two, 0.5);
         let pieces = torn.world().soft_piece_masses(0);
@@ -471,18 +471,7 @@ fn fingertips_closing_on_a_flat_cloth_crumple_it() {
 #[test]
 fn direct_force_drags_a_sheet_under_a_fast_hand() {
     let scene = task("tear");
-    let g = Gesture::from_str(
-        r#"
-format = "surfacelab-gesture"
-version = 1
-[[hands]]
-id = 1
-kind = "flat_hand"
-keys = [{ t = 0.0, pos = [0.0, -0.02] }, { t = 0.3 }, { t = 0.8, pos = [0.2, -0.02] }]
-"#,
-        "fast_drag",
-    )
-    .expect("gesture");
+    let g = flat_hand_drag(0.0, 0.2, 0.5);
     let s = replay(&scene, TechniqueKind::Direct, &g, 0.5);
     let moved = s.world().soft_center(0).expect("sheet").x;
     println!("direct: a hand sliding 0.2 m at 0.4 m/s dragged the paper {moved:.3} m");
