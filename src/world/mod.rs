@@ -5,18 +5,21 @@
 //! (soft bodies included: `soft.rs`).
 
 mod config;
+mod error;
 mod groups;
 mod ray;
 mod reach;
 mod soft;
+mod soft_access;
 mod stats;
 #[allow(clippy::module_inception)]
 mod world;
 
 pub use config::WorldConfig;
+pub use error::WorldError;
 pub use groups::{Layer, collider_layer};
 pub use ray::RayHit;
 pub use reach::Reach;
 pub use soft::SoftSurface;
 pub use stats::{StepStats, WorldStats};
-pub use world::{ObjectPose, World, WorldError};
+pub use world::{ObjectPose, World};

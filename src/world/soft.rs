@@ -1,9 +1,12 @@
-//! Soft bodies in the world: cloth sheets, soft volumes and the pieces a tear
-//! leaves, all simulated by rapier's `dynamics::soft_body` (no solver of our own).
+//! Soft bodies: cloth sheets, soft volumes and the pieces a tear leaves,
+//! all simulated by rapier's `dynamics::soft_body` (no solver of our own).
+//! This file builds them from the scene and reads them back from rapier's
+//! physics; it knows nothing of [`super::World`], which owns a
+//! [`SoftBodies`] and forwards to it (`soft_access.rs`).
 //!
 //! Soft bodies are an effect. A scene that declares none of `soft_bodies`,
-//! `cloth` or `tearing` has an empty `SoftBodySet`, and [`World::add_soft_body`]
-//! refuses to create one whose effect is off, naming the scene and the effect.
+//! `cloth` or `tearing` has an empty `SoftBodySet`, and [`SoftBodies::add`]
+//! refuses to create one whose effect is off, returning that effect.
 //!
 //! Every piece of a body keeps the scene index of the body it came from in
 //! `SoftBody::user_data` (rapier copies it to the pieces a tear splits off),
@@ -12,8 +15,8 @@
 //! [`Layer::Soft`], which meets objects, proxies and particles alike, and
 //! which scene ray casts see.
 
+use super::config::WorldConfig;
 use super::groups::Layer;
-use super::world::{World, WorldError};
 use crate::scene::{Effect, SoftBodySpec, SoftKind};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
@@ -38,9 +41,15 @@ pub(super) const SOFT_TAG: u128 = u128::MAX - 1;
 /// One declared soft body: its description and the body first inserted for
 /// it (`None` while its effect is off).
 #[derive(Debug, Clone)]
-pub(super) struct SoftSlot {
+struct SoftSlot {
     spec: SoftBodySpec,
     root: Option<SoftBodyHandle>,
+}
+
+/// The declared soft bodies of a world, in declaration order.
+#[derive(Debug, Clone, Default)]
+pub(super) struct SoftBodies {
+    slots: Vec<SoftSlot>,
 }
 
 /// A soft body's surface as the renderer wants it: world-space vertices and
@@ -53,252 +62,248 @@ pub struct SoftSurface {
     pub triangles: Vec<[u32; 3]>,
 }
 
-impl World {
-    /// Creates the scene's soft bodies whose effects this world simulates;
+impl SoftBodies {
+    /// Creates the declared soft bodies whose effects `config` simulates;
     /// the others get an empty slot (the world "with that effect off").
-    pub(super) fn spawn_scene_soft_bodies(&mut self) {
-        for spec in self.scene().soft_bodies.clone() {
-            let index = self.soft.len();
-            self.soft.push(SoftSlot { spec: spec.clone(), root: None });
-            if self.missing_soft_effect(&spec).is_none() {
-                let h = self.insert_soft(index);
-                self.soft[index].root = Some(h);
+    pub(super) fn spawn(specs: &[SoftBodySpec], config: &WorldConfig, physics: &mut PhysicsWorld) -> Self {
+        let mut soft = SoftBodies::default();
+        for spec in specs {
+            let index = soft.slots.len();
+            soft.slots.push(SoftSlot { spec: spec.clone(), root: None });
+            if missing_effect(spec, config).is_none() {
+                soft.slots[index].root = Some(insert(spec, index, config, physics));
             }
         }
+        soft
     }
 
-    /// The first effect `spec` needs that this world does not simulate.
-    fn missing_soft_effect(&self, spec: &SoftBodySpec) -> Option<Effect> {
-        spec.required_effects().iter().find(|e| !self.config().effects.contains(*e))
-    }
-
-    /// Adds a soft body (beyond the scene's own); returns its index for the
-    /// `soft_*` accessors. Refuses when its effect is off.
-    pub fn add_soft_body(&mut self, spec: &SoftBodySpec) -> Result<usize, WorldError> {
-        if let Some(e) = self.missing_soft_effect(spec) {
-            return Err(WorldError::EffectNotDeclared {
-                scene: self.scene().name.clone(),
-                effect: e.name(),
-                what: format!("the {} `{}`", spec.kind.name(), spec.name),
-            });
+    /// Adds a soft body (beyond the scene's own); returns its index, or the
+    /// effect it needs that `config` leaves off.
+    pub(super) fn add(
+        &mut self,
+        spec: &SoftBodySpec,
+        config: &WorldConfig,
+        physics: &mut PhysicsWorld,
+    ) -> Result<usize, Effect> {
+        if let Some(e) = missing_effect(spec, config) {
+            return Err(e);
         }
-        let index = self.soft.len();
-        self.soft.push(SoftSlot { spec: spec.clone(), root: None });
-        let h = self.insert_soft(index);
-        self.soft[index].root = Some(h);
-        self.physics_mut().detect_collisions(&(), &());
+        let index = self.slots.len();
+        let root = insert(spec, index, config, physics);
+        self.slots.push(SoftSlot { spec: spec.clone(), root: Some(root) });
+        physics.detect_collisions(&(), &());
         Ok(index)
-    }
-
-    fn insert_soft(&mut self, index: usize) -> SoftBodyHandle {
-        let spec = self.soft[index].spec.clone();
-        let builder = soft_builder(&spec, index, self.config().friction, self.config().sleeping);
-        let physics = self.physics_mut();
-        let h = physics.insert_soft_body(builder);
-        // The world refreshes its query structures (`detect_collisions`)
-        // before the first step, which would file the new root body as
-        // untouched: ask for a wake-up at the first step explicitly.
-        physics.soft_bodies[h].wake_up();
-        h
-    }
-
-    /// Wakes every sleeping soft body that a moving rigid body touches.
-    /// rapier keeps a soft body asleep under a finger sliding slowly over it
-    /// (its contacts are solved outside the rigid contact graph that wakes
-    /// islands): a proxy circling at 3 cm/s on a sleeping cloth never moved
-    /// it. Called before every step; costs nothing when nothing sleeps.
-    pub(super) fn wake_touched_soft_bodies(&mut self) {
-        let physics = self.physics_mut();
-        let mut wake = Vec::new();
-        for (h, b) in physics.soft_bodies.iter().filter(|(_, b)| b.is_sleeping() && b.is_enabled()) {
-            let touched = b.meshes().filter(|m| m.collision_enabled()).any(|m| {
-                physics.narrow_phase.contact_pairs_with(m.collider()).any(|pair| {
-                    let other = if pair.collider1 == m.collider() { pair.collider2 } else { pair.collider1 };
-                    pair.has_any_active_contact()
-                        && physics
-                            .colliders
-                            .get(other)
-                            .and_then(Collider::parent)
-                            .and_then(|p| physics.bodies.get(p))
-                            .is_some_and(|rb| {
-                                (rb.is_dynamic() || rb.is_kinematic())
-                                    && !rb.is_sleeping()
-                                    && !rb.is_soft_frame()
-                                    && rb.linvel().length() > 1e-3
-                            })
-                })
-            });
-            if touched {
-                wake.push(h);
-            }
-        }
-        for h in wake {
-            physics.soft_bodies[h].wake_up();
-        }
     }
 
     /// Puts every soft body back as declared: torn pieces go, the bodies
     /// return whole and at rest.
-    pub(super) fn reset_soft_bodies(&mut self) {
-        for index in 0..self.soft.len() {
-            if self.soft[index].root.is_none() {
+    pub(super) fn reset(&mut self, config: &WorldConfig, physics: &mut PhysicsWorld) {
+        for (index, slot) in self.slots.iter_mut().enumerate() {
+            if slot.root.is_none() {
                 continue;
             }
-            let family: Vec<SoftBodyHandle> = self.soft_pieces(index).map(|(h, _)| h).collect();
+            let family: Vec<SoftBodyHandle> = pieces(physics, index).map(|(h, _)| h).collect();
             for h in family {
-                self.physics_mut().remove_soft_body(h);
+                physics.remove_soft_body(h);
             }
-            let h = self.insert_soft(index);
-            self.soft[index].root = Some(h);
+            slot.root = Some(insert(&slot.spec, index, config, physics));
         }
     }
 
     /// Number of declared soft bodies (including those whose effect is off).
-    pub fn soft_body_count(&self) -> usize {
-        self.soft.len()
+    pub(super) fn len(&self) -> usize {
+        self.slots.len()
     }
 
-    pub fn soft_spec(&self, index: usize) -> &SoftBodySpec {
-        &self.soft[index].spec
+    pub(super) fn is_empty(&self) -> bool {
+        self.slots.is_empty()
     }
 
-    /// Whether the declared soft body `index` exists in this world.
-    pub fn soft_exists(&self, index: usize) -> bool {
-        self.soft[index].root.is_some()
+    pub(super) fn spec(&self, index: usize) -> &SoftBodySpec {
+        &self.slots[index].spec
     }
 
-    /// The rapier bodies soft body `index` is made of now: the body itself,
-    /// or after tears the pieces it came apart into.
-    pub fn soft_pieces(&self, index: usize) -> impl Iterator<Item = (SoftBodyHandle, &SoftBody)> {
-        self.physics().soft_bodies.iter().filter(move |(_, b)| b.user_data == index as u128)
+    /// Whether the declared soft body `index` exists (its effect is on).
+    pub(super) fn exists(&self, index: usize) -> bool {
+        self.slots[index].root.is_some()
     }
+}
 
-    /// The mass of each piece of soft body `index`, largest first.
-    pub fn soft_piece_masses(&self, index: usize) -> Vec<f32> {
-        let mut m: Vec<f32> = self.soft_pieces(index).map(|(_, b)| b.mass()).collect();
-        m.sort_by(|a, b| b.total_cmp(a));
-        m
-    }
+/// The first effect `spec` needs that `config` does not simulate.
+fn missing_effect(spec: &SoftBodySpec, config: &WorldConfig) -> Option<Effect> {
+    spec.required_effects().iter().find(|e| !config.effects.contains(*e))
+}
 
-    /// Centre of mass of soft body `index` (all its pieces).
-    pub fn soft_center(&self, index: usize) -> Option<Vec3> {
-        let (mut sum, mut mass) = (Vec3::ZERO, 0.0);
-        for (_, b) in self.soft_pieces(index) {
-            sum += b.center_of_mass() * b.mass();
-            mass += b.mass();
-        }
-        (mass > 0.0).then(|| sum / mass)
-    }
+fn insert(spec: &SoftBodySpec, index: usize, config: &WorldConfig, physics: &mut PhysicsWorld) -> SoftBodyHandle {
+    let h = physics.insert_soft_body(soft_builder(spec, index, config.friction, config.sleeping));
+    // The world refreshes its query structures (`detect_collisions`) before
+    // the first step, which would file the new root body as untouched: ask
+    // for a wake-up at the first step explicitly.
+    physics.soft_bodies[h].wake_up();
+    h
+}
 
-    /// Fastest particle of soft body `index` (m/s); infinite if any is not finite.
-    pub fn soft_max_speed(&self, index: usize) -> f32 {
-        let mut top = 0.0f32;
-        for (_, b) in self.soft_pieces(index) {
-            for v in b.particle_velocities() {
-                if !v.is_finite() {
-                    return f32::INFINITY;
-                }
-                top = top.max(v.length());
-            }
-        }
-        top
-    }
-
-    /// Whether every particle of every soft body is finite.
-    pub fn soft_all_finite(&self) -> bool {
-        self.physics()
-            .soft_bodies
-            .iter()
-            .all(|(_, b)| b.particle_positions().all(Vec3::is_finite) && b.particle_velocities().all(Vec3::is_finite))
-    }
-
-    /// Volume enclosed by soft body `index` now, and at rest (m³; 0 for a cloth).
-    pub fn soft_volume(&self, index: usize) -> (f32, f32) {
-        self.soft_pieces(index).fold((0.0, 0.0), |(v, r), (_, b)| (v + b.volume(), r + b.rest_volume()))
-    }
-
-    /// Share of its rest area that soft body `index` covers on the table,
-    /// seen from above (a crumpled or folded cloth covers less; a fold
-    /// counts once). Rasterised on a 2 mm grid.
-    pub fn soft_coverage(&self, index: usize) -> f32 {
-        const CELL: f32 = 0.002;
-        let mut tris: Vec<[Vec2; 3]> = Vec::new();
-        let (mut lo, mut hi) = (Vec2::splat(f32::MAX), Vec2::splat(f32::MIN));
-        for (_, b) in self.soft_pieces(index) {
-            let p: Vec<Vec2> = b.particle_positions().map(Vec3::truncate).collect();
-            for t in b.boundary() {
-                let tri = [p[t[0] as usize], p[t[1] as usize], p[t[2] as usize]];
-                for q in tri {
-                    lo = lo.min(q);
-                    hi = hi.max(q);
-                }
-                tris.push(tri);
-            }
-        }
-        if tris.is_empty() || !(lo.is_finite() && hi.is_finite()) {
-            return 0.0;
-        }
-        let n = ((hi - lo) / CELL).ceil().as_uvec2() + 1;
-        if n.x > 4096 || n.y > 4096 {
-            return 0.0;
-        }
-        let mut covered = vec![false; (n.x * n.y) as usize];
-        for [a, b, c] in tris {
-            let (tlo, thi) = (a.min(b).min(c), a.max(b).max(c));
-            let (i0, j0) = (((tlo.x - lo.x) / CELL).floor() as u32, ((tlo.y - lo.y) / CELL).floor() as u32);
-            let (i1, j1) = (((thi.x - lo.x) / CELL).ceil() as u32, ((thi.y - lo.y) / CELL).ceil() as u32);
-            let area = (b - a).perp_dot(c - a);
-            if area.abs() < 1e-12 {
-                continue;
-            }
-            for j in j0..=j1.min(n.y - 1) {
-                for i in i0..=i1.min(n.x - 1) {
-                    let q = lo + (Vec2::new(i as f32, j as f32) + 0.5) * CELL;
-                    let (w0, w1, w2) = ((c - b).perp_dot(q - b), (a - c).perp_dot(q - c), (b - a).perp_dot(q - a));
-                    let inside = if area > 0.0 {
-                        w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0
-                    } else {
-                        w0 <= 0.0 && w1 <= 0.0 && w2 <= 0.0
-                    };
-                    if inside {
-                        covered[(j * n.x + i) as usize] = true;
-                    }
-                }
-            }
-        }
-        let cells = covered.iter().filter(|c| **c).count() as f32;
-        let spec = &self.soft[index].spec;
-        cells * CELL * CELL / (spec.size.x * spec.size.y)
-    }
-
-    /// Every soft body's surface now, torn pieces included.
-    pub fn soft_surfaces(&self) -> Vec<SoftSurface> {
-        self.physics()
-            .soft_bodies
-            .iter()
-            .filter(|(_, b)| b.is_enabled())
-            .map(|(_, b)| SoftSurface {
-                body: b.user_data as usize,
-                positions: b.particle_positions().collect(),
-                triangles: b.boundary().to_vec(),
+/// Wakes every sleeping soft body that a moving rigid body touches.
+/// rapier keeps a soft body asleep under a finger sliding slowly over it
+/// (its contacts are solved outside the rigid contact graph that wakes
+/// islands): a proxy circling at 3 cm/s on a sleeping cloth never moved it.
+/// Called before every step; costs nothing when nothing sleeps.
+pub(super) fn wake_touched(physics: &mut PhysicsWorld) {
+    let mut wake = Vec::new();
+    for (h, b) in physics.soft_bodies.iter().filter(|(_, b)| b.is_sleeping() && b.is_enabled()) {
+        let touched = b.meshes().filter(|m| m.collision_enabled()).any(|m| {
+            physics.narrow_phase.contact_pairs_with(m.collider()).any(|pair| {
+                let other = if pair.collider1 == m.collider() { pair.collider2 } else { pair.collider1 };
+                pair.has_any_active_contact()
+                    && physics
+                        .colliders
+                        .get(other)
+                        .and_then(Collider::parent)
+                        .and_then(|p| physics.bodies.get(p))
+                        .is_some_and(|rb| {
+                            (rb.is_dynamic() || rb.is_kinematic())
+                                && !rb.is_sleeping()
+                                && !rb.is_soft_frame()
+                                && rb.linvel().length() > 1e-3
+                        })
             })
-            .collect()
+        });
+        if touched {
+            wake.push(h);
+        }
     }
+    for h in wake {
+        physics.soft_bodies[h].wake_up();
+    }
+}
 
-    /// The particle of soft body `h` nearest to `point`.
-    pub fn nearest_soft_particle(&self, h: SoftBodyHandle, point: Vec3) -> Option<u32> {
-        let b = self.physics().soft_bodies.get(h)?;
-        b.particle_positions()
-            .enumerate()
-            .min_by(|(_, a), (_, c)| (*a - point).length_squared().total_cmp(&(*c - point).length_squared()))
-            .map(|(i, _)| i as u32)
-    }
+/// The rapier bodies soft body `index` is made of now: the body itself, or
+/// after tears the pieces it came apart into.
+pub(super) fn pieces(physics: &PhysicsWorld, index: usize) -> impl Iterator<Item = (SoftBodyHandle, &SoftBody)> {
+    physics.soft_bodies.iter().filter(move |(_, b)| b.user_data == index as u128)
+}
 
-    /// The soft particle a ray hit on collider `c` lands on, if `c` is a soft surface.
-    pub(super) fn soft_hit(&self, c: &Collider, point: Vec3) -> Option<(SoftBodyHandle, u32)> {
-        let mesh = c.deformable_mesh_ref()?;
-        Some((mesh.body, self.nearest_soft_particle(mesh.body, point)?))
+/// The mass of each piece of soft body `index`, largest first.
+pub(super) fn piece_masses(physics: &PhysicsWorld, index: usize) -> Vec<f32> {
+    let mut m: Vec<f32> = pieces(physics, index).map(|(_, b)| b.mass()).collect();
+    m.sort_by(|a, b| b.total_cmp(a));
+    m
+}
+
+/// Centre of mass of soft body `index` (all its pieces).
+pub(super) fn center(physics: &PhysicsWorld, index: usize) -> Option<Vec3> {
+    let (mut sum, mut mass) = (Vec3::ZERO, 0.0);
+    for (_, b) in pieces(physics, index) {
+        sum += b.center_of_mass() * b.mass();
+        mass += b.mass();
     }
+    (mass > 0.0).then(|| sum / mass)
+}
+
+/// Fastest particle of soft body `index` (m/s); infinite if any is not finite.
+pub(super) fn max_speed(physics: &PhysicsWorld, index: usize) -> f32 {
+    let mut top = 0.0f32;
+    for (_, b) in pieces(physics, index) {
+        for v in b.particle_velocities() {
+            if !v.is_finite() {
+                return f32::INFINITY;
+            }
+            top = top.max(v.length());
+        }
+    }
+    top
+}
+
+/// Whether every particle of every soft body is finite.
+pub(super) fn all_finite(physics: &PhysicsWorld) -> bool {
+    physics
+        .soft_bodies
+        .iter()
+        .all(|(_, b)| b.particle_positions().all(Vec3::is_finite) && b.particle_velocities().all(Vec3::is_finite))
+}
+
+/// Volume enclosed by soft body `index` now, and at rest (m³; 0 for a cloth).
+pub(super) fn volume(physics: &PhysicsWorld, index: usize) -> (f32, f32) {
+    pieces(physics, index).fold((0.0, 0.0), |(v, r), (_, b)| (v + b.volume(), r + b.rest_volume()))
+}
+
+/// Share of its rest area that soft body `index` covers on the table,
+/// seen from above (a crumpled or folded cloth covers less; a fold
+/// counts once). Rasterised on a 2 mm grid.
+pub(super) fn coverage(physics: &PhysicsWorld, spec: &SoftBodySpec, index: usize) -> f32 {
+    const CELL: f32 = 0.002;
+    let mut tris: Vec<[Vec2; 3]> = Vec::new();
+    let (mut lo, mut hi) = (Vec2::splat(f32::MAX), Vec2::splat(f32::MIN));
+    for (_, b) in pieces(physics, index) {
+        let p: Vec<Vec2> = b.particle_positions().map(Vec3::truncate).collect();
+        for t in b.boundary() {
+            let tri = [p[t[0] as usize], p[t[1] as usize], p[t[2] as usize]];
+            for q in tri {
+                lo = lo.min(q);
+                hi = hi.max(q);
+            }
+            tris.push(tri);
+        }
+    }
+    if tris.is_empty() || !(lo.is_finite() && hi.is_finite()) {
+        return 0.0;
+    }
+    let n = ((hi - lo) / CELL).ceil().as_uvec2() + 1;
+    if n.x > 4096 || n.y > 4096 {
+        return 0.0;
+    }
+    let mut covered = vec![false; (n.x * n.y) as usize];
+    for [a, b, c] in tris {
+        let (tlo, thi) = (a.min(b).min(c), a.max(b).max(c));
+        let (i0, j0) = (((tlo.x - lo.x) / CELL).floor() as u32, ((tlo.y - lo.y) / CELL).floor() as u32);
+        let (i1, j1) = (((thi.x - lo.x) / CELL).ceil() as u32, ((thi.y - lo.y) / CELL).ceil() as u32);
+        let area = (b - a).perp_dot(c - a);
+        if area.abs() < 1e-12 {
+            continue;
+        }
+        for j in j0..=j1.min(n.y - 1) {
+            for i in i0..=i1.min(n.x - 1) {
+                let q = lo + (Vec2::new(i as f32, j as f32) + 0.5) * CELL;
+                let (w0, w1, w2) = ((c - b).perp_dot(q - b), (a - c).perp_dot(q - c), (b - a).perp_dot(q - a));
+                let inside =
+                    if area > 0.0 { w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0 } else { w0 <= 0.0 && w1 <= 0.0 && w2 <= 0.0 };
+                if inside {
+                    covered[(j * n.x + i) as usize] = true;
+                }
+            }
+        }
+    }
+    let cells = covered.iter().filter(|c| **c).count() as f32;
+    cells * CELL * CELL / (spec.size.x * spec.size.y)
+}
+
+/// Every soft body's surface now, torn pieces included.
+pub(super) fn surfaces(physics: &PhysicsWorld) -> Vec<SoftSurface> {
+    physics
+        .soft_bodies
+        .iter()
+        .filter(|(_, b)| b.is_enabled())
+        .map(|(_, b)| SoftSurface {
+            body: b.user_data as usize,
+            positions: b.particle_positions().collect(),
+            triangles: b.boundary().to_vec(),
+        })
+        .collect()
+}
+
+/// The particle of soft body `h` nearest to `point`.
+pub(super) fn nearest_particle(physics: &PhysicsWorld, h: SoftBodyHandle, point: Vec3) -> Option<u32> {
+    let b = physics.soft_bodies.get(h)?;
+    b.particle_positions()
+        .enumerate()
+        .min_by(|(_, a), (_, c)| (*a - point).length_squared().total_cmp(&(*c - point).length_squared()))
+        .map(|(i, _)| i as u32)
+}
+
+/// The soft particle a ray hit on collider `c` lands on, if `c` is a soft surface.
+pub(super) fn hit(physics: &PhysicsWorld, c: &Collider, point: Vec3) -> Option<(SoftBodyHandle, u32)> {
+    let mesh = c.deformable_mesh_ref()?;
+    Some((mesh.body, nearest_particle(physics, mesh.body, point)?))
 }
 
 /// The rapier builder for a declared soft body.

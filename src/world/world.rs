@@ -1,9 +1,10 @@
 //! [`World`]: the scene's rigid bodies in rapier3d, stepped at a fixed rate.
 
 use super::config::WorldConfig;
+use super::error::WorldError;
 use super::groups::Layer;
 use super::ray::RayHit;
-use super::soft::{SOFT_TAG, SoftSlot};
+use super::soft::{self, SOFT_TAG, SoftBodies};
 use super::stats::{StepStats, WorldStats};
 use crate::scene::{BodyKind, EffectSet, Scene, Shape};
 use glam::{Quat, Vec2, Vec3};
@@ -14,12 +15,6 @@ use std::time::Instant;
 
 /// `user_data` tag of environment colliders (table, walls).
 const ENV_TAG: u128 = u128::MAX;
-
-#[derive(Debug, thiserror::Error)]
-pub enum WorldError {
-    #[error("scene `{scene}` does not declare the `{effect}` effect, which {what} needs")]
-    EffectNotDeclared { scene: String, effect: &'static str, what: String },
-}
 
 /// The pose of one scene object.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,7 +41,7 @@ pub struct World {
     scene: Scene,
     objects: Vec<ObjectSlot>,
     /// Declared soft bodies (src/world/soft.rs); empty slots when their effect is off.
-    pub(super) soft: Vec<SoftSlot>,
+    soft: SoftBodies,
     /// The table, its walls and every object's collider, with the object
     /// index (`None` for the environment) and a cached world AABB. Rigid
     /// scene ray casts test these directly: rapier's broad phase also holds
@@ -160,13 +155,13 @@ impl World {
             config,
             scene: scene.clone(),
             objects,
-            soft: Vec::new(),
+            soft: SoftBodies::default(),
             scene_colliders,
             time: 0.0,
             stats: WorldStats::default(),
             last: StepStats::default(),
         };
-        world.spawn_scene_soft_bodies();
+        world.soft = SoftBodies::spawn(&world.scene.soft_bodies, &world.config, &mut world.physics);
         // Build the query structures now: a contact on the very first frame
         // must be able to ray-cast onto the scene before anything has stepped.
         world.physics.detect_collisions(&(), &());
@@ -205,6 +200,16 @@ impl World {
         &self.physics
     }
 
+    /// The declared soft bodies (read through `soft_access.rs`).
+    pub(super) fn soft(&self) -> &SoftBodies {
+        &self.soft
+    }
+
+    /// The soft bodies and the physics they live in, both mutable.
+    pub(super) fn soft_and_physics_mut(&mut self) -> (&mut SoftBodies, &mut PhysicsWorld) {
+        (&mut self.soft, &mut self.physics)
+    }
+
     pub fn physics_mut(&mut self) -> &mut PhysicsWorld {
         &mut self.physics
     }
@@ -227,7 +232,7 @@ impl World {
     pub fn step(&mut self) {
         let t0 = Instant::now();
         if self.config.sleeping && !self.physics.soft_bodies.is_empty() {
-            self.wake_touched_soft_bodies();
+            soft::wake_touched(&mut self.physics);
         }
         self.physics.step();
         let us = t0.elapsed().as_secs_f64() * 1e6;
@@ -359,7 +364,7 @@ impl World {
                 b.set_angvel(Vec3::ZERO, true);
             }
         }
-        self.reset_soft_bodies();
+        self.soft.reset(&self.config, &mut self.physics);
         self.physics.detect_collisions(&(), &());
         self.refresh_scene_aabbs();
     }
@@ -437,7 +442,13 @@ impl World {
             // starts half its thickness inside it and is thrown off.
             let skin = c.contact_skin();
             let toi = (hit.time_of_impact - skin / normal.dot(-dir).max(0.2)).max(0.0);
-            return Some(RayHit { object: None, point: ray.point_at(toi), normal, toi, soft: self.soft_hit(c, point) });
+            return Some(RayHit {
+                object: None,
+                point: ray.point_at(toi),
+                normal,
+                toi,
+                soft: soft::hit(&self.physics, c, point),
+            });
         }
         let object = if c.user_data == ENV_TAG { None } else { Some(c.user_data as usize) };
         let mut out = RayHit { object, point, normal: hit.normal, toi: hit.time_of_impact, soft: None };
