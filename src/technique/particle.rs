@@ -30,6 +30,10 @@ pub const REFERENCE_SPACING: f32 = 3.0 * 0.001_562_5;
 /// movable body, beyond what both can travel in the step.
 const CULL_SLACK: f32 = 0.01;
 
+/// A particle's speed along the surface it touches, at most this many times
+/// the hand's speed over the table.
+const MAX_SURFACE_SPEEDUP: f32 = 1.2;
+
 /// Grid cell (px) for matching pooled particles to this frame's samples.
 const CELL: f32 = 4.0;
 /// A pooled particle is re-used for a sample within this many pixels of its
@@ -100,6 +104,13 @@ impl ParticleTechnique {
             let mut v = (p_next - hit.point) / input.dt;
             // Tangential only: the plane projection already removed the normal part.
             v -= hit.normal * v.dot(hit.normal);
+            // Never faster than the hand over the table (plus perspective's
+            // scale-up): on a face the camera sees edge-on, like a ball's
+            // far side, the projection turns a millimetre of flow into a
+            // centimetre of slide down the face, and a particle driven down
+            // into the wedge under a ball shot it backwards at 1.2 m/s.
+            let hand_speed = (next - p).length() / input.dt;
+            v = v.clamp_length_max(hand_speed * MAX_SURFACE_SPEEDUP);
             let vt = clamp_len(Vec2::new(v.x, v.y), self.config.max_contact_speed);
             let vz = if v.z.abs() > self.config.max_contact_speed {
                 v.z.signum() * self.config.max_contact_speed
