@@ -338,6 +338,30 @@ fn a_flat_hand_stops_a_rolling_ball() {
     }
 }
 
+/// A fingertip sweeping right over the ball (the start of `ball_stop`)
+/// never sends it left: particles landing on its far side, a face the
+/// camera sees edge-on, once slid down into the wedge under it and shot the
+/// ball backwards at 1.2 m/s.
+#[test]
+fn a_fingertip_sweeping_over_a_ball_never_launches_it_backwards() {
+    let scene = task("ball");
+    let g = gesture("ball_stop");
+    for kind in [TechniqueKind::Particle, TechniqueKind::Proxy] {
+        let mut s = session(&scene, kind);
+        let start = s.world().object_pose(0).position.x;
+        let mut slowest = 0.0f32;
+        while s.time() < 0.9 {
+            let hands = g.sample(s.time());
+            s.step(&hands).expect("step");
+            slowest = slowest.min(s.world().object_pose(0).linvel.x);
+        }
+        let moved = s.world().object_pose(0).position.x - start;
+        println!("{kind}: the sweep moved the ball {moved:+.3} m along x; lowest x velocity {slowest:+.2} m/s");
+        assert!(slowest > -0.15, "{kind}: the ball was launched backwards at {slowest} m/s");
+        assert!(moved > -0.01, "{kind}: the ball went {moved} m the wrong way");
+    }
+}
+
 /// A fingertip pressing one end of a card resting across a ridge tips the
 /// card: that end goes down, the other lifts (Particle and Proxy press;
 /// Joint only grabs, so its tilt is reported).
