@@ -10,6 +10,12 @@
 //! a stable point of the outline (matched by position through the flow), so
 //! rapier's broad phase keeps its pairs; PLATFORM.md measured that pooling
 //! without such coherence is *slower* than create/destroy.
+//!
+//! Two departures from the paper, both measured (README, "Particles: what
+//! they cost" and the study notes): a particle that can touch nothing
+//! movable during its step is drawn but not simulated (`particle_cull`),
+//! and a particle never slides along a surface faster than
+//! [`MAX_SURFACE_SPEEDUP`] times the hand moves over the table.
 
 use super::proxy::{gravity_scale_for, pressure_weight, remove_body, soft_mass};
 use super::surface_point::{clamp_len, project_flow, table_point};
