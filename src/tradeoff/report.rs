@@ -25,7 +25,7 @@ pub struct TradeoffOptions {
 /// Runs the whole report.
 pub fn run_tradeoff(options: &TradeoffOptions) -> anyhow::Result<Vec<Row>> {
     std::fs::create_dir_all(&options.out).with_context(|| format!("creating {}", options.out.display()))?;
-    let gesture_path = Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/gestures/two_hand_gather.toml");
+    let gesture_path = Path::new(env!("CARGO_MANIFEST_DIR")).join(pipeline::FIXTURE_GESTURE);
     let gesture = Gesture::load(&gesture_path)?;
     let knobs = pipeline::knobs(options.quick)?;
     let total = knobs.iter().map(|k| k.values.len()).sum::<usize>() + 2;
