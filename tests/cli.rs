@@ -104,6 +104,36 @@ fn study_replays_the_soft_scenes_and_times_them() {
     assert!(completed("cloth", "particle"), "{csv}");
 }
 
+/// `tradeoff --quick` writes its table, and on its one-box input accuracy
+/// costs time the way it should: the error grows as the contact image gets
+/// coarser, the particle stride wider and the edge threshold higher.
+#[test]
+fn tradeoff_errors_grow_as_each_knob_saves_time() {
+    let out = tmp("tradeoff");
+    let o = bin().args(["tradeoff", "--quick", "--out"]).arg(&out).output().expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let csv = std::fs::read_to_string(out.join("tradeoff.csv")).expect("tradeoff.csv");
+    let errors = |knob: &str| -> Vec<f64> {
+        csv.lines()
+            .map(|l| l.split(',').collect::<Vec<_>>())
+            .filter(|r| r[0] == knob)
+            .map(|r| r[5].parse().expect("error column"))
+            .collect()
+    };
+    for (knob, coarser_later) in [("resolution", false), ("particle_stride", true), ("edge_threshold", true)] {
+        let mut e = errors(knob);
+        assert!(e.len() >= 3, "{knob}: {csv}");
+        if !coarser_later {
+            e.reverse();
+        }
+        assert!(e.windows(2).all(|w| w[1] >= w[0]), "{knob}: errors {e:?} do not grow as it gets coarser");
+    }
+    let cull = errors("particle_cull");
+    assert_eq!(cull.len(), 2, "{csv}");
+    assert!(cull[1] < 0.5, "culling moved the box {} cm off the full simulation", cull[1]);
+    assert!(out.join("particle_cull.png").exists());
+}
+
 #[test]
 fn bad_inputs_exit_2_and_name_the_file_and_field() {
     let dir = tmp("bad");
