@@ -71,6 +71,8 @@ pub struct ParticleTechnique {
 #[derive(Debug, Clone, Copy)]
 struct Placement {
     px: [f32; 2],
+    /// This frame's flow at `px` (pixels): where the sample was one frame ago.
+    flow_px: [f32; 2],
     center: Vec3,
     velocity: Vec3,
     /// Press (N).
@@ -135,6 +137,7 @@ impl ParticleTechnique {
             let weight = pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey)) * share;
             out.push(Placement {
                 px: e.px,
+                flow_px: e.flow_px,
                 // Just touching (0.1 mm in): a particle that starts in contact presses
                 // with its full weight within its one step.
                 center,
@@ -176,7 +179,7 @@ impl ParticleTechnique {
         body
     }
 
-    fn place_pooled(&mut self, world: &mut World, placements: &[Placement], flows: &[[f32; 2]]) {
+    fn place_pooled(&mut self, world: &mut World, placements: &[Placement]) {
         // Index last frame's active slots by where they sat.
         let key = |px: [f32; 2]| ((px[0] / CELL).floor() as i32, (px[1] / CELL).floor() as i32);
         let mut grid: HashMap<(i32, i32), Vec<usize>> = HashMap::new();
@@ -189,7 +192,7 @@ impl ParticleTechnique {
         let mut assignment = vec![usize::MAX; placements.len()];
         for (k, p) in placements.iter().enumerate() {
             // Where this outline point was last frame, by its flow.
-            let prev = [p.px[0] - flows[k][0], p.px[1] - flows[k][1]];
+            let prev = [p.px[0] - p.flow_px[0], p.px[1] - p.flow_px[1]];
             let (cx, cy) = key(prev);
             let mut best = (MATCH_PX * MATCH_PX, usize::MAX);
             for dx in -1..=1 {
@@ -274,21 +277,7 @@ impl Technique for ParticleTechnique {
         let (placements, culled) = self.placements(input, world);
         self.sensed_only = culled;
         if self.config.particle_pooled {
-            let flows: Vec<[f32; 2]> = {
-                // Flow of each placement's sample, looked up by pixel.
-                let map: HashMap<(u32, u32), [f32; 2]> = input
-                    .frame
-                    .edges
-                    .iter()
-                    .map(|e| ((e.px[0].to_bits()), (e.px[1].to_bits())))
-                    .zip(input.frame.edges.iter().map(|e| e.flow_px))
-                    .collect();
-                placements
-                    .iter()
-                    .map(|p| map.get(&(p.px[0].to_bits(), p.px[1].to_bits())).copied().unwrap_or([0.0, 0.0]))
-                    .collect()
-            };
-            self.place_pooled(world, &placements, &flows);
+            self.place_pooled(world, &placements);
         } else {
             // The paper's way: every particle is created now and destroyed after the step.
             for p in &placements {
