@@ -137,7 +137,8 @@ impl Session {
         let measure = self.measure_penetration;
         rasterize_into(hands, &self.sensor, &self.raster, &mut self.image);
         let t1 = Instant::now();
-        self.frame = self.vision.process(&self.image);
+        let interest = self.technique.flow_interest(&self.world, &self.sensor, self.world.dt());
+        self.frame = self.vision.process_with(&self.image, &interest);
         let t2 = Instant::now();
         let input = TechniqueInput { frame: &self.frame, sensor: &self.sensor, dt: self.world.dt() };
         self.technique.apply(&input, &mut self.world)?;

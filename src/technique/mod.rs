@@ -24,7 +24,7 @@ pub use proxy::ProxyTechnique;
 
 use crate::scene::{Effect, EffectSet};
 use crate::surface::Sensor;
-use crate::vision::VisionFrame;
+use crate::vision::{FlowInterest, VisionFrame};
 use crate::world::{World, WorldError};
 
 /// What every technique sees each frame.
@@ -49,6 +49,13 @@ pub struct TechniqueCounts {
 /// The contract all four techniques honour.
 pub trait Technique: Send {
     fn kind(&self) -> TechniqueKind;
+
+    /// Where this technique will read outline flow this frame (asked before
+    /// the vision stage runs, so it measures nothing else). Only Particle
+    /// reads flow.
+    fn flow_interest(&self, _world: &World, _sensor: &Sensor, _dt: f32) -> FlowInterest {
+        FlowInterest::None
+    }
 
     /// Applies this frame's effect to the world, before the step.
     fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError>;

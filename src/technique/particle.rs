@@ -20,6 +20,8 @@
 use super::proxy::{gravity_scale_for, pressure_weight, remove_body, soft_mass};
 use super::surface_point::{clamp_len, project_flow, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use crate::surface::Sensor;
+use crate::vision::FlowInterest;
 use crate::world::{Layer, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
@@ -39,6 +41,11 @@ const CULL_SLACK: f32 = 0.01;
 /// A particle's speed along the surface it touches, at most this many times
 /// the hand's speed over the table.
 const MAX_SURFACE_SPEEDUP: f32 = 1.2;
+
+/// How much larger a length looks on screen than on the table, at most:
+/// perspective scales a point at height z by H / (H - z), under 1.1 for
+/// anything a hand touches under the default camera.
+const MAX_PERSPECTIVE: f32 = 1.25;
 
 /// Grid cell (px) for matching pooled particles to this frame's samples.
 const CELL: f32 = 4.0;
@@ -127,9 +134,11 @@ impl ParticleTechnique {
             };
             let offset = if self.config.particle_capsules { r * 3.0 } else { r };
             let center = hit.point + hit.normal * (offset - 0.0001);
+            // No flow measured: the vision stage found it out of reach of
+            // everything movable (see `flow_interest`).
             if self.config.particle_cull
                 && hit.soft.is_none()
-                && !reach.iter().any(|b| b.can_touch(center, offset, v.length(), input.dt, CULL_SLACK))
+                && (!e.has_flow || !reach.iter().any(|b| b.can_touch(center, offset, v.length(), input.dt, CULL_SLACK)))
             {
                 culled.push(center);
                 continue;
@@ -270,6 +279,40 @@ impl ParticleTechnique {
 impl Technique for ParticleTechnique {
     fn kind(&self) -> TechniqueKind {
         TechniqueKind::Particle
+    }
+
+    /// With culling, flow is needed only where a particle could reach
+    /// something movable: each body's box, grown by what `placements` adds
+    /// to it (the particle's size, the body's travel and the slack),
+    /// projected to the contact image. Vision grows each box further by the
+    /// point's own largest flow, times the speed cap and perspective, so
+    /// every particle `placements` keeps has its flow measured.
+    fn flow_interest(&self, world: &World, sensor: &Sensor, dt: f32) -> FlowInterest {
+        if !self.config.particle_cull {
+            return FlowInterest::All;
+        }
+        let offset =
+            if self.config.particle_capsules { self.config.particle_radius * 3.0 } else { self.config.particle_radius };
+        let boxes = world
+            .movable_reach()
+            .iter()
+            .map(|b| {
+                let grow = Vec3::splat(offset + b.speed * dt + CULL_SLACK);
+                let (lo, hi) = (b.min - grow, b.max + grow);
+                let mut px = [f32::MAX, f32::MAX, f32::MIN, f32::MIN];
+                for k in 0..8 {
+                    let corner = Vec3::new(
+                        if k & 1 == 0 { lo.x } else { hi.x },
+                        if k & 2 == 0 { lo.y } else { hi.y },
+                        if k & 4 == 0 { lo.z } else { hi.z },
+                    );
+                    let [x, y] = sensor.to_pixel(world.screen_point(corner).to_array());
+                    px = [px[0].min(x), px[1].min(y), px[2].max(x), px[3].max(y)];
+                }
+                px
+            })
+            .collect();
+        FlowInterest::Near { boxes, flow_scale: MAX_SURFACE_SPEEDUP * MAX_PERSPECTIVE }
     }
 
     fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {

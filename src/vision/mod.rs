@@ -14,7 +14,7 @@ pub use components::{BBox, Blob, Ellipse, Run, find_blobs};
 pub use contour::trace_contour;
 pub use flow::{BlockMatcher, MAX_BLOCK};
 pub use hull::{convex_hull, signed_area};
-pub use pipeline::{Contact, EdgeSample, Pipeline, StageTimings, VisionFrame, VisionParams, rigid_guess};
+pub use pipeline::{Contact, EdgeSample, FlowInterest, Pipeline, StageTimings, VisionFrame, VisionParams, rigid_guess};
 pub use sobel::{EDGE_PAD, EdgePixel, find_edges, gradient_magnitude, sobel_at};
 pub use threshold::{Mask, threshold, threshold_into};
 pub use tracking::{Tracked, Tracker, TrackerParams};

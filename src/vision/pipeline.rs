@@ -95,6 +95,44 @@ pub struct EdgeSample {
     /// Grey level at the point.
     pub grey: u8,
     pub contact_id: u32,
+    /// Whether `flow_px` was measured: false where the frame's
+    /// [`FlowInterest`] asked for none (it is then zero).
+    pub has_flow: bool,
+}
+
+/// Where this frame's caller needs flow. Block matching is most of the
+/// vision stage's cost (~0.5 µs per outline point) and only the Particle
+/// technique reads it, and only near bodies it can move.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum FlowInterest {
+    /// Every outline point (the paper's way).
+    #[default]
+    All,
+    /// No outline point.
+    None,
+    /// Points inside any of these pixel boxes `[x0, y0, x1, y1]`, each grown
+    /// by `flow_scale` times the largest flow the point can have (its
+    /// predicted flow plus the search radius and a pixel of sub-pixel
+    /// refinement): a point that may move into a box within the frame is
+    /// measured.
+    Near { boxes: Vec<[f32; 4]>, flow_scale: f32 },
+}
+
+impl FlowInterest {
+    /// Whether a point at `px` with predicted flow `guess` needs its flow,
+    /// given the matcher's search radius.
+    pub fn wants(&self, px: [f32; 2], guess: [f32; 2], search_radius: f32) -> bool {
+        match self {
+            FlowInterest::All => true,
+            FlowInterest::None => false,
+            FlowInterest::Near { boxes, flow_scale } => {
+                let reach = flow_scale * (guess[0].hypot(guess[1]) + search_radius + 1.0);
+                boxes.iter().any(|b| {
+                    px[0] >= b[0] - reach && px[0] <= b[2] + reach && px[1] >= b[1] - reach && px[1] <= b[3] + reach
+                })
+            }
+        }
+    }
 }
 
 /// Microseconds spent in each stage of one `process` call.
@@ -159,8 +197,13 @@ impl Pipeline {
         self.previous = None;
     }
 
-    /// Analyses one frame.
+    /// Analyses one frame, measuring flow at every outline point.
     pub fn process(&mut self, image: &ContactImage) -> VisionFrame {
+        self.process_with(image, &FlowInterest::All)
+    }
+
+    /// Analyses one frame, measuring flow only where `interest` asks.
+    pub fn process_with(&mut self, image: &ContactImage, interest: &FlowInterest) -> VisionFrame {
         let start = Instant::now();
         let mut timings = StageTimings::default();
         let p = self.params;
@@ -188,16 +231,21 @@ impl Pipeline {
             .map(|e| {
                 let (blob, track) = (&blobs[e.blob], &tracked[e.blob]);
                 let px = [e.x as f32, e.y as f32];
-                let flow_px = match previous {
+                let (flow_px, has_flow) = match previous {
                     Some(prev) if track.age > 0 => {
                         let guess = rigid_guess(px, blob.weighted_centroid, track.velocity, track.rotation);
-                        self.matcher.flow_at(prev, image, [e.x, e.y], guess).unwrap_or([0.0, 0.0])
+                        if interest.wants(px, guess, p.search_radius as f32) {
+                            (self.matcher.flow_at(prev, image, [e.x, e.y], guess).unwrap_or([0.0, 0.0]), true)
+                        } else {
+                            ([0.0, 0.0], false)
+                        }
                     }
-                    _ => [0.0, 0.0],
+                    _ => ([0.0, 0.0], interest.wants(px, [0.0, 0.0], p.search_radius as f32)),
                 };
                 EdgeSample {
                     px,
                     flow_px,
+                    has_flow,
                     magnitude: e.magnitude,
                     grey: image.pixels[e.y as usize * image.width + e.x as usize],
                     contact_id: track.id,
@@ -248,6 +296,20 @@ mod tests {
         let g = rigid_guess([0.0, 10.0], [0.0, 0.0], [0.0, 0.0], std::f32::consts::FRAC_PI_2);
         assert!((g[0] + 10.0).abs() < 1e-4 && (g[1] - 10.0).abs() < 1e-4, "{g:?}");
         assert_eq!(rigid_guess([5.0, 5.0], [1.0, 1.0], [2.0, -1.0], 0.0), [2.0, -1.0]);
+    }
+
+    #[test]
+    fn flow_interest_grows_each_box_by_the_points_largest_flow() {
+        let near = FlowInterest::Near { boxes: vec![[100.0, 100.0, 120.0, 110.0]], flow_scale: 1.5 };
+        // Inside the box: always.
+        assert!(near.wants([110.0, 105.0], [0.0, 0.0], 3.0));
+        // 7 px left of it: reach is 1.5 * (0 + 3 + 1) = 6 px, so not...
+        assert!(!near.wants([93.0, 105.0], [0.0, 0.0], 3.0));
+        // ...unless the point is predicted to move 2 px (1.5 * 6 = 9 px).
+        assert!(near.wants([93.0, 105.0], [2.0, 0.0], 3.0));
+        assert!(FlowInterest::All.wants([0.0, 0.0], [0.0, 0.0], 3.0));
+        assert!(!FlowInterest::None.wants([110.0, 105.0], [0.0, 0.0], 3.0));
+        assert!(!FlowInterest::Near { boxes: Vec::new(), flow_scale: 1.0 }.wants([1.0, 1.0], [0.0, 0.0], 3.0));
     }
 
     #[test]
