@@ -223,26 +223,20 @@ pub fn knobs(quick: bool) -> anyhow::Result<Vec<Knob>> {
         values: rates.iter().map(|&hz| (hz.to_string(), (1.0 / hz - dp.dt).abs() < 1e-6, rate(hz))).collect(),
         scripted: !quick,
     });
-    out.push(Knob {
-        name: "particle_pooling",
-        // The paper's own create/destroy particles are the reference.
-        reference: with_config(b.clone(), |c| c.particle_pooled = false),
-        values: vec![
-            ("per_frame".into(), !defaults.particle_pooled, with_config(b.clone(), |c| c.particle_pooled = false)),
-            ("pooled".into(), defaults.particle_pooled, with_config(b.clone(), |c| c.particle_pooled = true)),
-        ],
+    // Switches whose "off" is the paper's way, which is also the reference.
+    let switch = |name, labels: [&str; 2], default: bool, set: fn(&mut TechniqueConfig, bool)| Knob {
+        name,
+        reference: with_config(b.clone(), |c| set(c, false)),
+        values: [false, true]
+            .iter()
+            .map(|&on| (labels[usize::from(on)].to_string(), on == default, with_config(b.clone(), |c| set(c, on))))
+            .collect(),
         scripted: false,
-    });
-    out.push(Knob {
-        name: "particle_cull",
-        // Every sensed particle a body (the paper) is the reference.
-        reference: with_config(b.clone(), |c| c.particle_cull = false),
-        values: vec![
-            ("off".into(), !defaults.particle_cull, with_config(b.clone(), |c| c.particle_cull = false)),
-            ("on".into(), defaults.particle_cull, with_config(b.clone(), |c| c.particle_cull = true)),
-        ],
-        scripted: false,
-    });
+    };
+    out.push(switch("particle_pooling", ["per_frame", "pooled"], defaults.particle_pooled, |c, on| {
+        c.particle_pooled = on;
+    }));
+    out.push(switch("particle_cull", ["off", "on"], defaults.particle_cull, |c, on| c.particle_cull = on));
     Ok(out)
 }
 
