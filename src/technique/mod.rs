@@ -50,10 +50,10 @@ pub struct TechniqueCounts {
 pub trait Technique: Send {
     fn kind(&self) -> TechniqueKind;
 
-    /// Where this technique will read outline flow this frame (asked before
-    /// the vision stage runs, so it measures nothing else). Only Particle
-    /// reads flow.
-    fn flow_interest(&self, _world: &World, _sensor: &Sensor, _dt: f32) -> FlowInterest {
+    /// Where this technique will read outline flow this frame (asked once
+    /// per frame, before the vision stage runs, so it measures nothing
+    /// else). Only Particle reads flow.
+    fn flow_interest(&mut self, _world: &World, _sensor: &Sensor, _dt: f32) -> FlowInterest {
         FlowInterest::None
     }
 

@@ -22,7 +22,7 @@ use super::surface_point::{clamp_len, project_flow, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::surface::Sensor;
 use crate::vision::FlowInterest;
-use crate::world::{Layer, World, WorldError};
+use crate::world::{Layer, Reach, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::HashMap;
@@ -71,6 +71,9 @@ pub struct ParticleTechnique {
     positions: Vec<Vec3>,
     /// This frame's culled particles (feedback only, see `particle_cull`).
     sensed_only: Vec<Vec3>,
+    /// The movable bodies' reach, computed for `flow_interest` and used
+    /// again by `apply` in the same frame (the world has not stepped since).
+    reach: Option<Vec<Reach>>,
     contacts: usize,
 }
 
@@ -90,12 +93,19 @@ struct Placement {
 
 impl ParticleTechnique {
     pub fn new(config: TechniqueConfig) -> Self {
-        ParticleTechnique { config, slots: Vec::new(), positions: Vec::new(), sensed_only: Vec::new(), contacts: 0 }
+        ParticleTechnique {
+            config,
+            slots: Vec::new(),
+            positions: Vec::new(),
+            sensed_only: Vec::new(),
+            reach: None,
+            contacts: 0,
+        }
     }
 
     /// Where each particle goes this frame, and where the culled ones sit
     /// (pure given the frame and world).
-    fn placements(&self, input: &TechniqueInput<'_>, world: &World) -> (Vec<Placement>, Vec<Vec3>) {
+    fn placements(&mut self, input: &TechniqueInput<'_>, world: &World) -> (Vec<Placement>, Vec<Vec3>) {
         // Stride and edge threshold were applied by the vision stage, which
         // the session configures from `particle_stride` and
         // `particle_edge_threshold`: one knob each, not two.
@@ -108,7 +118,11 @@ impl ParticleTechnique {
         }
         let r = self.config.particle_radius;
         let share = self.config.particle_stride as f32 * input.sensor.metres_per_pixel() / REFERENCE_SPACING;
-        let reach = if self.config.particle_cull { world.movable_reach() } else { Vec::new() };
+        let reach = match self.reach.take() {
+            Some(r) => r,
+            None if self.config.particle_cull => world.movable_reach(),
+            None => Vec::new(),
+        };
         let mut out = Vec::with_capacity(samples.len());
         let mut culled = Vec::new();
         for e in samples {
@@ -287,14 +301,15 @@ impl Technique for ParticleTechnique {
     /// projected to the contact image. Vision grows each box further by the
     /// point's own largest flow, times the speed cap and perspective, so
     /// every particle `placements` keeps has its flow measured.
-    fn flow_interest(&self, world: &World, sensor: &Sensor, dt: f32) -> FlowInterest {
+    fn flow_interest(&mut self, world: &World, sensor: &Sensor, dt: f32) -> FlowInterest {
         if !self.config.particle_cull {
+            self.reach = None;
             return FlowInterest::All;
         }
+        let reach = world.movable_reach();
         let offset =
             if self.config.particle_capsules { self.config.particle_radius * 3.0 } else { self.config.particle_radius };
-        let boxes = world
-            .movable_reach()
+        let boxes = reach
             .iter()
             .map(|b| {
                 let grow = Vec3::splat(offset + b.speed * dt + CULL_SLACK);
@@ -312,6 +327,7 @@ impl Technique for ParticleTechnique {
                 px
             })
             .collect();
+        self.reach = Some(reach);
         FlowInterest::Near { boxes, flow_scale: MAX_SURFACE_SPEEDUP * MAX_PERSPECTIVE }
     }
 
@@ -362,6 +378,7 @@ impl Technique for ParticleTechnique {
         }
         self.positions.clear();
         self.sensed_only.clear();
+        self.reach = None;
     }
 
     fn config_mut(&mut self) -> &mut TechniqueConfig {
