@@ -213,7 +213,7 @@ fn other_participant_counts_balance_only_in_whole_units() {
     let counts = positions_per_group(&five);
     let first_off: usize = [Technique::Joint, Technique::Proxy, Technique::Particle]
         .iter()
-        .filter(|t| counts.get(&(false, 0, **t)).is_none())
+        .filter(|t| !counts.contains_key(&(false, 0, **t)))
         .count();
     assert_eq!(first_off, 1, "{counts:?}");
     // 3 participants: every group position still distinct, but not a square.

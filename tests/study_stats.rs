@@ -95,8 +95,10 @@ fn paired_tests_and_holm_match_scipy_on_the_angle_means() {
     // Angle means over noise, per subject; scipy 1.17.1 `ttest_rel` and
     // pingouin `multicomp(method="holm")`, computed for this test (afex's
     // emmeans "multivariate" output prints the same t: −6.194, −8.159, −3.25).
-    let m: Vec<[f64; 3]> =
-        MD_12_1.iter().map(|r| [(r[0] + r[3]) / 2.0, (r[1] + r[4]) / 2.0, (r[2] + r[5]) / 2.0]).collect();
+    let m: Vec<[f64; 3]> = MD_12_1
+        .iter()
+        .map(|r| [f64::midpoint(r[0], r[3]), f64::midpoint(r[1], r[4]), f64::midpoint(r[2], r[5])])
+        .collect();
     let col = |k: usize| m.iter().map(|r| r[k]).collect::<Vec<f64>>();
     let tests = [paired_t(&col(0), &col(1)), paired_t(&col(0), &col(2)), paired_t(&col(1), &col(2))]
         .map(|t| t.expect("paired test"));

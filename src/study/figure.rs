@@ -34,6 +34,8 @@ const FAILED: RGBColor = RGBColor(200, 20, 20);
 use crate::plot_font::FONT;
 pub(super) const PANEL_WIDTH: u32 = 440;
 pub(super) const HEIGHT: u32 = 600;
+/// The title and the failure note at their sizes need about 880 px.
+const MIN_WIDTH: u32 = 900;
 // Text sizes. plotters' ab_glyph renderer drops each glyph's left side
 // bearing, which makes small text look badly kerned ("Partide"); at 20 px
 // and up Ubuntu Light reads cleanly.
@@ -44,7 +46,7 @@ pub(super) const TEXT_SIZE: u32 = 21;
 /// Writes the figure as PNG and SVG.
 pub fn write_figure(design: &StudyDesign, summary: &[SummaryRow], png: &Path, svg: &Path) -> Result<(), StudyError> {
     ensure_font(png)?;
-    let size = (PANEL_WIDTH * design.tasks.len().max(1) as u32, HEIGHT);
+    let size = (figure_width(design.tasks.len()), HEIGHT);
     let plot_err = |path: &Path| {
         let path = path.to_owned();
         move |message: String| StudyError::Plot { path, message }
@@ -52,6 +54,11 @@ pub fn write_figure(design: &StudyDesign, summary: &[SummaryRow], png: &Path, sv
     draw(&BitMapBackend::new(png, size).into_drawing_area(), design, summary).map_err(plot_err(png))?;
     draw(&SVGBackend::new(svg, size).into_drawing_area(), design, summary).map_err(plot_err(svg))?;
     Ok(())
+}
+
+/// One panel per task, but never narrower than the title and the note need.
+pub(super) fn figure_width(tasks: usize) -> u32 {
+    (PANEL_WIDTH * tasks.max(1) as u32).max(MIN_WIDTH)
 }
 
 pub(super) fn ensure_font(path: &Path) -> Result<(), StudyError> {
@@ -79,9 +86,8 @@ fn draw<DB: DrawingBackend>(
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     root.fill(&WHITE).map_err(e)?;
-    let root = root
-        .titled("Task completion time (mean, within-subject 95% CI, Cousineau-Morey)", (FONT, TITLE_SIZE))
-        .map_err(e)?;
+    let root =
+        root.titled("Completion time: mean, within-subject 95% CI (Cousineau-Morey)", (FONT, TITLE_SIZE)).map_err(e)?;
     let (_, height) = root.dim_in_pixel();
     let (plots, legend) = root.split_vertically(height.saturating_sub(84));
     let panels = plots.split_evenly((1, design.tasks.len().max(1)));

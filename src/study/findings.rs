@@ -133,7 +133,7 @@ impl Finding {
                             return not_tested(self.test(), format!("{a} vs {b}: too few complete participants"));
                         };
                         all &= p < ALPHA && diff < 0.0;
-                        evidence.push(format!("{a} − {b} = {diff:+.1} s, p_holm = {}", fmt_p(p)));
+                        evidence.push(format!("{} − {} = {diff:+.1} s, p_holm = {}", a.label(), b.label(), fmt_p(p)));
                     }
                 }
                 decided(all, self.test(), evidence.join("; "))
@@ -145,7 +145,7 @@ impl Finding {
                     Some(p) => decided(
                         p >= ALPHA,
                         self.test(),
-                        format!("{technique} off − on = {:+.1} s, p = {}", test.mean_diff, fmt_p(p)),
+                        format!("{} off − on = {:+.1} s, p = {}", technique.label(), test.mean_diff, fmt_p(p)),
                     ),
                 },
             },
@@ -162,8 +162,10 @@ impl Finding {
                         p < ALPHA && test.mean_diff > 0.0,
                         self.test(),
                         format!(
-                            "benefit of feedback (off − on): {more} {:+.1} s, {less} {:+.1} s; difference {:+.1} s, p = {}",
+                            "benefit of feedback (off − on): {} {:+.1} s, {} {:+.1} s; difference {:+.1} s, p = {}",
+                            more.label(),
                             mean(&a),
+                            less.label(),
                             mean(&b),
                             test.mean_diff,
                             fmt_p(p)

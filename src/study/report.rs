@@ -38,10 +38,13 @@ pub enum Block {
     },
 }
 
+/// Measured trials per technique (name as in `trials.csv`) and manner.
+pub type StrategyCounts = BTreeMap<String, BTreeMap<String, usize>>;
+
 /// Strategy shares per technique from `trials.csv`'s `strategy` column:
 /// technique → manner → measured trials. `None` when the column is absent
 /// (runs whose participants do not record it).
-pub fn strategy_counts(trials_csv: &Path) -> Result<Option<BTreeMap<String, BTreeMap<String, usize>>>, StudyError> {
+pub fn strategy_counts(trials_csv: &Path) -> Result<Option<StrategyCounts>, StudyError> {
     let mut reader = csv::Reader::from_path(trials_csv).map_err(StudyError::csv(trials_csv))?;
     let headers = reader.headers().map_err(StudyError::csv(trials_csv))?.clone();
     let column = |name: &str| headers.iter().position(|h| h == name);
@@ -50,7 +53,7 @@ pub fn strategy_counts(trials_csv: &Path) -> Result<Option<BTreeMap<String, BTre
     else {
         return Ok(None);
     };
-    let mut out: BTreeMap<String, BTreeMap<String, usize>> = BTreeMap::new();
+    let mut out = StrategyCounts::new();
     for record in reader.records() {
         let record = record.map_err(StudyError::csv(trials_csv))?;
         if record.get(practice) == Some("true") {
@@ -76,13 +79,13 @@ pub fn report_blocks(
     design: &StudyDesign,
     summary: &[SummaryRow],
     analysis: &Analysis,
-    strategies: Option<&BTreeMap<String, BTreeMap<String, usize>>>,
+    strategies: Option<&StrategyCounts>,
 ) -> Vec<Block> {
     let s = |x: &str| x.to_owned();
     let mut b = vec![Block::Heading(s("Study report"))];
     let techniques: Vec<&str> = design.techniques.iter().map(|t| t.label()).collect();
     b.push(Block::Paragraph(format!(
-        "{} participants × tasks {} (fixed order) × techniques {} × feedback {}; {} measured repetitions per condition{}; seed {}{}.",
+        "{} participants × tasks {} (fixed order) × techniques {} × feedback {}; measured repetitions per condition: {}{}; seed {}{}.",
         design.participants,
         design.tasks.join(", "),
         techniques.join(", "),

@@ -4,7 +4,7 @@
 //! Study `k` (1-based, `k = 1..=N`) runs into `DIR/seed-<k>/` as an ordinary
 //! run folder, with study seed [`seed_for`]`(seed, k)`: study 1 uses `--seed`
 //! itself (so it is the single run of that seed), the others seeds derived
-//! from it with SplitMix64. Then `DIR/findings.csv` counts, per finding of
+//! from it with `SplitMix64`. Then `DIR/findings.csv` counts, per finding of
 //! `findings::FINDINGS`, the seeds that could test it (`seeds`), those that
 //! reproduced it (`reproduced`) and the share (`reproduced / seeds`, empty
 //! for 0), and `DIR/seeds.png` draws every seed's cell means with their
@@ -25,7 +25,7 @@ pub const SEEDS_PNG: &str = "seeds.png";
 pub const FINDINGS_COLUMNS: [&str; 4] = ["finding", "seeds", "reproduced", "share"];
 
 /// The study seed of study `k` (1-based) of a many-seeds run: `base` for
-/// `k = 1`, else SplitMix64 of `base` and `k`, kept within TOML's integers.
+/// `k = 1`, else `SplitMix64` of `base` and `k`, kept within TOML's integers.
 pub fn seed_for(base: u64, k: u32) -> u64 {
     if k <= 1 {
         return base;

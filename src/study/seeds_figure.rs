@@ -6,7 +6,7 @@
 use super::design::StudyDesign;
 use super::error::StudyError;
 use super::figure::{
-    CAPTION_SIZE, CategoryAxis, HEIGHT, PANEL_WIDTH, TEXT_SIZE, TITLE_SIZE, capitalized, ensure_font, feedback_style,
+    CAPTION_SIZE, CategoryAxis, HEIGHT, TEXT_SIZE, TITLE_SIZE, capitalized, ensure_font, feedback_style, figure_width,
 };
 use super::summary::SummaryRow;
 use crate::plot_font::FONT;
@@ -17,7 +17,7 @@ use std::path::Path;
 /// Draws the figure for the per-seed summaries of one design.
 pub fn write_seeds_figure(design: &StudyDesign, per_seed: &[Vec<SummaryRow>], png: &Path) -> Result<(), StudyError> {
     ensure_font(png)?;
-    let size = (PANEL_WIDTH * design.tasks.len().max(1) as u32, HEIGHT);
+    let size = (figure_width(design.tasks.len()), HEIGHT);
     draw(&BitMapBackend::new(png, size).into_drawing_area(), design, per_seed)
         .map_err(|message| StudyError::Plot { path: png.to_owned(), message })
 }
@@ -29,7 +29,7 @@ fn draw<DB: DrawingBackend>(
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     root.fill(&WHITE).map_err(e)?;
-    let title = format!("Cell means over {} seeds (bar: mean over seeds; dots: one seed each)", per_seed.len());
+    let title = format!("Cell means of {} seeds (bars: their mean; dots: one seed each)", per_seed.len());
     let root = root.titled(&title, (FONT, TITLE_SIZE)).map_err(e)?;
     let (_, height) = root.dim_in_pixel();
     let (plots, legend) = root.split_vertically(height.saturating_sub(52));
