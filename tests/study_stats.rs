@@ -335,3 +335,37 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
     write_pairwise(&dir.join("pairwise.csv"), &analysis.pairwise).expect("pairwise");
     assert_eq!(read_anova(&dir.join("anova.csv")).expect("read"), analysis.anova);
 }
+
+#[test]
+fn the_report_reads_strategy_shares_when_trials_csv_has_them() {
+    use surfacelab::study::report::{Block, report_blocks, strategy_counts};
+    let dir = scratch("strategies");
+    std::fs::create_dir_all(&dir).expect("dir");
+    let path = dir.join("trials.csv");
+    // Only the columns the report reads, plus the new one; practice rows are left out.
+    std::fs::write(
+        &path,
+        "participant,technique,practice,strategy\n\
+         1,joint,false,fingertip_drag\n1,joint,false,fingertip_drag\n1,joint,false,pinch\n\
+         1,joint,true,forearm_sweep\n1,proxy,false,two_handed_gather\n",
+    )
+    .expect("write");
+    let counts = strategy_counts(&path).expect("read").expect("a strategy column");
+    assert_eq!(counts["joint"]["fingertip_drag"], 2);
+    assert_eq!(counts["joint"]["pinch"], 1);
+    assert!(!counts["joint"].contains_key("forearm_sweep"));
+    let design = md_design();
+    let blocks = report_blocks(&design, &[], &analyze(&design, &[]), Some(&counts));
+    let table = blocks
+        .iter()
+        .find_map(|b| match b {
+            Block::Table { head, rows } if head[1] == "strategy" => Some(rows.clone()),
+            _ => None,
+        })
+        .expect("a strategy table");
+    assert_eq!(table[0], ["Joint", "fingertip_drag", "2", "67%"]);
+    assert_eq!(table[2], ["Proxy", "two_handed_gather", "1", "100%"]);
+    // Without the column: none.
+    std::fs::write(&path, "participant,technique,practice\n1,joint,false\n").expect("write");
+    assert_eq!(strategy_counts(&path).expect("read"), None);
+}

@@ -6,7 +6,9 @@
 //! | `trials.csv`  | one row appended per trial     | [`TrialRow`], tidy, in trial order |
 //! | `errors.log`  | appended when a trial fails    | one line per failed trial |
 //! | `summary.csv` | when every trial has a row     | see `summary` |
+//! | `anova.csv`, `pairwise.csv` | with the summary | see `analysis` |
 //! | `figure.png`, `figure.svg` | with the summary  | see `figure` |
+//! | `report.md`, `report.html` | with the summary  | see `report` |
 //!
 //! `trials.csv` is crash-safe by construction: each row is serialized whole,
 //! written with one `write_all` ending in `\n`, then fsync'ed. So after a
