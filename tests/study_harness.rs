@@ -54,6 +54,7 @@ impl TrialRunner for FakeRunner {
             Technique::Joint => 0.8,
             Technique::Proxy => 1.1,
             Technique::Particle => 1.0,
+            Technique::Hybrid => 0.95,
         };
         let feedback = if spec.feedback { 0.9 } else { 1.0 };
         let noise = (spec.seed % 10_000) as f64 / 997.0;
@@ -670,7 +671,8 @@ fn figure_copes_with_sparse_data() {
     let svg = String::from_utf8(read(&dir.join("figure.svg"))).expect("svg text");
     assert!(svg.contains("Particle") && svg.contains("Feedback off") && !svg.contains("Feedback on"));
     let summary = surfacelab::study::summary::read_summary(&dir.join(SUMMARY_CSV)).expect("summary");
-    assert_eq!(summary.len(), 2 * 4);
+    // Two tasks, every technique.
+    assert_eq!(summary.len(), 2 * 5);
     assert!(summary.iter().filter(|s| s.technique == Technique::Direct).all(|s| s.mean_s.is_none() && s.failed == 2));
     assert!(summary.iter().all(|s| s.sd_s.is_none()));
 }
