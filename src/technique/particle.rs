@@ -166,13 +166,13 @@ impl ParticleTechnique {
                 px: e.px,
                 flow_px: e.flow_px,
                 // Just touching (0.1 mm in). rapier's soft contact (30 Hz) does
-                // not deliver a new contact's full press in one step: in a
-                // probe, 16 particles resting on a box gave 28% of their
-                // weight's normal impulse in their first step, and pooled
-                // ones re-placed like this 62%, 81%, 91% and then 100% over
-                // the next steps (warm-started). Created afresh every step
-                // (the paper's variant), they swing between 85% and 300% as
-                // the box under them sinks into its own soft contact.
+                // not give a new contact its full press in one step: 16
+                // particles resting on a box get 29% of the normal impulse
+                // their weight calls for in their first step; pooled ones,
+                // re-placed like this, 75%, 91% and then 96-102% from the
+                // fifth step (warm-started). Created afresh every step (the
+                // paper's variant) they climb to 2-3x as the box under them
+                // sinks into its own soft contact (tests/particle_press.rs).
                 center,
                 velocity: Vec3::new(vt.x, vt.y, vz),
                 weight,
