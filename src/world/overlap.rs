@@ -6,14 +6,14 @@ use super::world::World;
 use glam::Vec3;
 use rapier3d::parry::query::intersection_test;
 use rapier3d::parry::shape::Capsule;
-use rapier3d::prelude::Pose;
+use rapier3d::prelude::{Pose, RigidBody};
 
 impl World {
     /// Whether scene object `i` is active and dynamic (can be pushed).
     pub fn is_movable(&self, i: usize) -> bool {
         i < self.object_count()
             && self.is_active(i)
-            && self.physics().bodies.get(self.object_body(i)).is_some_and(|b| b.is_dynamic())
+            && self.physics().bodies.get(self.object_body(i)).is_some_and(RigidBody::is_dynamic)
     }
 
     /// Whether an upright capsule (segment half-length `half`, radius `r`)
