@@ -140,24 +140,85 @@ fn williams_square_is_balanced_for_other_sizes() {
     assert!(williams_square(0).is_empty());
 }
 
-#[test]
-fn paper_design_counterbalances_six_participants() {
-    let design = StudyDesign::default();
-    assert_eq!(design.balance_note(), None);
-    let orders: Vec<Vec<Technique>> = (1..=6).map(|p| design.technique_order(p)).collect();
-    let distinct: HashSet<&Vec<Technique>> = orders.iter().collect();
-    assert_eq!(distinct.len(), 6, "each participant gets a different order: {orders:?}");
-    for pos in 0..3 {
-        for t in &design.techniques {
-            assert_eq!(orders.iter().filter(|o| o[pos] == *t).count(), 2, "{t} at position {pos}");
+/// How often each technique sits at each position, per feedback-order group
+/// (keyed by the participant's first feedback level).
+fn positions_per_group(design: &StudyDesign) -> BTreeMap<(bool, usize, Technique), usize> {
+    let mut counts = BTreeMap::new();
+    for p in 1..=design.participants {
+        let first = design.feedback_order(p)[0];
+        for (pos, t) in design.technique_order(p).into_iter().enumerate() {
+            *counts.entry((first, pos, t)).or_default() += 1;
         }
     }
-    let on_first = (1..=6).filter(|&p| design.feedback_order(p)[0]).count();
-    assert_eq!(on_first, 3);
-    assert_eq!(design.feedback_order(1), vec![true, false]);
-    assert_eq!(design.feedback_order(2), vec![false, true]);
-    let odd = StudyDesign { participants: 5, ..design };
-    assert!(odd.balance_note().is_some());
+    counts
+}
+
+#[test]
+fn paper_design_counterbalances_six_participants() {
+    use Technique::{Joint as J, Particle as Pa, Proxy as P};
+    let design = StudyDesign::default();
+    assert_eq!(design.balance_note(), None);
+    // By hand from the Williams rows [J,P,Pa] [P,Pa,J] [Pa,J,P] and their
+    // mirrors [Pa,P,J] [J,Pa,P] [P,J,Pa]: odd IDs (feedback on first) take
+    // the square, even IDs (off first) the mirrored square.
+    let expected = [
+        (true, [J, P, Pa]),
+        (false, [Pa, P, J]),
+        (true, [P, Pa, J]),
+        (false, [J, Pa, P]),
+        (true, [Pa, J, P]),
+        (false, [P, J, Pa]),
+    ];
+    for (p, (first, order)) in (1..=6).zip(expected) {
+        assert_eq!(design.feedback_order(p), vec![first, !first], "P{p}");
+        assert_eq!(design.technique_order(p), order.to_vec(), "P{p}");
+    }
+    // Within each feedback-order group, every technique once in every position.
+    let counts = positions_per_group(&design);
+    for first in [true, false] {
+        for pos in 0..3 {
+            for t in [J, P, Pa] {
+                assert_eq!(counts.get(&(first, pos, t)), Some(&1), "group on-first={first}: {t} at position {pos}");
+            }
+        }
+    }
+    // The design table in run.toml says the same.
+    let plan = design.plan();
+    assert_eq!(plan.len(), 6);
+    assert_eq!((plan[3].participant, plan[3].feedback_order.clone()), (4, vec![false, true]));
+    assert_eq!(plan[3].technique_order, vec![J, Pa, P]);
+}
+
+#[test]
+fn other_participant_counts_balance_only_in_whole_units() {
+    // 12 participants: two Latin squares per group; each Williams row twice.
+    let twelve = StudyDesign { participants: 12, ..StudyDesign::default() };
+    assert_eq!(twelve.balance_note(), None);
+    assert!(positions_per_group(&twelve).values().all(|&c| c == 2));
+    // 4 techniques with on/off: a unit is 8 (a 4-row square per group).
+    let four = StudyDesign { participants: 8, techniques: Technique::ALL.to_vec(), ..StudyDesign::default() };
+    assert_eq!(four.balance_unit(), 8);
+    assert_eq!(four.balance_note(), None);
+    let counts = positions_per_group(&four);
+    assert_eq!(counts.len(), 2 * 4 * 4);
+    assert!(counts.values().all(|&c| c == 1));
+    // One feedback level: 3 techniques need the whole doubled square (6).
+    let one_level = StudyDesign { feedback: vec![true], ..StudyDesign::default() };
+    assert_eq!(one_level.balance_unit(), 6);
+    assert_eq!(one_level.balance_note(), None);
+    // 5 participants: the off-first group (P2, P4) has only 2 of the 3 rows,
+    // so a technique never comes first there. The run goes ahead; the note says so.
+    let five = StudyDesign { participants: 5, ..StudyDesign::default() };
+    let note = five.balance_note().expect("5 participants are unbalanced");
+    assert!(note.contains("multiple of 6"), "{note}");
+    let counts = positions_per_group(&five);
+    let first_off: usize = [Technique::Joint, Technique::Proxy, Technique::Particle]
+        .iter()
+        .filter(|t| !counts.contains_key(&(false, 0, **t)))
+        .count();
+    assert_eq!(first_off, 1, "{counts:?}");
+    // 3 participants: every group position still distinct, but not a square.
+    assert!(StudyDesign { participants: 3, ..StudyDesign::default() }.balance_note().is_some());
 }
 
 #[test]
@@ -419,7 +480,7 @@ fn failing_trials_are_recorded_not_fatal() {
     let trials = design.trials();
     let expected: usize = trials.iter().filter(|t| t.seed % 5 == 0 || t.order_index == 3).count();
     assert!(expected > 2, "the test needs some failures");
-    assert_eq!(out.failed, expected);
+    assert_eq!(out.errors, expected);
     let rows = read_trials(&dir.join(TRIALS_CSV)).expect("rows");
     assert_eq!(rows.len(), trials.len());
     for (row, spec) in rows.iter().zip(&trials) {
@@ -432,10 +493,17 @@ fn failing_trials_are_recorded_not_fatal() {
     let log = std::fs::read_to_string(dir.join("errors.log")).expect("errors.log");
     assert_eq!(log.lines().count(), expected);
     assert!(log.contains("scripted failure") && log.contains("panicked: scripted panic"));
+    // Failed = not completed: the runner's errors plus the fake's timeouts.
+    assert_eq!(out.failed, rows.iter().filter(|r| !r.completed).count());
+    assert!(out.failed > out.errors);
     let summary = summarize(&design, &rows);
     assert_eq!(
-        summary.iter().map(|s| s.failed as usize).sum::<usize>(),
+        summary.iter().map(|s| s.errors as usize).sum::<usize>(),
         rows.iter().filter(|r| !r.practice && r.completion_time_s.is_none()).count()
+    );
+    assert_eq!(
+        summary.iter().map(|s| s.failed as usize).sum::<usize>(),
+        rows.iter().filter(|r| !r.practice && !r.completed).count()
     );
 }
 
@@ -501,7 +569,8 @@ fn summary_of_hand_made_rows() {
     let summary = summarize(&design, &rows);
     assert_eq!(summary.len(), 1);
     let s = &summary[0];
-    assert_eq!((s.participants, s.trials, s.completed, s.failed), (3, 6, 4, 1));
+    // Failed: the timed-out trial and the runner failure; errors: the latter.
+    assert_eq!((s.participants, s.trials, s.completed, s.failed, s.errors), (3, 6, 4, 2, 1));
     // Participant means 11, 20, 15.
     let close = |a: Option<f64>, b: f64| (a.expect("value") - b).abs() < 1e-9;
     assert!(close(s.mean_s, 15.333_333_333_333_334));
@@ -515,7 +584,7 @@ fn summary_of_hand_made_rows() {
     assert_eq!(surfacelab::study::summary::read_summary(&path).expect("read"), summary);
     let text = std::fs::read_to_string(&path).expect("text");
     assert!(text.starts_with(
-        "task,technique,feedback,participants,trials,completed,failed,mean_s,sd_s,ci95_low_s,ci95_high_s\n"
+        "task,technique,feedback,participants,trials,completed,failed,mean_s,sd_s,ci95_low_s,ci95_high_s,errors,ci95_within_low_s,ci95_within_high_s\n"
     ));
 }
 
@@ -611,7 +680,7 @@ fn run_toml_round_trips() {
     // A hand-written file may give only some fields; the rest are the paper's.
     std::fs::write(
         dir.join("mine.toml"),
-        "format = \"surfacelab-study/1\"\nversion = \"0\"\n[design]\nparticipants = 12\ntechniques = [\"joint\", \"particle\"]\n",
+        "format = \"surfacelab-study/2\"\nversion = \"0\"\n[design]\nparticipants = 12\ntechniques = [\"joint\", \"particle\"]\n",
     )
     .expect("write");
     let mine = RunFile::load(&dir.join("mine.toml")).expect("load partial");
@@ -619,10 +688,19 @@ fn run_toml_round_trips() {
     assert_eq!(mine.design.techniques, vec![Technique::Joint, Technique::Particle]);
     assert_eq!(mine.design.tasks, StudyDesign::default().tasks);
 
+    // The design table is written, and a table that contradicts the design is refused.
+    let saved = std::fs::read_to_string(dir.join(RUN_TOML)).expect("text");
+    assert_eq!(saved.matches("[[plan]]").count(), 4, "{saved}");
+    let mut wrong = run.clone();
+    wrong.plan[1].technique_order.reverse();
+    wrong.save(&dir.join("wrong.toml")).expect("save");
+    let err = RunFile::load(&dir.join("wrong.toml")).expect_err("a wrong table is refused");
+    assert!(matches!(err, StudyError::Mismatch { .. }) && err.to_string().contains("participant 2"), "{err}");
+
     // Typos are errors, not silently ignored.
     std::fs::write(
         dir.join("typo.toml"),
-        "format = \"surfacelab-study/1\"\nversion = \"0\"\n[design]\nparticipant = 12\n",
+        "format = \"surfacelab-study/2\"\nversion = \"0\"\n[design]\nparticipant = 12\n",
     )
     .expect("write");
     assert!(matches!(RunFile::load(&dir.join("typo.toml")), Err(StudyError::TomlRead { .. })));

@@ -220,7 +220,8 @@ impl Lab {
             return false;
         }
         let result = TrialResult {
-            completion_time_s: p.completed_at.unwrap_or(self.session.time()),
+            // Failed at the limit, recorded at the limit (as the study's runners do).
+            completion_time_s: p.completed_at.filter(|_| p.complete).unwrap_or(limit),
             completed: p.complete,
             restarts: p.restarts,
             objects_placed: p.placed as u32,

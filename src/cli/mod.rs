@@ -166,6 +166,10 @@ pub struct StudyArgs {
     /// bodies, object poses) to `frames/p<participant>_t<order>.csv`.
     #[arg(long)]
     pub frames: bool,
+    /// Run N independent studies (study seeds derived from --seed) into
+    /// OUT/seed-1 .. OUT/seed-N, then write OUT/findings.csv and OUT/seeds.png.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..), conflicts_with_all = ["resume", "shard"])]
+    pub seeds: Option<u32>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -299,6 +303,7 @@ fn headless_main() -> anyhow::Result<ExitCode> {
         replay: None,
         no_progress: false,
         frames: false,
+        seeds: None,
     };
     study::run(&args)
 }

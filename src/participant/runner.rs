@@ -60,7 +60,9 @@ impl TrialRunner for ScriptedRunner {
             log.finish().context("writing the trial's frames")?;
         }
         Ok(TrialResult {
-            completion_time_s: o.completion_time_s,
+            // A trial the limit ended is recorded at the limit (the loop
+            // stops up to one step past it).
+            completion_time_s: if o.completed { o.completion_time_s } else { limit },
             completed: o.completed,
             restarts: o.restarts,
             objects_placed: o.objects_placed,
@@ -75,7 +77,8 @@ impl TrialRunner for ScriptedRunner {
 /// `DIR/p<participant>/<task>_<technique>_<on|off>_r<repetition>.toml`, then
 /// `DIR/p<participant>/<task>.toml`, then `DIR/<task>.toml`. The gesture is
 /// replayed until the goal is met, the time limit passes, or two seconds
-/// after the gesture ends.
+/// after the gesture ends; a trial not done by then is failed and recorded
+/// at the time limit.
 #[derive(Debug, Clone)]
 pub struct ReplayRunner {
     pub dir: PathBuf,
@@ -114,7 +117,10 @@ impl TrialRunner for ReplayRunner {
         }
         let p = session.progress();
         Ok(TrialResult {
-            completion_time_s: p.completed_at.unwrap_or(session.time()),
+            // Not done when the gesture (plus 2 s) ran out: nothing more will
+            // happen, so the trial is failed and recorded at the time limit,
+            // as a scripted one is, not at the gesture's end.
+            completion_time_s: p.completed_at.filter(|_| p.complete).unwrap_or(limit),
             completed: p.complete,
             restarts: p.restarts,
             objects_placed: p.placed as u32,

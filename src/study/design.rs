@@ -11,7 +11,7 @@
 //!
 //! ```text
 //! participant (P1..Pn)
-//!   feedback phase   on-first for odd IDs, off-first for even IDs
+//!   feedback phase   the participant's feedback-order group (see below)
 //!     task           fixed order, as listed in the design
 //!       technique    this participant's row of the balanced Latin square
 //!         practice trial (repetition 0, unmeasured), if enabled
@@ -29,10 +29,23 @@
 //! Technique orders come from a Williams design ([`williams_square`]): every
 //! technique once in every position and every technique immediately followed
 //! by every other exactly once (n even), or by a doubled square with 2n rows
-//! where each such pair occurs twice (n odd). Participant `p` takes row
-//! `(p - 1) % rows`; with the paper's 3 techniques that is 6 rows — exactly
-//! its 6 participants. The feedback phase order is rotated by participant
-//! (`(p - 1) % levels`), which for on/off alternates.
+//! where each such pair occurs twice (n odd).
+//!
+//! The two orders are *crossed*, not confounded: participants are first dealt
+//! into feedback-order groups (participant `p` joins group `(p - 1) % F` for
+//! `F` feedback levels; with on/off, odd IDs start with feedback on), then
+//! the `i`-th member of group `g` (`i = (p - 1) / F`) takes Williams row
+//! `(g·n + i) % rows`. So each group walks through whole Latin squares, and
+//! for odd n the groups start in different halves of the doubled square.
+//! With the paper's 6 participants, 3 techniques and on/off: the on-first
+//! group (P1, P3, P5) gets rows 0–2 and the off-first group (P2, P4, P6)
+//! rows 3–5 — a full Latin square each (every technique once in every
+//! position within each group), and all six Williams rows once over the
+//! study (first-order carry-over balanced overall).
+//!
+//! Full balance needs a multiple of `lcm(F·n, rows)` participants (6 for the
+//! paper's design, 8 for 4 techniques with on/off); other counts run, and
+//! [`StudyDesign::balance_note`] says what is off.
 
 use super::error::StudyError;
 use super::trial::{Technique, TrialSpec};
@@ -143,19 +156,46 @@ impl StudyDesign {
         williams_rows(self.techniques.len())
     }
 
-    /// `None` when the participants fill whole squares and both phase orders
-    /// equally; otherwise a sentence for the user saying how many would.
+    /// Participants a fully balanced study needs a multiple of: each
+    /// feedback-order group gets whole Latin squares (`F·n`), and the study
+    /// uses every Williams row equally often (`rows`).
+    pub fn balance_unit(&self) -> usize {
+        let n = self.techniques.len().max(1);
+        let groups = self.feedback.len().max(1);
+        lcm(groups * n, self.square_rows().max(1))
+    }
+
+    /// `None` when the participants balance the design fully (see the
+    /// module docs); otherwise a sentence for the user saying what is off and
+    /// how many participants would balance it.
     pub fn balance_note(&self) -> Option<String> {
-        let k = lcm(self.square_rows().max(1), self.feedback.len().max(1));
+        let k = self.balance_unit();
         (!(self.participants as usize).is_multiple_of(k)).then(|| {
             format!(
-                "{} participants do not fill the counterbalancing: use a multiple of {k} \
-                 ({} technique orders x {} feedback orders)",
+                "{} participants do not balance the design: technique positions are balanced within each \
+                 feedback-order group only when each of the {} groups holds a multiple of {} participants, \
+                 and the {} Williams rows are used equally often only for a multiple of {k} participants; \
+                 use a multiple of {k}",
                 self.participants,
+                self.feedback.len(),
+                self.techniques.len(),
                 self.square_rows(),
-                self.feedback.len()
             )
         })
+    }
+
+    /// The feedback-order group of a participant (1-based ID): `(p - 1) % F`.
+    pub fn feedback_group(&self, participant: u32) -> usize {
+        (participant.saturating_sub(1) as usize) % self.feedback.len().max(1)
+    }
+
+    /// The Williams row a participant (1-based ID) takes: the `i`-th member
+    /// of group `g` takes row `(g·n + i) % rows` (see the module docs).
+    pub fn square_row(&self, participant: u32) -> usize {
+        let groups = self.feedback.len().max(1);
+        let member = (participant.saturating_sub(1) as usize) / groups;
+        let rows = self.square_rows().max(1);
+        (self.feedback_group(participant) * self.techniques.len() + member) % rows
     }
 
     /// Technique order for a participant (1-based ID): a row of the square.
@@ -164,16 +204,26 @@ impl StudyDesign {
         if square.is_empty() {
             return Vec::new();
         }
-        let row = &square[(participant.saturating_sub(1) as usize) % square.len()];
-        row.iter().map(|&i| self.techniques[i]).collect()
+        square[self.square_row(participant)].iter().map(|&i| self.techniques[i]).collect()
     }
 
-    /// Feedback phase order for a participant (1-based ID).
+    /// Every participant's orders, as recorded in `run.toml`.
+    pub fn plan(&self) -> Vec<ParticipantPlan> {
+        (1..=self.participants)
+            .map(|participant| ParticipantPlan {
+                participant,
+                feedback_order: self.feedback_order(participant),
+                technique_order: self.technique_order(participant),
+            })
+            .collect()
+    }
+
+    /// Feedback phase order for a participant (1-based ID): the design's
+    /// levels rotated by the participant's group.
     pub fn feedback_order(&self, participant: u32) -> Vec<bool> {
         let mut order = self.feedback.clone();
         if !order.is_empty() {
-            let k = (participant.saturating_sub(1) as usize) % order.len();
-            order.rotate_left(k);
+            order.rotate_left(self.feedback_group(participant));
         }
         order
     }
@@ -218,6 +268,17 @@ impl StudyDesign {
         }
         out
     }
+}
+
+/// One participant's line of the design table (`[[plan]]` in `run.toml`).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ParticipantPlan {
+    pub participant: u32,
+    /// Feedback phases in run order (`true` = feedback on).
+    pub feedback_order: Vec<bool>,
+    /// Techniques in run order (the same in every task and phase).
+    pub technique_order: Vec<Technique>,
 }
 
 /// A slice of a design's trials, run into its own folder so that several

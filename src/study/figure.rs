@@ -1,6 +1,12 @@
 //! The paper's Figure 9 redrawn from `summary.csv`: completion time, one
 //! panel per task, bars grouped by technique, feedback on and off side by
-//! side in two colours, whiskers for the 95% CI over participants.
+//! side in two colours, whiskers for the within-subject (Cousineau–Morey)
+//! 95% CI — the interval that matches the repeated-measures tests; the
+//! between-subject one stays in `summary.csv`.
+//!
+//! A cell with failed trials (time limit or runner failure) gets its count
+//! over the bar in red: a timed-out trial enters at the time limit, so
+//! that bar's mean is a lower bound, which the note under the panels says.
 //!
 //! Each panel has its own time axis (steering takes far longer than the
 //! others; a shared axis would flatten the other two). Conditions with no
@@ -17,25 +23,30 @@ use super::summary::SummaryRow;
 use plotters::coord::Shift;
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
 use plotters::prelude::*;
+use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
 
 /// Colour of the bars with visual feedback ("FB" in the paper's figure).
 const FEEDBACK_ON: RGBColor = RGBColor(31, 119, 180);
 const FEEDBACK_OFF: RGBColor = RGBColor(255, 127, 14);
+/// Colour of the failure counts over the bars.
+const FAILED: RGBColor = RGBColor(200, 20, 20);
 use crate::plot_font::FONT;
-const PANEL_WIDTH: u32 = 440;
-const HEIGHT: u32 = 600;
+pub(super) const PANEL_WIDTH: u32 = 440;
+pub(super) const HEIGHT: u32 = 600;
+/// The title and the failure note at their sizes need about 880 px.
+const MIN_WIDTH: u32 = 900;
 // Text sizes. plotters' ab_glyph renderer drops each glyph's left side
 // bearing, which makes small text look badly kerned ("Partide"); at 20 px
 // and up Ubuntu Light reads cleanly.
-const TITLE_SIZE: u32 = 30;
-const CAPTION_SIZE: u32 = 26;
-const TEXT_SIZE: u32 = 21;
+pub(super) const TITLE_SIZE: u32 = 30;
+pub(super) const CAPTION_SIZE: u32 = 26;
+pub(super) const TEXT_SIZE: u32 = 21;
 
 /// Writes the figure as PNG and SVG.
 pub fn write_figure(design: &StudyDesign, summary: &[SummaryRow], png: &Path, svg: &Path) -> Result<(), StudyError> {
     ensure_font(png)?;
-    let size = (PANEL_WIDTH * design.tasks.len().max(1) as u32, HEIGHT);
+    let size = (figure_width(design.tasks.len()), HEIGHT);
     let plot_err = |path: &Path| {
         let path = path.to_owned();
         move |message: String| StudyError::Plot { path, message }
@@ -45,7 +56,12 @@ pub fn write_figure(design: &StudyDesign, summary: &[SummaryRow], png: &Path, sv
     Ok(())
 }
 
-fn ensure_font(path: &Path) -> Result<(), StudyError> {
+/// One panel per task, but never narrower than the title and the note need.
+pub(super) fn figure_width(tasks: usize) -> u32 {
+    (PANEL_WIDTH * tasks.max(1) as u32).max(MIN_WIDTH)
+}
+
+pub(super) fn ensure_font(path: &Path) -> Result<(), StudyError> {
     if crate::plot_font::ensure_font() {
         Ok(())
     } else {
@@ -54,12 +70,12 @@ fn ensure_font(path: &Path) -> Result<(), StudyError> {
 }
 
 /// `sorting` → `Sorting`, for panel captions.
-fn capitalized(s: &str) -> String {
+pub(super) fn capitalized(s: &str) -> String {
     let mut chars = s.chars();
     chars.next().map(|c| c.to_uppercase().chain(chars).collect()).unwrap_or_default()
 }
 
-fn feedback_style(on: bool) -> (RGBColor, &'static str) {
+pub(super) fn feedback_style(on: bool) -> (RGBColor, &'static str) {
     if on { (FEEDBACK_ON, "Feedback on (FB)") } else { (FEEDBACK_OFF, "Feedback off") }
 }
 
@@ -71,9 +87,9 @@ fn draw<DB: DrawingBackend>(
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     root.fill(&WHITE).map_err(e)?;
     let root =
-        root.titled("Task completion time (mean and 95% CI over participants)", (FONT, TITLE_SIZE)).map_err(e)?;
+        root.titled("Completion time: mean, within-subject 95% CI (Cousineau-Morey)", (FONT, TITLE_SIZE)).map_err(e)?;
     let (_, height) = root.dim_in_pixel();
-    let (plots, legend) = root.split_vertically(height.saturating_sub(52));
+    let (plots, legend) = root.split_vertically(height.saturating_sub(84));
     let panels = plots.split_evenly((1, design.tasks.len().max(1)));
 
     let techniques = &design.techniques;
@@ -86,7 +102,7 @@ fn draw<DB: DrawingBackend>(
         let top = summary
             .iter()
             .filter(|r| r.task == *task)
-            .filter_map(|r| r.ci95_high_s.or(r.mean_s))
+            .filter_map(|r| r.ci95_within_high_s.or(r.mean_s))
             .fold(0.0f64, f64::max);
         let y_max = if top > 0.0 { top * 1.12 } else { 1.0 };
         let n = techniques.len();
@@ -130,7 +146,15 @@ fn draw<DB: DrawingBackend>(
                 chart
                     .draw_series(std::iter::once(Rectangle::new([(x0, 0.0), (x1, mean)], color.filled())))
                     .map_err(e)?;
-                if let (Some(lo), Some(hi)) = (row.ci95_low_s, row.ci95_high_s) {
+                if row.failed > 0 {
+                    let style = TextStyle::from((FONT, TEXT_SIZE).into_font())
+                        .color(&FAILED)
+                        .pos(Pos::new(HPos::Center, VPos::Bottom));
+                    let top = row.ci95_within_high_s.unwrap_or(mean).max(mean);
+                    let at = (f64::midpoint(x0, x1), top + y_max * 0.01);
+                    chart.draw_series(std::iter::once(Text::new(row.failed.to_string(), at, style))).map_err(e)?;
+                }
+                if let (Some(lo), Some(hi)) = (row.ci95_within_low_s, row.ci95_within_high_s) {
                     let xc = f64::midpoint(x0, x1);
                     let cap = (x1 - x0) * 0.25;
                     let style = BLACK.stroke_width(2);
@@ -156,14 +180,21 @@ fn draw<DB: DrawingBackend>(
         legend.draw(&Text::new(text, (x + 30, 14), (FONT, TEXT_SIZE))).map_err(e)?;
         x += entry_width;
     }
+    if summary.iter().any(|r| r.failed > 0) {
+        let note = "Red: failed trials, counted at the time limit (so those means are lower bounds)";
+        let (w, _) = legend.dim_in_pixel();
+        let style =
+            TextStyle::from((FONT, TEXT_SIZE).into_font()).color(&FAILED).pos(Pos::new(HPos::Center, VPos::Top));
+        legend.draw(&Text::new(note, (w as i32 / 2, 46), style)).map_err(e)?;
+    }
     root.present().map_err(e)
 }
 
 /// A categorical x axis for bar groups: category `i` is centred on `i` over
 /// `-0.5..n-0.5`, ticks and labels at the centres only (plotters' f64 axis
 /// would put ticks at "nice" numbers, not at the categories).
-struct CategoryAxis {
-    n: usize,
+pub(super) struct CategoryAxis {
+    pub(super) n: usize,
 }
 
 impl Ranged for CategoryAxis {

@@ -14,7 +14,7 @@
 //! without its `\n` is exactly a row that was not finished.
 //! [`recover_trials`] cuts it off.
 
-use super::design::{Shard, StudyDesign};
+use super::design::{ParticipantPlan, Shard, StudyDesign};
 use super::error::StudyError;
 use super::trial::{Technique, TrialResult, TrialSpec};
 use serde::{Deserialize, Serialize};
@@ -33,7 +33,9 @@ pub const FIGURE_SVG: &str = "figure.svg";
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 
 /// `format` of `run.toml`; bump when the file or the trial order changes meaning.
-pub const RUN_FORMAT: &str = "surfacelab-study/1";
+/// 2: technique orders crossed with feedback-order groups (issue 15), and
+/// the design table (`[[plan]]`).
+pub const RUN_FORMAT: &str = "surfacelab-study/2";
 
 /// `trials.csv` columns, in order. They are the field names of [`TrialRow`].
 pub const COLUMNS: [&str; 14] = [
@@ -149,11 +151,17 @@ pub struct RunFile {
     /// `None` for a whole run (or a merged one).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shard: Option<Shard>,
+    /// The design table: each participant's feedback and technique order,
+    /// derived from `design` and written for the reader (a hand-written
+    /// file may leave it out; if given, it must match the design).
+    #[serde(default)]
+    pub plan: Vec<ParticipantPlan>,
 }
 
 impl RunFile {
     pub fn new(design: StudyDesign, shard: Option<Shard>) -> RunFile {
-        RunFile { format: RUN_FORMAT.to_owned(), version: VERSION.to_owned(), design, shard }
+        let plan = design.plan();
+        RunFile { format: RUN_FORMAT.to_owned(), version: VERSION.to_owned(), design, shard, plan }
     }
 
     pub fn to_toml(&self) -> Result<String, StudyError> {
@@ -169,6 +177,16 @@ impl RunFile {
             return Err(StudyError::mismatch(path, format!("format {:?} is not {RUN_FORMAT:?}", run.format)));
         }
         run.design.validate()?;
+        if !run.plan.is_empty() && run.plan != run.design.plan() {
+            let first = run.plan.iter().zip(run.design.plan()).find(|(a, b)| *a != b).map_or_else(
+                || format!("{} rows for {} participants", run.plan.len(), run.design.participants),
+                |(a, _)| format!("participant {}", a.participant),
+            );
+            return Err(StudyError::mismatch(
+                path,
+                format!("the design table ([[plan]]) does not match the design ({first}); delete it to rebuild it"),
+            ));
+        }
         Ok(run)
     }
 

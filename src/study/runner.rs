@@ -14,6 +14,7 @@
 //!   not completed, no time, the error in `errors.log`. It is not retried on
 //!   resume; delete its row to rerun it.
 
+use super::analysis::{ANOVA_CSV, PAIRWISE_CSV, analyze, write_anova, write_pairwise};
 use super::design::{Shard, StudyDesign};
 use super::error::StudyError;
 use super::figure::write_figure;
@@ -21,6 +22,7 @@ use super::output::{
     FIGURE_PNG, FIGURE_SVG, RUN_TOML, RunFile, SUMMARY_CSV, TRIALS_CSV, TrialRow, TrialsWriter, log_error, read_trials,
     recover_trials, write_trials,
 };
+use super::report::write_run_report;
 use super::summary::{summarize, write_summary};
 use super::trial::{TrialRunner, TrialSpec};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -63,8 +65,16 @@ pub struct RunOutcome {
     pub already_done: usize,
     /// Trials run now.
     pub ran: usize,
-    /// Of those, trials whose runner failed.
+    /// Of those, trials that did not complete: the time limit ended them,
+    /// or their runner failed.
     pub failed: usize,
+    /// Of `failed`, trials whose runner failed (error or panic; no time).
+    pub errors: usize,
+    /// Simulated seconds of the trials run now (the sum of their recorded
+    /// times), for the real-time factor.
+    pub simulated_s: f64,
+    /// Worker threads used.
+    pub jobs: usize,
     /// Bytes of a cut-off last row removed on resume.
     pub dropped_bytes: u64,
     /// `summary.csv` and the figure were written (whole, unsharded runs).
@@ -107,6 +117,7 @@ pub fn resume_study(dir: &Path, runner: &dyn TrialRunner, options: &RunOptions) 
 #[derive(Debug, Clone, PartialEq)]
 pub struct MergeOutcome {
     pub trials: usize,
+    /// Trials that did not complete (time limit or runner failure).
     pub failed: usize,
 }
 
@@ -172,11 +183,12 @@ pub fn merge(out_dir: &Path, shard_dirs: &[PathBuf]) -> Result<MergeOutcome, Stu
     RunFile::new(design.clone(), None).save(&out_run)?;
     write_trials(&out_dir.join(TRIALS_CSV), &rows)?;
     write_report_from(out_dir, &design, &rows)?;
-    Ok(MergeOutcome { trials: rows.len(), failed: rows.iter().filter(|r| r.completion_time_s.is_none()).count() })
+    Ok(MergeOutcome { trials: rows.len(), failed: rows.iter().filter(|r| !r.completed).count() })
 }
 
-/// (Re)writes `summary.csv`, `figure.png` and `figure.svg` of a folder from
-/// its `run.toml` and `trials.csv` (which may be incomplete).
+/// (Re)writes `summary.csv`, `anova.csv`, `pairwise.csv`, `figure.png`,
+/// `figure.svg`, `report.md` and `report.html` of a folder from its
+/// `run.toml` and `trials.csv` (which may be incomplete).
 pub fn write_report(dir: &Path) -> Result<(), StudyError> {
     let run = RunFile::load(&dir.join(RUN_TOML))?;
     let rows = read_trials(&dir.join(TRIALS_CSV))?;
@@ -186,7 +198,11 @@ pub fn write_report(dir: &Path) -> Result<(), StudyError> {
 fn write_report_from(dir: &Path, design: &StudyDesign, rows: &[TrialRow]) -> Result<(), StudyError> {
     let summary = summarize(design, rows);
     write_summary(&dir.join(SUMMARY_CSV), &summary)?;
-    write_figure(design, &summary, &dir.join(FIGURE_PNG), &dir.join(FIGURE_SVG))
+    let analysis = analyze(design, rows);
+    write_anova(&dir.join(ANOVA_CSV), &analysis.anova)?;
+    write_pairwise(&dir.join(PAIRWISE_CSV), &analysis.pairwise)?;
+    write_figure(design, &summary, &dir.join(FIGURE_PNG), &dir.join(FIGURE_SVG))?;
+    write_run_report(dir, design, &summary, &analysis)
 }
 
 type Key = (u32, u32);
@@ -323,16 +339,38 @@ fn execute(
     if reported {
         write_report(dir)?;
     }
+    let (not_completed, simulated_s) = ran_now_totals(&csv_path, &todo[..written])?;
     Ok(RunOutcome {
         dir: dir.to_owned(),
         trials: mine.len(),
         already_done,
         ran: written,
-        failed,
+        failed: not_completed,
+        errors: failed,
+        simulated_s,
+        jobs: if options.jobs == 0 {
+            std::thread::available_parallelism().map_or(1, usize::from)
+        } else {
+            options.jobs
+        }
+        .clamp(1, todo.len().max(1)),
         dropped_bytes: recovered.dropped_bytes,
         reported,
         elapsed: started.elapsed(),
     })
+}
+
+/// Of the rows in `trials.csv` for these trials: how many did not complete,
+/// and their recorded seconds in total. Read back from the file so the
+/// scheduling loop needs no bookkeeping of its own for it.
+fn ran_now_totals(csv_path: &Path, ran: &[&TrialSpec]) -> Result<(usize, f64), StudyError> {
+    if ran.is_empty() {
+        return Ok((0, 0.0));
+    }
+    let keys: std::collections::HashSet<Key> = ran.iter().map(|t| (t.participant, t.order_index)).collect();
+    let rows = read_trials(csv_path)?;
+    let mine = rows.iter().filter(|r| keys.contains(&(r.participant, r.order_index)));
+    Ok(mine.fold((0, 0.0), |(n, s), r| (n + usize::from(!r.completed), s + r.completion_time_s.unwrap_or(0.0))))
 }
 
 /// Runs one trial; an error or a panic becomes a failed row and a message.

@@ -9,13 +9,21 @@
 //! Which trials count: measured ones (not practice) that have a time. A trial
 //! that ran out of time (`completed = false`) enters with the time the runner
 //! recorded for it — the time limit, a lower bound of the true time — so a
-//! condition nobody could finish still shows up; `completed` says how many
-//! did. A trial whose runner failed has no time and is counted in `failed`.
+//! condition nobody could finish still shows up, and its mean is a lower
+//! bound. `failed` counts every measured trial that did not complete: ran out
+//! of time, or its runner failed; `errors` counts the latter (no time).
+//!
+//! Two CIs: `ci95_*` is the between-subject interval above;
+//! `ci95_within_*` is the within-subject (Cousineau–Morey) interval the
+//! figure draws, over the participants with every condition of the task
+//! (see `within_ci`), centred on their mean.
 
+use super::cells::task_cells;
 use super::design::StudyDesign;
 use super::error::StudyError;
 use super::output::TrialRow;
 use super::trial::Technique;
+use super::within_ci::cousineau_morey_half_widths;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -32,12 +40,17 @@ pub struct SummaryRow {
     /// Measured trials in this condition.
     pub trials: u32,
     pub completed: u32,
-    /// Trials whose runner failed (no time).
+    /// Trials that did not complete: time limit reached or runner failed.
     pub failed: u32,
     pub mean_s: Option<f64>,
     pub sd_s: Option<f64>,
     pub ci95_low_s: Option<f64>,
     pub ci95_high_s: Option<f64>,
+    /// Of `failed`, trials whose runner failed (no time).
+    pub errors: u32,
+    /// Within-subject (Cousineau–Morey) 95% CI.
+    pub ci95_within_low_s: Option<f64>,
+    pub ci95_within_high_s: Option<f64>,
 }
 
 /// Mean, sample SD (n - 1) and 95% CI half-width of a sample.
@@ -127,8 +140,16 @@ pub fn t_quantile_975(df: u32) -> f64 {
 pub fn summarize(design: &StudyDesign, rows: &[TrialRow]) -> Vec<SummaryRow> {
     let mut out = Vec::new();
     for task in &design.tasks {
-        for &technique in &design.techniques {
-            for &feedback in &design.feedback {
+        let cells = task_cells(design, rows, task);
+        let half_widths = cousineau_morey_half_widths(&cells.values);
+        for (ti, &technique) in design.techniques.iter().enumerate() {
+            for (fi, &feedback) in design.feedback.iter().enumerate() {
+                let k = cells.cell(ti, fi);
+                let column = cells.column(ti, fi);
+                let within = half_widths.get(k).copied().flatten().map(|h| {
+                    let mean = column.iter().sum::<f64>() / column.len() as f64;
+                    (mean - h, mean + h)
+                });
                 let cell: Vec<&TrialRow> = rows
                     .iter()
                     .filter(|r| !r.practice && r.task == *task && r.technique == technique && r.feedback == feedback)
@@ -150,11 +171,14 @@ pub fn summarize(design: &StudyDesign, rows: &[TrialRow]) -> Vec<SummaryRow> {
                     participants: means.len() as u32,
                     trials: cell.len() as u32,
                     completed: count(|r| r.completed),
-                    failed: count(|r| r.completion_time_s.is_none()),
+                    failed: count(|r| !r.completed),
                     mean_s: stats.map(|s| s.mean),
                     sd_s: stats.and_then(|s| s.sd),
                     ci95_low_s: stats.and_then(|s| s.ci95_half_width.map(|h| s.mean - h)),
                     ci95_high_s: stats.and_then(|s| s.ci95_half_width.map(|h| s.mean + h)),
+                    errors: count(|r| r.completion_time_s.is_none()),
+                    ci95_within_low_s: within.map(|w| w.0),
+                    ci95_within_high_s: within.map(|w| w.1),
                 });
             }
         }

@@ -1,0 +1,99 @@
+//! Many independent studies of one design (`study --seeds N`): how often
+//! does each of the paper's findings reproduce?
+//!
+//! Study `k` (1-based, `k = 1..=N`) runs into `DIR/seed-<k>/` as an ordinary
+//! run folder, with study seed [`seed_for`]`(seed, k)`: study 1 uses `--seed`
+//! itself (so it is the single run of that seed), the others seeds derived
+//! from it with `SplitMix64`. Then `DIR/findings.csv` counts, per finding of
+//! `findings::FINDINGS`, the seeds that could test it (`seeds`), those that
+//! reproduced it (`reproduced`) and the share (`reproduced / seeds`, empty
+//! for 0), and `DIR/seeds.png` draws every seed's cell means with their
+//! mean over seeds.
+
+use super::analysis::analyze;
+use super::error::StudyError;
+use super::findings::{FINDINGS, Verdict};
+use super::output::{RUN_TOML, RunFile, TRIALS_CSV, read_trials, write_atomically};
+use super::seeds_figure::write_seeds_figure;
+use super::summary::{SummaryRow, summarize};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+pub const FINDINGS_CSV: &str = "findings.csv";
+pub const SEEDS_PNG: &str = "seeds.png";
+/// `findings.csv` columns.
+pub const FINDINGS_COLUMNS: [&str; 4] = ["finding", "seeds", "reproduced", "share"];
+
+/// The study seed of study `k` (1-based) of a many-seeds run: `base` for
+/// `k = 1`, else `SplitMix64` of `base` and `k`, kept within TOML's integers.
+pub fn seed_for(base: u64, k: u32) -> u64 {
+    if k <= 1 {
+        return base;
+    }
+    // `trial_seed` with participant 0 is the same SplitMix64 chain, never
+    // used for a trial (participants start at 1).
+    super::design::trial_seed(base, 0, k) & (i64::MAX as u64)
+}
+
+/// The folder of study `k` (1-based).
+pub fn seed_dir(dir: &Path, k: u32) -> PathBuf {
+    dir.join(format!("seed-{k}"))
+}
+
+/// One line of `findings.csv`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct FindingsRow {
+    pub finding: String,
+    /// Seeds whose run could test the finding.
+    pub seeds: u32,
+    pub reproduced: u32,
+    pub share: Option<f64>,
+}
+
+/// Reads the finished run folders, judges every finding in each, and writes
+/// `findings.csv` and `seeds.png` into `dir`. Returns the rows written.
+pub fn summarize_seeds(dir: &Path, runs: &[PathBuf]) -> Result<Vec<FindingsRow>, StudyError> {
+    let mut rows: Vec<FindingsRow> = FINDINGS
+        .iter()
+        .map(|f| FindingsRow { finding: f.id.to_owned(), seeds: 0, reproduced: 0, share: None })
+        .collect();
+    let mut summaries: Vec<Vec<SummaryRow>> = Vec::new();
+    let mut design = None;
+    for run in runs {
+        let file = RunFile::load(&run.join(RUN_TOML))?;
+        let trials = read_trials(&run.join(TRIALS_CSV))?;
+        let analysis = analyze(&file.design, &trials);
+        for (row, finding) in rows.iter_mut().zip(FINDINGS.iter()) {
+            match finding.judge(&analysis).verdict {
+                Verdict::Reproduced => {
+                    row.seeds += 1;
+                    row.reproduced += 1;
+                }
+                Verdict::NotReproduced => row.seeds += 1,
+                Verdict::NotTested(_) => {}
+            }
+        }
+        summaries.push(summarize(&file.design, &trials));
+        design.get_or_insert(file.design);
+    }
+    for row in &mut rows {
+        row.share = (row.seeds > 0).then(|| f64::from(row.reproduced) / f64::from(row.seeds));
+    }
+    let path = dir.join(FINDINGS_CSV);
+    let mut w = csv::WriterBuilder::new().has_headers(false).from_writer(Vec::new());
+    w.write_record(FINDINGS_COLUMNS).map_err(StudyError::csv(&path))?;
+    for row in &rows {
+        w.serialize(row).map_err(StudyError::csv(&path))?;
+    }
+    let bytes = w.into_inner().map_err(|e| StudyError::io(&path)(e.into_error()))?;
+    write_atomically(&path, &bytes)?;
+    if let Some(design) = design {
+        write_seeds_figure(&design, &summaries, &dir.join(SEEDS_PNG))?;
+    }
+    Ok(rows)
+}
+
+pub fn read_findings(path: &Path) -> Result<Vec<FindingsRow>, StudyError> {
+    let mut r = csv::Reader::from_path(path).map_err(StudyError::csv(path))?;
+    r.deserialize().collect::<Result<_, _>>().map_err(StudyError::csv(path))
+}

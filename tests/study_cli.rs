@@ -1,0 +1,117 @@
+//! The study's command line for issue 15: failures counted at the time limit
+//! (scripted and replayed), and `--seeds N`, through the real binary.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn bin() -> Command {
+    let mut c = Command::new(env!("CARGO_BIN_EXE_surfacelab"));
+    c.current_dir(env!("CARGO_MANIFEST_DIR"));
+    c
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("surfacelab-study-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("temp dir");
+    d
+}
+
+fn text(o: &Output) -> String {
+    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
+}
+
+/// Column `name` of every row of a CSV file.
+fn column(path: &Path, name: &str) -> Vec<String> {
+    let mut r = csv::Reader::from_path(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let k = r.headers().expect("header").iter().position(|h| h == name).unwrap_or_else(|| panic!("no {name}"));
+    r.records().map(|rec| rec.expect("record")[k].to_owned()).collect()
+}
+
+fn tiny(out: &Path) -> Command {
+    let mut c = bin();
+    c.args(["study", "--participants", "1", "--reps", "1", "--no-practice", "--tasks", "positioning"])
+        .args(["--time-limit", "5", "--no-progress", "--jobs", "2", "--out"])
+        .arg(out);
+    c
+}
+
+#[test]
+fn a_short_time_limit_fails_every_trial_at_the_limit() {
+    let out = tmp("limit").join("run");
+    let o = tiny(&out).output().expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    // Nobody places eight objects in 5 s: 3 techniques x on/off, all failed.
+    assert!(text(&o).contains("6 failed: 6 at the time limit, 0 runner errors"), "{}", text(&o));
+    assert!(text(&o).contains("x per core"), "{}", text(&o));
+    let trials = out.join("trials.csv");
+    assert_eq!(column(&trials, "completed"), vec!["false"; 6]);
+    for t in column(&trials, "completion_time_s") {
+        assert_eq!(t.parse::<f64>().expect("time"), 5.0, "recorded at the limit");
+    }
+    assert_eq!(column(&out.join("summary.csv"), "failed"), vec!["1"; 6]);
+    assert_eq!(column(&out.join("summary.csv"), "errors"), vec!["0"; 6]);
+    let report = std::fs::read_to_string(out.join("report.md")).expect("report.md");
+    assert!(report.contains("a mean with failures is a lower bound"), "{report}");
+}
+
+#[test]
+fn a_replayed_trial_that_does_not_finish_is_recorded_at_the_limit() {
+    let dir = tmp("replay");
+    let gestures = dir.join("gestures");
+    std::fs::create_dir_all(&gestures).expect("dir");
+    // A 2 s flat-hand press in the middle of the table places nothing.
+    std::fs::copy("assets/gestures/flatten.toml", gestures.join("positioning.toml")).expect("copy");
+    let out = dir.join("run");
+    let o = bin()
+        .args(["study", "--participants", "1", "--reps", "1", "--no-practice", "--tasks", "positioning"])
+        .args(["--techniques", "joint", "--time-limit", "30", "--no-progress", "--replay"])
+        .arg(&gestures)
+        .arg("--out")
+        .arg(&out)
+        .output()
+        .expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    assert!(text(&o).contains("2 failed: 2 at the time limit"), "{}", text(&o));
+    let trials = out.join("trials.csv");
+    assert_eq!(column(&trials, "completed"), vec!["false"; 2]);
+    // Not the gesture's end + 2 s (about 4 s): the 30 s limit.
+    for t in column(&trials, "completion_time_s") {
+        assert_eq!(t.parse::<f64>().expect("time"), 30.0);
+    }
+}
+
+#[test]
+fn seeds_run_independent_studies_and_count_findings() {
+    let out = tmp("seeds").join("many");
+    let o = tiny(&out).args(["--seed", "7", "--seeds", "2"]).output().expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    for k in [1, 2] {
+        let run = out.join(format!("seed-{k}"));
+        for file in ["run.toml", "trials.csv", "summary.csv", "anova.csv", "pairwise.csv", "report.md", "report.html"] {
+            assert!(run.join(file).is_file(), "{} missing", run.join(file).display());
+        }
+    }
+    assert!(!out.join("seed-0").exists() && !out.join("seed-3").exists());
+    // Study 1 is the --seed itself; study 2 another, derived seed.
+    let seed_of = |k: u32| {
+        let text = std::fs::read_to_string(out.join(format!("seed-{k}/run.toml"))).expect("run.toml");
+        let v: toml::Value = toml::from_str(&text).expect("toml");
+        v["design"]["seed"].as_integer().expect("seed")
+    };
+    assert_eq!(seed_of(1), 7);
+    assert_ne!(seed_of(2), 7);
+    let findings = std::fs::read_to_string(out.join("findings.csv")).expect("findings.csv");
+    let mut lines = findings.lines();
+    assert_eq!(lines.next(), Some("finding,seeds,reproduced,share"));
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 5, "{findings}");
+    assert!(rows[0].starts_with("joint_fastest_positioning,"), "{findings}");
+    // One participant cannot test anything: no seed counts, no share.
+    assert!(rows.iter().all(|r| r.ends_with(",0,0,")), "{findings}");
+    let png = std::fs::read(out.join("seeds.png")).expect("seeds.png");
+    assert!(png.starts_with(b"\x89PNG"));
+    // The same folder again is refused (exit 2), not overwritten.
+    let again = tiny(&out).args(["--seed", "7", "--seeds", "2"]).output().expect("runs");
+    assert_eq!(again.status.code(), Some(2), "{}", text(&again));
+}
