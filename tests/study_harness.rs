@@ -54,6 +54,7 @@ impl TrialRunner for FakeRunner {
             Technique::Joint => 0.8,
             Technique::Proxy => 1.1,
             Technique::Particle => 1.0,
+            Technique::Hybrid => 0.95,
         };
         let feedback = if spec.feedback { 0.9 } else { 1.0 };
         let noise = (spec.seed % 10_000) as f64 / 997.0;
@@ -195,7 +196,11 @@ fn other_participant_counts_balance_only_in_whole_units() {
     assert_eq!(twelve.balance_note(), None);
     assert!(positions_per_group(&twelve).values().all(|&c| c == 2));
     // 4 techniques with on/off: a unit is 8 (a 4-row square per group).
-    let four = StudyDesign { participants: 8, techniques: Technique::ALL.to_vec(), ..StudyDesign::default() };
+    let four = StudyDesign {
+        participants: 8,
+        techniques: vec![Technique::Direct, Technique::Joint, Technique::Proxy, Technique::Particle],
+        ..StudyDesign::default()
+    };
     assert_eq!(four.balance_unit(), 8);
     assert_eq!(four.balance_note(), None);
     let counts = positions_per_group(&four);
@@ -748,7 +753,8 @@ fn figure_copes_with_sparse_data() {
     let svg = String::from_utf8(read(&dir.join("figure.svg"))).expect("svg text");
     assert!(svg.contains("Particle") && svg.contains("Feedback off") && !svg.contains("Feedback on"));
     let summary = surfacelab::study::summary::read_summary(&dir.join(SUMMARY_CSV)).expect("summary");
-    assert_eq!(summary.len(), 2 * 4);
+    // Two tasks, every technique.
+    assert_eq!(summary.len(), 2 * 5);
     assert!(summary.iter().filter(|s| s.technique == Technique::Direct).all(|s| s.mean_s.is_none() && s.failed == 2));
     assert!(summary.iter().all(|s| s.sd_s.is_none()));
 }

@@ -194,7 +194,10 @@ fn parameters(ui: &mut egui::Ui, lab: &mut Lab, actions: &mut Vec<Action>) {
                 .text(strong(kind == TechniqueKind::Proxy, "proxy weight")),
         );
         ui.add(Slider::new(&mut c.friction, 0.0..=3.0).text(strong(
-            matches!(kind, TechniqueKind::Proxy | TechniqueKind::Particle | TechniqueKind::Joint),
+            matches!(
+                kind,
+                TechniqueKind::Proxy | TechniqueKind::Particle | TechniqueKind::Hybrid | TechniqueKind::Joint
+            ),
             "finger friction",
         )));
         ui.add(
@@ -206,7 +209,7 @@ fn parameters(ui: &mut egui::Ui, lab: &mut Lab, actions: &mut Vec<Action>) {
         ui.add(
             Slider::new(&mut c.particle_stride, 1..=8)
                 .suffix(" px")
-                .text(strong(kind == TechniqueKind::Particle, "particle stride")),
+                .text(strong(matches!(kind, TechniqueKind::Particle | TechniqueKind::Hybrid), "particle stride")),
         );
         let stride_changed = c.particle_stride != stride;
         ui.label(
@@ -278,7 +281,7 @@ fn statistics(ui: &mut egui::Ui, lab: &Lab) {
         row("contacts", counts.contacts.to_string());
         row(
             match lab.technique() {
-                TechniqueKind::Particle => "particles",
+                TechniqueKind::Particle | TechniqueKind::Hybrid => "particles",
                 TechniqueKind::Proxy => "proxies",
                 TechniqueKind::Joint => "anchors",
                 TechniqueKind::Direct => "bodies",

@@ -17,6 +17,7 @@ pub fn technique_kind(t: Technique) -> TechniqueKind {
         Technique::Joint => TechniqueKind::Joint,
         Technique::Proxy => TechniqueKind::Proxy,
         Technique::Particle => TechniqueKind::Particle,
+        Technique::Hybrid => TechniqueKind::Hybrid,
     }
 }
 

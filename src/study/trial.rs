@@ -22,10 +22,13 @@ pub enum Technique {
     Joint,
     Proxy,
     Particle,
+    /// Per-frame plus persistent particles (grasping); not in the paper's study.
+    Hybrid,
 }
 
 impl Technique {
-    pub const ALL: [Technique; 4] = [Technique::Direct, Technique::Joint, Technique::Proxy, Technique::Particle];
+    pub const ALL: [Technique; 5] =
+        [Technique::Direct, Technique::Joint, Technique::Proxy, Technique::Particle, Technique::Hybrid];
 
     /// The name used in files and on the command line (`joint`).
     pub fn name(self) -> &'static str {
@@ -34,6 +37,7 @@ impl Technique {
             Technique::Joint => "joint",
             Technique::Proxy => "proxy",
             Technique::Particle => "particle",
+            Technique::Hybrid => "hybrid",
         }
     }
 
@@ -44,6 +48,7 @@ impl Technique {
             Technique::Joint => "Joint",
             Technique::Proxy => "Proxy",
             Technique::Particle => "Particle",
+            Technique::Hybrid => "Hybrid",
         }
     }
 }
@@ -56,7 +61,7 @@ impl fmt::Display for Technique {
 
 /// An unknown technique name.
 #[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown technique {0:?} (expected one of: direct, joint, proxy, particle)")]
+#[error("unknown technique {0:?} (expected one of: direct, joint, proxy, particle, hybrid)")]
 pub struct UnknownTechnique(pub String);
 
 impl FromStr for Technique {

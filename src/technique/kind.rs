@@ -15,11 +15,19 @@ pub enum TechniqueKind {
     Proxy,
     /// One small body per edge pixel of the contact image, moved by flow.
     Particle,
+    /// Per-frame particles plus particles that persist at the depth where
+    /// they touched (the paper's suggested extension, for grasping).
+    Hybrid,
 }
 
 impl TechniqueKind {
-    pub const ALL: [TechniqueKind; 4] =
-        [TechniqueKind::Direct, TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle];
+    pub const ALL: [TechniqueKind; 5] = [
+        TechniqueKind::Direct,
+        TechniqueKind::Joint,
+        TechniqueKind::Proxy,
+        TechniqueKind::Particle,
+        TechniqueKind::Hybrid,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -27,6 +35,7 @@ impl TechniqueKind {
             TechniqueKind::Joint => "joint",
             TechniqueKind::Proxy => "proxy",
             TechniqueKind::Particle => "particle",
+            TechniqueKind::Hybrid => "hybrid",
         }
     }
 }
@@ -43,6 +52,6 @@ impl std::str::FromStr for TechniqueKind {
         TechniqueKind::ALL
             .into_iter()
             .find(|k| k.name() == s)
-            .ok_or_else(|| format!("unknown technique `{s}` (expected direct, joint, proxy or particle)"))
+            .ok_or_else(|| format!("unknown technique `{s}` (expected direct, joint, proxy, particle or hybrid)"))
     }
 }

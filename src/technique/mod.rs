@@ -1,6 +1,6 @@
 //! Interaction techniques: how this frame's vision output acts on the world.
 //!
-//! The paper's four conditions (PAPERS.md, "The techniques compared") behind
+//! The paper's four conditions, plus the grasping hybrid it suggests, (PAPERS.md, "The techniques compared") behind
 //! one trait. Every technique gets the same inputs — this frame's
 //! [`VisionFrame`], the world and the timestep — applies its effect to the
 //! world before the step, tidies up after it, and returns feedback geometry.
@@ -8,6 +8,7 @@
 mod config;
 mod direct;
 mod feedback;
+mod hybrid;
 mod joint;
 mod kind;
 mod particle;
@@ -17,6 +18,7 @@ mod surface_point;
 pub use config::{ConfigError, PressureMode, ProxyShape, TechniqueConfig};
 pub use direct::DirectForce;
 pub use feedback::Feedback;
+pub use hybrid::HybridTechnique;
 pub use joint::JointTechnique;
 pub use kind::TechniqueKind;
 pub use particle::ParticleTechnique;
@@ -80,7 +82,9 @@ impl TechniqueKind {
     pub fn required_effects(self) -> EffectSet {
         match self {
             TechniqueKind::Joint => EffectSet::empty().with(Effect::Joints),
-            TechniqueKind::Direct | TechniqueKind::Proxy | TechniqueKind::Particle => EffectSet::empty(),
+            TechniqueKind::Direct | TechniqueKind::Proxy | TechniqueKind::Particle | TechniqueKind::Hybrid => {
+                EffectSet::empty()
+            }
         }
     }
 
@@ -91,6 +95,7 @@ impl TechniqueKind {
             TechniqueKind::Joint => Box::new(JointTechnique::new(config)),
             TechniqueKind::Proxy => Box::new(ProxyTechnique::new(config)),
             TechniqueKind::Particle => Box::new(ParticleTechnique::new(config)),
+            TechniqueKind::Hybrid => Box::new(HybridTechnique::new(config)),
         }
     }
 }

@@ -1,0 +1,163 @@
+//! The `hybrid` technique (per-frame particles plus particles that persist
+//! at the depth where they touched): grasping from the sides, release, and
+//! pressing from the top as Particle does.
+//!
+//! The paper (Discussion): "grasping a virtual object by placing contacts on
+//! either side can be difficult if not impossible in many of our
+//! techniques. Such manipulations require persistent resting contacts ...
+//! It may be possible to extend the particle approach to allow proxies to
+//! persist at a given depth".
+
+use glam::Vec2;
+use surfacelab::scene;
+use surfacelab::session::{Session, SessionOptions};
+use surfacelab::surface::Gesture;
+use surfacelab::technique::TechniqueKind;
+
+fn asset(path: &str) -> String {
+    format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))
+}
+
+fn session(task: &str, kind: TechniqueKind) -> Session {
+    let s = scene::load(&asset(task)).expect("scene loads");
+    Session::new(&s, kind, SessionOptions { measure_penetration: true, ..SessionOptions::default() }).expect("session")
+}
+
+/// The hands' carry in both grasp gestures: closed at t = 0.7 s at y = 0,
+/// carried to y = 0.15 m by t = 2.2 s, opened by t = 2.5 s.
+const CARRY_START: f64 = 0.7;
+const CARRY_END: f64 = 2.2;
+const CARRY: f32 = 0.15;
+
+/// What happened to object 0 during a grasp gesture.
+struct Grasp {
+    /// Travel along +y between the closed grip and the end of the carry.
+    carried: f32,
+    /// Its largest distance (m, on the table) from the hands' midpoint line
+    /// during the carry: small while it is held.
+    max_lag: f32,
+    /// Its speed (m/s) 0.5 s after the hands lifted.
+    speed_after: f32,
+    nan: u64,
+}
+
+fn grasp(task: &str, gesture: &str, kind: TechniqueKind) -> Grasp {
+    let g = Gesture::load(asset(gesture)).expect("gesture");
+    let mut s = session(task, kind);
+    s.replay_until(&g, CARRY_START).expect("replay");
+    let y0 = s.world().object_pose(0).position.y;
+    let mut max_lag = 0.0f32;
+    while s.time() < CARRY_END - 1e-6 {
+        let t = s.time();
+        s.replay_until(&g, t + f64::from(s.world().dt())).expect("replay");
+        let hands_y = CARRY * ((s.time() - CARRY_START) / (CARRY_END - CARRY_START)) as f32;
+        let p = s.world().object_pose(0).position;
+        max_lag = max_lag.max((Vec2::new(p.x, p.y) - Vec2::new(0.0, hands_y)).length());
+    }
+    let carried = s.world().object_pose(0).position.y - y0;
+    s.replay_until(&g, g.duration() + 0.5).expect("replay");
+    Grasp { carried, max_lag, speed_after: s.world().object_pose(0).linvel.length(), nan: s.world().stats().nan_count }
+}
+
+#[test]
+fn two_flat_hands_closing_on_a_box_carry_it_with_hybrid() {
+    let task = "tasks/cases/small_box.toml";
+    let gesture = "assets/gestures/grasp_two_hands.toml";
+    let h = grasp(task, gesture, TechniqueKind::Hybrid);
+    assert_eq!(h.nan, 0);
+    // The issue's threshold: at least 90% of the hands' travel.
+    assert!(h.carried >= 0.9 * CARRY, "hybrid carried the box {:.3} m of {CARRY}", h.carried);
+    assert!(h.max_lag < 0.03, "hybrid: the box strayed {:.3} m from the hands", h.max_lag);
+    // Released when the hands open: it does not keep going.
+    assert!(h.speed_after < 0.05, "hybrid: box still moving at {:.3} m/s after release", h.speed_after);
+    // Particle carries it too (measured 0.138 m): the outline's particles
+    // land on the rim of the box's top, friction from the top and collision
+    // from the side, the paper's Figure 4. "A proxy is one body per blob":
+    // the flat hand's proxy sits at the palm's centre, 7.5 cm from the box,
+    // and never touches it.
+    let p = grasp(task, gesture, TechniqueKind::Proxy);
+    assert!(p.carried.abs() < 0.01, "proxy moved the box {:.3} m", p.carried);
+}
+
+/// A grasp, by one definition for every technique: the object travels at
+/// least 90% of the hands' carry (the issue's threshold), stays within 1 cm
+/// of where the fingers hold it all the way, and is at rest (under 2 cm/s)
+/// half a second after the fingers open and lift.
+fn is_grasp(g: &Grasp) -> bool {
+    g.carried >= 0.9 * CARRY && g.max_lag < 0.01 && g.speed_after < 0.02
+}
+
+#[test]
+fn a_pinch_grasps_a_ball_with_hybrid_and_lets_it_go() {
+    let task = "tasks/cases/ball.toml";
+    let gesture = "assets/gestures/grasp_pinch.toml";
+    let h = grasp(task, gesture, TechniqueKind::Hybrid);
+    assert_eq!(h.nan, 0);
+    assert!(
+        is_grasp(&h),
+        "hybrid: carried {:.3} m of {CARRY}, strayed {:.3} m, {:.3} m/s after release",
+        h.carried,
+        h.max_lag,
+        h.speed_after
+    );
+    // The paper's limit for per-frame particles: "the particle-based
+    // approach, in which each proxy is created every frame, places the
+    // proxy corresponding to a grasping finger on top of the object, thus
+    // defeating attempts to grasp it". Pinching a ball, its particles land
+    // on the ball's flanks and push it ahead: it rolls away from the
+    // fingers and keeps rolling when they let go (measured: 1.9 cm astray,
+    // 0.09 m/s after release).
+    let p = grasp(task, gesture, TechniqueKind::Particle);
+    assert!(
+        !is_grasp(&p),
+        "particle grasped the ball (carried {:.3} m, strayed {:.3} m, {:.3} m/s after)",
+        p.carried,
+        p.max_lag,
+        p.speed_after
+    );
+    // "A proxy is one body per blob": each fingertip's proxy lands on the
+    // ball's top and slides off it.
+    assert!(!is_grasp(&grasp(task, gesture, TechniqueKind::Proxy)));
+}
+
+#[test]
+fn hybrid_presses_from_the_top_like_particle() {
+    // A fingertip landing on a box's top makes no persistent grips (they
+    // are made only on fixed ground), so the drag is Particle's.
+    let g = Gesture::load(asset("assets/gestures/fingertip_drag.toml")).expect("gesture");
+    let run = |kind| {
+        let mut s = session("tasks/cases/one_box.toml", kind);
+        s.replay_until(&g, g.duration() + 1.0).expect("replay");
+        s.world().object_pose(0).position
+    };
+    let (h, p) = (run(TechniqueKind::Hybrid), run(TechniqueKind::Particle));
+    assert!((0.08..=0.11).contains(&h.x), "hybrid moved the box {:.3} m", h.x);
+    assert!((h - p).length() < 0.005, "hybrid {h} differs from particle {p}");
+}
+
+#[test]
+fn hybrid_grips_never_spawn_inside_an_object() {
+    // A flat hand landing half over the box: the table part makes grips
+    // beside the box, none inside it, so the box is not shoved away.
+    let g = Gesture::from_str(
+        r#"
+format = "surfacelab-gesture"
+version = 1
+[[hands]]
+id = 1
+kind = "flat_hand"
+[[hands.keys]]
+t = 0.0
+pos = [0.06, 0.0]
+[[hands.keys]]
+t = 0.5
+"#,
+        "inline",
+    )
+    .expect("gesture");
+    let mut s = session("tasks/cases/small_box.toml", TechniqueKind::Hybrid);
+    s.replay_until(&g, 0.5).expect("replay");
+    let p = s.world().object_pose(0);
+    assert!(p.position.truncate().length() < 0.005, "box shoved to {}", p.position);
+    assert!(p.linvel.length() < 0.02, "box moving at {} m/s", p.linvel.length());
+}
