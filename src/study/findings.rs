@@ -133,7 +133,12 @@ impl Finding {
                             return not_tested(self.test(), format!("{a} vs {b}: too few complete participants"));
                         };
                         all &= p < ALPHA && diff < 0.0;
-                        evidence.push(format!("{} − {} = {diff:+.1} s, p_holm = {}", a.label(), b.label(), fmt_p(p)));
+                        evidence.push(format!(
+                            "{} − {} = {diff:+.1} s, p_holm {}",
+                            a.label(),
+                            b.label(),
+                            p_relation(p)
+                        ));
                     }
                 }
                 decided(all, self.test(), evidence.join("; "))
@@ -145,7 +150,7 @@ impl Finding {
                     Some(p) => decided(
                         p >= ALPHA,
                         self.test(),
-                        format!("{} off − on = {:+.1} s, p = {}", technique.label(), test.mean_diff, fmt_p(p)),
+                        format!("{} off − on = {:+.1} s, p {}", technique.label(), test.mean_diff, p_relation(p)),
                     ),
                 },
             },
@@ -162,13 +167,13 @@ impl Finding {
                         p < ALPHA && test.mean_diff > 0.0,
                         self.test(),
                         format!(
-                            "benefit of feedback (off − on): {} {:+.1} s, {} {:+.1} s; difference {:+.1} s, p = {}",
+                            "benefit of feedback (off − on): {} {:+.1} s, {} {:+.1} s; difference {:+.1} s, p {}",
                             more.label(),
                             mean(&a),
                             less.label(),
                             mean(&b),
                             test.mean_diff,
-                            fmt_p(p)
+                            p_relation(p)
                         ),
                     ),
                 }
@@ -209,7 +214,12 @@ fn mean(v: &[f64]) -> f64 {
     v.iter().sum::<f64>() / v.len().max(1) as f64
 }
 
-/// A p-value for text: three decimals, or "< .001".
+/// A p-value after its name in a sentence: "= 0.034" or "< .001".
+fn p_relation(p: f64) -> String {
+    if p < 0.001 { "< .001".into() } else { format!("= {p:.3}") }
+}
+
+/// A p-value for a table cell: three decimals, or "< .001".
 pub fn fmt_p(p: f64) -> String {
     if p < 0.001 { "< .001".into() } else { format!("{p:.3}") }
 }
