@@ -5,6 +5,7 @@ pub mod error;
 pub mod figure;
 pub mod output;
 pub mod runner;
+pub mod strategies;
 pub mod summary;
 pub mod trial;
 
@@ -12,5 +13,6 @@ pub use design::{DEFAULT_TASKS, Shard, StudyDesign, trial_seed, williams_square}
 pub use error::StudyError;
 pub use output::{COLUMNS, RunFile, TrialRow};
 pub use runner::{MergeOutcome, RunOptions, RunOutcome, merge, resume_study, run_study, write_report};
+pub use strategies::{STRATEGY_COLUMNS, StrategyRow, read_strategies, strategies};
 pub use summary::{Stats, SummaryRow, describe, summarize, t_quantile_975};
-pub use trial::{Technique, TrialResult, TrialRunner, TrialSpec, UnknownTechnique};
+pub use trial::{ParticipantRun, Technique, TrialResult, TrialRunner, TrialSpec, UnknownTechnique};
