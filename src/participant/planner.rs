@@ -100,6 +100,9 @@ struct HandCtl {
     /// ...at this height: drawn where that point appears on the display.
     z: f32,
     touch: Vec2,
+    /// The middle of the hand's contact relative to `pos` (a flat hand's
+    /// palm centre lies 2–3 cm behind the middle of what it covers).
+    centre: Vec2,
     phase: Phase,
     role: Role,
     velocity: Vec2,
@@ -413,7 +416,9 @@ impl Planner {
             Manner::Pinch => (o.z - half_z, ((2.0 * (r + 0.004) - 0.013) / 0.012).max(0.0)),
             _ => (o.z + half_z, 0.4),
         };
-        let touch = self.aim(observed[object]);
+        // The middle of the contact goes on the object.
+        let centre = contact_centre(manner.hand_kind(), spread);
+        let touch = self.aim(observed[object]) - centre;
         HandCtl {
             id,
             kind: manner.hand_kind(),
@@ -422,6 +427,7 @@ impl Planner {
             pos: touch,
             z,
             touch,
+            centre,
             phase: Phase::Reach,
             role: Role::Carry { object },
             velocity: Vec2::ZERO,
@@ -457,6 +463,7 @@ impl Planner {
             pos: touch,
             z: bottom.max(0.0),
             touch,
+            centre: Vec2::ZERO,
             phase: Phase::Reach,
             role: Role::Push { objects, lateral, standoff },
             velocity: Vec2::ZERO,
@@ -487,6 +494,17 @@ enum Step {
     Going,
     Done,
     Regrip,
+}
+
+/// The area-weighted middle of a hand's footprint in its own frame.
+fn contact_centre(kind: HandKind, spread: f32) -> Vec2 {
+    let patches = Hand::new(0, kind, 0.0, 0.0).with_spread(spread).patches();
+    let (sum, area) = patches.iter().fold((Vec2::ZERO, 0.0), |(sum, area), p| {
+        let [lo, hi] = p.shape.bounds();
+        let a = p.shape.area();
+        (sum + Vec2::new(lo[0] + hi[0], lo[1] + hi[1]) * 0.5 * a, area + a)
+    });
+    if area > 0.0 { sum / area } else { Vec2::ZERO }
 }
 
 /// Half the width of a hand's footprint across a push (m).
@@ -577,15 +595,16 @@ fn carry(
     // Closed loop: aim the hand so that the *object* reaches the goal; with
     // feedback, lead by the visible lag between hand and acting point.
     let mut v = err / err.length() * (gain * err.length()).min(speed);
+    let pressing = h.pos + h.centre;
     if let Some(f) = feedback
-        && let Some(acting) = acting_point(f, h.pos)
+        && let Some(acting) = acting_point(f, pressing)
     {
-        let lag = h.pos - acting;
+        let lag = pressing - acting;
         v -= lag.clamp_length_max(0.03) * 2.0;
     }
     h.velocity = v.clamp_length_max(speed);
     let reach = footprint(scene, object) + 0.03;
-    if (h.pos - obj).length() > reach {
+    if (pressing - obj).length() > reach {
         return Step::Regrip;
     }
     if err.length() < h.best - 0.005 {

@@ -200,6 +200,10 @@ fn write_report_from(dir: &Path, design: &StudyDesign, rows: &[TrialRow]) -> Res
 
 type Key = (u32, u32);
 
+/// A trial of a participant's session: its trial index, and its position
+/// among the trials to run now (`None`: replayed, its row exists).
+type SessionStep = (usize, Option<usize>);
+
 /// Shard `i/n` holds every trial of the participants whose 0-based index
 /// `p - 1` has `(p - 1) % n == i`: participants learn from trial to trial,
 /// so a participant's session is never split across machines.
@@ -272,7 +276,7 @@ fn execute(
     if !todo.is_empty() {
         // Each participant's trials up to their last one to run, in session
         // order; `Some(k)` marks the k-th trial to run, `None` one to replay.
-        let mut sessions: Vec<(u32, Vec<(usize, Option<usize>)>)> = Vec::new();
+        let mut sessions: Vec<(u32, Vec<SessionStep>)> = Vec::new();
         for &index in &todo_index {
             let p = trials[index].participant;
             if sessions.last().is_none_or(|(q, _)| *q != p) {
