@@ -9,8 +9,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 use surfacelab::study::output::{RUN_TOML, SUMMARY_CSV, TRIALS_CSV, read_trials};
 use surfacelab::study::{
-    COLUMNS, RunFile, RunOptions, Shard, StudyDesign, StudyError, Technique, TrialResult, TrialRow, TrialRunner,
-    TrialSpec, describe, merge, resume_study, run_study, summarize, t_quantile_975, trial_seed, williams_square,
+    COLUMNS, ParticipantRun, RunFile, RunOptions, STRATEGY_COLUMNS, Shard, StudyDesign, StudyError, Technique,
+    TrialResult, TrialRow, TrialRunner, TrialSpec, describe, merge, resume_study, run_study, summarize, t_quantile_975,
+    trial_seed, williams_square,
 };
 
 /// Results that depend only on the spec. `jitter` sleeps a seed-dependent
@@ -65,7 +66,58 @@ impl TrialRunner for FakeRunner {
             restarts: (spec.seed % 3) as u32,
             objects_placed: (spec.seed % 9) as u32,
             steps: (time * 60.0) as u64,
+            strategy: "fingertip_1".into(),
+            hands_max: 1 + (spec.seed % 2) as u32,
+            fingers_max: 1 + (spec.seed % 5) as u32,
+            objects_moving_max: (spec.seed % 4) as u32,
+            manners: format!("fingertip_1:{:.2}:0.5;flat_hand:{:.2}:0.25", time * 0.75, time * 0.25),
         })
+    }
+}
+
+/// A participant who learns: each result depends on every earlier trial of
+/// the same participant (a running sum of their seeds), so only a harness
+/// that replays earlier trials in order reproduces it.
+#[derive(Default)]
+struct LearningFake {
+    runs: AtomicUsize,
+    replays: AtomicUsize,
+}
+
+struct LearningSession<'a> {
+    fake: &'a LearningFake,
+    participant: u32,
+    seen: Vec<u32>,
+    memory: u64,
+}
+
+impl ParticipantRun for LearningSession<'_> {
+    fn run(&mut self, spec: &TrialSpec) -> anyhow::Result<TrialResult> {
+        assert_eq!(spec.participant, self.participant, "one session per participant");
+        assert!(self.seen.last().is_none_or(|&o| o < spec.order_index), "trials in session order");
+        self.seen.push(spec.order_index);
+        self.fake.runs.fetch_add(1, Ordering::SeqCst);
+        self.memory = self.memory.wrapping_mul(31).wrapping_add(spec.seed % 1000);
+        Ok(TrialResult {
+            completion_time_s: (self.memory % 100_000) as f64 / 100.0,
+            completed: true,
+            ..TrialResult::default()
+        })
+    }
+
+    fn replay(&mut self, spec: &TrialSpec) -> anyhow::Result<()> {
+        self.fake.replays.fetch_add(1, Ordering::SeqCst);
+        self.run(spec).map(|_| ())
+    }
+}
+
+impl TrialRunner for LearningFake {
+    fn run(&self, _spec: &TrialSpec) -> anyhow::Result<TrialResult> {
+        anyhow::bail!("the harness must go through participant()")
+    }
+
+    fn participant(&self, participant: u32) -> Box<dyn ParticipantRun + '_> {
+        Box::new(LearningSession { fake: self, participant, seen: Vec::new(), memory: 0 })
     }
 }
 
@@ -557,8 +609,7 @@ fn summary_of_hand_made_rows() {
         practice,
         seed: 0,
     };
-    let done =
-        |t: f64, completed| TrialResult { completion_time_s: t, completed, restarts: 0, objects_placed: 0, steps: 0 };
+    let done = |t: f64, completed| TrialResult { completion_time_s: t, completed, ..TrialResult::default() };
     let rows = vec![
         TrialRow::new(&spec(1, 0, true), &done(500.0, true)), // practice: ignored
         TrialRow::new(&spec(1, 1, false), &done(10.0, true)),
@@ -592,6 +643,74 @@ fn summary_of_hand_made_rows() {
     ));
 }
 
+#[test]
+fn learning_participants_resume_and_shard_to_the_same_bytes() {
+    let design = StudyDesign { participants: 4, repetitions: 1, ..StudyDesign::default() };
+    let reference = scratch("learning_reference");
+    let fake = LearningFake::default();
+    run_study(&design, &reference, &fake, &quiet(3)).expect("reference");
+    assert_eq!(fake.runs.load(Ordering::SeqCst), design.trial_count());
+    assert_eq!(fake.replays.load(Ordering::SeqCst), 0, "an uninterrupted run replays nothing");
+    let full = read(&reference.join(TRIALS_CSV));
+    let line_ends: Vec<usize> = full.iter().enumerate().filter(|(_, b)| **b == b'\n').map(|(i, _)| i + 1).collect();
+    let per = design.trials_per_participant();
+    // Killed in the middle of participant 2: their first `done` trials are
+    // replayed, the rest run; participants 3 and 4 run from scratch.
+    for done in [1, per / 2, per - 1] {
+        let cut = line_ends[per + done];
+        let dir = killed_copy(&reference, &format!("learning_cut_{done}"), cut);
+        let fake = LearningFake::default();
+        let out = resume_study(&dir, &fake, &quiet(2)).expect("resume");
+        assert_eq!(out.already_done, per + done);
+        assert_eq!(fake.replays.load(Ordering::SeqCst), done, "participant 2's finished trials replayed once");
+        assert_eq!(read(&dir.join(TRIALS_CSV)), full, "resumed after {done}: same bytes");
+    }
+    // Shards hold whole participants: no replays, and the merge is the run.
+    let mut dirs = Vec::new();
+    for i in 0..2 {
+        let dir = scratch(&format!("learning_shard_{i}"));
+        let fake = LearningFake::default();
+        let options = RunOptions { shard: Some(Shard::new(i, 2).expect("shard")), ..quiet(2) };
+        run_study(&design, &dir, &fake, &options).expect("shard");
+        assert_eq!(fake.replays.load(Ordering::SeqCst), 0);
+        dirs.push(dir);
+    }
+    let merged = scratch("learning_merged");
+    merge(&merged, &dirs).expect("merge");
+    assert_eq!(read(&merged.join(TRIALS_CSV)), full);
+}
+
+#[test]
+fn strategies_csv_sums_manner_time_per_condition() {
+    let dir = scratch("strategies");
+    let design =
+        StudyDesign { participants: 2, repetitions: 2, tasks: vec!["sorting".into()], ..StudyDesign::default() };
+    run_study(&design, &dir, &FakeRunner::default(), &quiet(2)).expect("run");
+    let text = String::from_utf8(read(&dir.join("strategies.csv"))).expect("utf8");
+    assert_eq!(text.lines().next(), Some("participant,task,technique,feedback,manner,time_s,time_share,payoff"));
+    assert_eq!(STRATEGY_COLUMNS.join(","), text.lines().next().expect("header"));
+    let rows = surfacelab::study::read_strategies(&dir.join("strategies.csv")).expect("read");
+    // 2 participants x 3 techniques x 2 feedback levels, two manners each.
+    assert_eq!(rows.len(), 2 * 3 * 2 * 2);
+    let trials = read_trials(&dir.join(TRIALS_CSV)).expect("trials");
+    for r in &rows {
+        let measured: Vec<&TrialRow> = trials
+            .iter()
+            .filter(|t| {
+                !t.practice && t.participant == r.participant && t.technique == r.technique && t.feedback == r.feedback
+            })
+            .collect();
+        assert_eq!(measured.len(), 2);
+        // FakeRunner spends 3/4 of each trial in the finger, 1/4 in the hand,
+        // at net 0.5 m and 0.25 m per trial.
+        let total: f64 = measured.iter().map(|t| t.completion_time_s.expect("time")).sum();
+        let (share, net) = if r.manner == "fingertip_1" { (0.75, 1.0) } else { (0.25, 0.5) };
+        assert!((r.time_share - share).abs() < 1e-3, "{r:?}");
+        assert!((r.time_s - total * share).abs() < 0.02, "{r:?}");
+        assert!((r.payoff - net / (total * share)).abs() < 1e-3, "{r:?}");
+    }
+}
+
 // ---------------------------------------------------------------- shards
 
 #[test]
@@ -611,9 +730,10 @@ fn shards_merge_into_the_single_run() {
         let rows = read_trials(&dir.join(TRIALS_CSV)).expect("rows");
         let trials = design.trials();
         for row in &rows {
-            let k = trials.iter().position(|t| *t == row.spec()).expect("known trial");
-            assert_eq!(k % 3, i as usize);
+            assert!(trials.contains(&row.spec()), "known trial");
+            assert_eq!((row.participant - 1) % 3, i, "shards split by participant");
         }
+        assert_eq!(rows.len(), design.trials_per_participant(), "one participant per shard");
         dirs.push(dir);
     }
     assert_eq!(ran, design.trial_count());

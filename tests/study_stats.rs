@@ -173,7 +173,14 @@ impl TrialRunner for MdRunner {
             1 => value - 3.0,
             _ => value + 3.0,
         };
-        Ok(TrialResult { completion_time_s: t, completed: true, restarts: 0, objects_placed: 8, steps: 0 })
+        Ok(TrialResult {
+            completion_time_s: t,
+            completed: true,
+            restarts: 0,
+            objects_placed: 8,
+            steps: 0,
+            ..TrialResult::default()
+        })
     }
 }
 
@@ -296,6 +303,7 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
                                 restarts: 0,
                                 objects_placed: 1,
                                 steps: 3000,
+                                ..TrialResult::default()
                             },
                         )
                     } else if p == 3 && technique == Technique::Joint && !feedback {
@@ -309,6 +317,7 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
                                 restarts: 0,
                                 objects_placed: 8,
                                 steps: 0,
+                                ..TrialResult::default()
                             },
                         )
                     };
@@ -367,5 +376,9 @@ fn the_report_reads_strategy_shares_when_trials_csv_has_them() {
     assert_eq!(table[2], ["Proxy", "two_handed_gather", "1", "100%"]);
     // Without the column: none.
     std::fs::write(&path, "participant,technique,practice\n1,joint,false\n").expect("write");
+    assert_eq!(strategy_counts(&path).expect("read"), None);
+    // With the column empty in every measured row (replayed trials): none either.
+    std::fs::write(&path, "participant,technique,practice,strategy\n1,joint,false,\n1,joint,true,pinch\n")
+        .expect("write");
     assert_eq!(strategy_counts(&path).expect("read"), None);
 }

@@ -226,6 +226,7 @@ impl Lab {
             restarts: p.restarts,
             objects_placed: p.placed as u32,
             steps: self.session.frames(),
+            ..TrialResult::default()
         };
         self.stop_recording();
         let wall = self.wall;

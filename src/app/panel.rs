@@ -149,9 +149,12 @@ fn task_section(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, actions: &
 }
 
 fn view_section(ui: &mut egui::Ui, lab: &mut Lab) {
-    ui.horizontal(|ui| {
-        ui.checkbox(&mut lab.view.feedback, "feedback (F)");
-        ui.checkbox(&mut lab.view.contact_overlay, "contact image (O)");
+    // In participant mode the condition fixes what is shown.
+    ui.add_enabled_ui(lab.participant.is_none(), |ui| {
+        ui.horizontal(|ui| {
+            ui.checkbox(&mut lab.view.feedback, "feedback (F)");
+            ui.checkbox(&mut lab.view.contact_overlay, "contact image (O)");
+        });
     });
     ui.horizontal(|ui| {
         ui.label("Left drag puts down");

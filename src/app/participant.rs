@@ -161,8 +161,14 @@ mod tests {
             trials_csv: dir.join("trials.csv"),
             gestures: Some(dir.join("gestures")),
         };
-        let result =
-            TrialResult { completion_time_s: 12.5, completed: true, restarts: 0, objects_placed: 8, steps: 750 };
+        let result = TrialResult {
+            completion_time_s: 12.5,
+            completed: true,
+            restarts: 0,
+            objects_placed: 8,
+            steps: 750,
+            ..TrialResult::default()
+        };
         let mut t = Trials::open(options.clone(), "positioning").expect("opens");
         assert_eq!(t.gesture_path().expect("set"), dir.join("gestures/p3/positioning_proxy_on_r1.toml"));
         t.finish(&result, 1.0).expect("writes");

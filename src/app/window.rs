@@ -269,11 +269,12 @@ impl App {
                 }
                 "r" => Some(Action::Reset),
                 "s" => Some(Action::Screenshot),
-                "f" => {
+                // In participant mode the condition fixes what is shown.
+                "f" if self.lab.participant.is_none() => {
                     self.lab.view.feedback = !self.lab.view.feedback;
                     None
                 }
-                "o" => {
+                "o" if self.lab.participant.is_none() => {
                     self.lab.view.contact_overlay = !self.lab.view.contact_overlay;
                     None
                 }

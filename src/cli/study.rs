@@ -132,7 +132,7 @@ fn runner_for(args: &StudyArgs, design: StudyDesign, out: &std::path::Path) -> a
             anyhow::ensure!(dir.is_dir(), "--replay {}: not a folder of gesture files", dir.display());
             Box::new(ReplayRunner { dir, design })
         }
-        None => Box::new(ScriptedRunner { design, frames_dir }),
+        None => Box::new(ScriptedRunner::new(design, frames_dir)),
     })
 }
 

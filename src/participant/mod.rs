@@ -1,12 +1,21 @@
-//! Study participants: a scripted, technique-agnostic planner that drives
-//! the synthetic hand in closed loop, and replayed gesture recordings.
+//! Study participants: a scripted, technique-agnostic participant that
+//! drives synthetic hands in closed loop with a repertoire of manners and
+//! learns which pays (`manner`, `learner`, `planner`), and replayed gesture
+//! recordings (`runner`).
 
+mod goals;
+pub mod learner;
+pub mod manner;
 mod planner;
 mod runner;
 mod skill;
 mod trial;
+mod usage;
 
-pub use planner::{Intent, Planner};
+pub use learner::Learner;
+pub use manner::Manner;
+pub use planner::{Planner, PlannerOptions};
 pub use runner::{ReplayRunner, ScriptedRunner, participant_skill, technique_kind};
 pub use skill::{HandMode, Skill};
-pub use trial::{FrameLog, TrialOutcome, run_scripted, run_scripted_logged};
+pub use trial::{FrameLog, MOVING_SPEED, TrialOutcome, objects_moving, run_scripted, run_scripted_with};
+pub use usage::Usage;

@@ -1,118 +1,181 @@
-//! The scripted participant: one planner for every technique.
+//! The scripted participant's hands: one closed-loop skeleton for every
+//! manner and every technique.
 //!
-//! It reads the scene's goal and the objects' observed poses, decides which
-//! object to move and where, and drives a synthetic fingertip: reach (hand
-//! lifted), touch down on the object, drag it towards the goal while
-//! watching how it actually moves, lift, wait, repeat. It never looks at
-//! which technique is running — differences between conditions come from
-//! the physics alone.
+//! An *episode* runs from a decision to the last hand's lift: pick the open
+//! object nearest a hand (the *seed*), look at the situation (how many
+//! objects share its destination nearby, its size, whether another object
+//! waits elsewhere), let the [`Learner`] pick one of the manners the
+//! situation allows, reach with one or two hands, then move in closed loop:
+//! a hand on top of an object (*carry*) steers so that the object reaches
+//! its goal; a hand behind objects (*push*) moves towards their goal,
+//! staying behind the rearmost. Each reaction delay it re-plans from what it
+//! sees; a hand whose objects stop following for a while, or escape it,
+//! lifts (a *re-grip*, penalised); a drop ends the episode. The episode's
+//! payoff teaches the learner. It never looks at which technique runs —
+//! differences between conditions come from the physics alone.
 //!
-//! **What feedback gives it** (the same rule for every technique):
-//! - *on*: it sees where its contact actually acts — the technique's
-//!   feedback geometry (a joint line's end on the object, proxy cubes,
-//!   particles) — and leads its finger by the lag between finger and acting
-//!   point; it sees the world after its reaction delay.
-//! - *off*: it only sees objects move, 150 ms later than with feedback (it
-//!   must infer from motion that its grip slipped), and corrects no lag.
-//!
-//! Closed loop: every reaction delay it re-plans from what it observes; an
-//! object that stops following (slip, lost grip, wedged) for 1 s makes it
-//! lift and touch again at a freshly aimed point.
+//! **What feedback gives it** (the same rule for every technique): with
+//! feedback *on* it sees where each contact acts — the technique's feedback
+//! geometry near the hand (joint line ends on the object, proxy cubes,
+//! particles) — and leads a carrying hand by the lag between hand and
+//! acting point. With feedback *off* it sees only the objects, as the
+//! paper's participants did, with no added delay; an extra perception delay
+//! can be switched on ([`PlannerOptions::perception_delay_s`]).
 
+use super::goals::{Want, cluster, footprint, open_objects, settle_radius, want};
+use super::learner::{Context, Learner, net_progress, payoff};
+use super::manner::{Manner, Situation, applicable, fingers};
 use super::skill::Skill;
-use crate::goal::Tracker;
+use super::usage::Usage;
 use crate::scene::{Goal, Scene};
 use crate::session::Session;
-use crate::surface::Hand;
+use crate::surface::{Hand, HandKind};
 use crate::technique::Feedback;
 use glam::Vec2;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::collections::VecDeque;
 
-/// Extra perceptual delay without visual feedback (s).
-const NO_FEEDBACK_DELAY: f32 = 0.15;
-/// Speed of the lifted hand travelling to its next touch (m/s).
+/// Speed of a lifted hand travelling to its next touch (m/s).
 const REACH_SPEED: f32 = 0.6;
 /// Proportional gain of the drag: hand speed per metre of object error
 /// (1/s), at most; a participant who sees late moves more carefully, so the
 /// gain is also capped at `1 / (2·delay)`, which keeps the delayed loop from
 /// oscillating around the goal.
 const DRAG_GAIN: f32 = 3.0;
-/// How long an object may stop following before the planner re-grips (s).
+/// How long objects may stop following before a hand re-grips (s); pushes
+/// get twice as long (objects bump and turn before they go).
 const STUCK_AFTER: f32 = 1.0;
 /// Pause after lifting before the next decision (s).
 const WAIT_AFTER_LIFT: f32 = 0.6;
+/// Gap between a pushing hand's rim and the object's rim (m).
+const PUSH_GAP: f32 = 0.006;
+/// How far the two hands of a gather turn inward (rad, ~20°): a scoop.
+const GATHER_TILT: f32 = 0.35;
+/// Where the hands rest between episodes (right, left), m from the centre.
+const REST: [Vec2; 2] = [Vec2::new(0.2, -0.3), Vec2::new(-0.2, -0.3)];
 
-/// What the planner is doing.
+/// Settings of the participant model that are not skill.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Intent {
-    /// Hand lifted, deciding.
-    Idle { until: f64 },
-    /// Hand lifted, travelling to touch `object` at `touch`.
-    Reach { object: usize, touch: Vec2 },
-    /// Finger down on `object`, dragging it to `goal`.
-    Drag { object: usize, goal: Vec2, since: f64, best: f32, best_at: f64 },
-    /// Finger down on the surface behind `object`, pushing it towards the goal.
-    Push { object: usize, best: f32, best_at: f64 },
+pub struct PlannerOptions {
+    /// Chance of a random manner per episode (see `learner`).
+    pub explore: f32,
+    /// Extra delay (s) before the participant sees the world when feedback
+    /// is off. 0 by default: the paper removed only the display of where
+    /// input acts; objects stayed visible at once.
+    pub perception_delay_s: f32,
 }
 
-/// How the planner moves an object; chosen by the goal, never the technique.
+impl Default for PlannerOptions {
+    fn default() -> Self {
+        PlannerOptions { explore: super::learner::EXPLORE_MEASURED, perception_delay_s: 0.0 }
+    }
+}
+
+#[derive(Debug, Clone, PartialEq)]
+enum Role {
+    /// On top of (or around) one object, dragging it to its goal.
+    Carry { object: usize },
+    /// Behind these objects, pushing them towards their common goal;
+    /// `lateral` shifts the hand sideways from the group's centre line.
+    Push { objects: Vec<usize>, lateral: f32, standoff: f32 },
+}
+
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Manner {
-    /// Press on top and drag (positioning, sorting).
-    Drag,
-    /// Push from behind along the way to the goal, like a puck (steering: a
-    /// cylinder dragged by its top tips over).
-    Push,
+enum Phase {
+    Reach,
+    Down,
+    Lifted,
 }
 
-fn manner(scene: &Scene) -> Manner {
-    if matches!(scene.goal, Goal::Steering(_)) { Manner::Push } else { Manner::Drag }
+#[derive(Debug, Clone, PartialEq)]
+struct HandCtl {
+    /// 1 the right hand, 2 the left.
+    id: u32,
+    kind: HandKind,
+    spread: f32,
+    angle: f32,
+    /// Where the hand presses (world x/y on the touched surface)...
+    pos: Vec2,
+    /// ...at this height: drawn where that point appears on the display.
+    z: f32,
+    touch: Vec2,
+    /// The middle of the hand's contact relative to `pos` (a flat hand's
+    /// palm centre lies 2–3 cm behind the middle of what it covers).
+    centre: Vec2,
+    phase: Phase,
+    role: Role,
+    velocity: Vec2,
+    best: f32,
+    best_at: f64,
 }
 
-/// Gap between a pushing finger's centre and the object's rim (m).
-const PUSH_GAP: f32 = 0.012;
+#[derive(Debug, Clone, PartialEq)]
+struct Episode {
+    manner: Manner,
+    context: Context,
+    started: f64,
+    progress: f32,
+    regrips: u32,
+    drops: u32,
+    hands: Vec<HandCtl>,
+}
 
-/// A closed-loop scripted participant.
+/// A closed-loop scripted participant for one trial.
 #[derive(Debug, Clone)]
 pub struct Planner {
     skill: Skill,
     feedback: bool,
+    options: PlannerOptions,
     rng: ChaCha8Rng,
-    intent: Intent,
-    /// Where the finger presses, in world x/y on the touched surface...
-    finger: Vec2,
-    /// ...at this height: the hand is drawn where that point appears on
-    /// the display (perspective moves tall objects' tops outward).
-    touch_z: f32,
-    velocity: Vec2,
+    learner: Learner,
+    usage: Usage,
+    episode: Option<Episode>,
+    idle_until: f64,
+    rest: [Vec2; 2],
     next_decision: f64,
     /// Observed object positions with their time, for a delayed view.
     seen: VecDeque<(f64, Vec<Vec2>)>,
+    /// Per object: the region and distance to goal at the last decision.
+    last: Vec<Option<(u64, f32)>>,
+    restarts: u32,
 }
 
 impl Planner {
-    pub fn new(skill: Skill, feedback: bool, seed: u64) -> Planner {
+    pub fn new(skill: Skill, feedback: bool, seed: u64, learner: Learner, options: PlannerOptions) -> Planner {
         Planner {
             skill,
             feedback,
+            options,
             rng: ChaCha8Rng::seed_from_u64(seed),
-            intent: Intent::Idle { until: 0.3 },
-            finger: Vec2::new(0.0, -0.3),
-            touch_z: 0.0,
-            velocity: Vec2::ZERO,
+            learner,
+            usage: Usage::default(),
+            episode: None,
+            idle_until: 0.3,
+            rest: REST,
             next_decision: 0.0,
             seen: VecDeque::new(),
+            last: Vec::new(),
+            restarts: 0,
         }
     }
 
-    pub fn intent(&self) -> Intent {
-        self.intent
+    /// What the participant has learned so far.
+    pub fn learner(&self) -> &Learner {
+        &self.learner
+    }
+
+    /// Ends the trial: the time spent in an unfinished episode counts for
+    /// its manner (and teaches nothing); returns the learner and the usage.
+    pub fn finish(mut self, now: f64) -> (Learner, Usage) {
+        if let Some(e) = self.episode.take() {
+            self.usage.add(e.manner, (now - e.started) as f32, net_progress(e.progress, e.regrips, e.drops));
+        }
+        (self.learner, self.usage)
     }
 
     fn delay(&self) -> f32 {
-        self.skill.reaction_delay + if self.feedback { 0.0 } else { NO_FEEDBACK_DELAY }
+        self.skill.reaction_delay + if self.feedback { 0.0 } else { self.options.perception_delay_s }
     }
 
     fn gauss(&mut self) -> f32 {
@@ -144,152 +207,269 @@ impl Planner {
             self.decide(session, &observed, now);
         }
 
-        // Move the finger.
-        match self.intent {
-            Intent::Idle { .. } => Vec::new(),
-            Intent::Reach { touch, .. } => {
-                let d = touch - self.finger;
-                let step = REACH_SPEED * dt;
-                if d.length() <= step {
-                    self.finger = touch;
-                    // Touch down: the drag starts on the next decision.
-                    if let Intent::Reach { object, .. } = self.intent {
-                        let goal = goal_for(session.scene(), session.tracker(), object, &observed).unwrap_or(touch);
-                        let err = (goal - observed.get(object).copied().unwrap_or(touch)).length();
-                        self.intent = match manner(session.scene()) {
-                            Manner::Drag => Intent::Drag { object, goal, since: now, best: err, best_at: now },
-                            Manner::Push => Intent::Push { object, best: err, best_at: now },
-                        };
-                        self.velocity = Vec2::ZERO;
-                        self.next_decision = now;
+        let half = Vec2::new(session.scene().table.width, session.scene().table.depth) * 0.5 - Vec2::splat(0.01);
+        let mut touched = false;
+        let mut out = Vec::new();
+        if let Some(e) = &mut self.episode {
+            for h in &mut e.hands {
+                match h.phase {
+                    Phase::Reach => {
+                        let d = h.touch - h.pos;
+                        let step = REACH_SPEED * dt;
+                        if d.length() <= step {
+                            h.pos = h.touch;
+                            h.phase = Phase::Down;
+                            h.velocity = Vec2::ZERO;
+                            h.best = f32::MAX;
+                            h.best_at = now;
+                            touched = true;
+                        } else {
+                            h.pos += d / d.length() * step;
+                        }
                     }
-                    vec![self.hand(session)]
-                } else {
-                    self.finger += d / d.length() * step;
-                    Vec::new()
+                    Phase::Down => h.pos = (h.pos + h.velocity * dt).clamp(-half, half),
+                    Phase::Lifted => {}
+                }
+                if h.phase == Phase::Down {
+                    let p = session.world().screen_point(h.pos.extend(h.z));
+                    out.push(
+                        Hand::new(h.id, h.kind, p.x, p.y).with_angle(h.angle).with_spread(h.spread).with_pressure(0.9),
+                    );
                 }
             }
-            Intent::Drag { .. } | Intent::Push { .. } => {
-                self.finger += self.velocity * dt;
-                let half =
-                    Vec2::new(session.scene().table.width, session.scene().table.depth) * 0.5 - Vec2::splat(0.01);
-                self.finger = self.finger.clamp(-half, half);
-                vec![self.hand(session)]
-            }
         }
-    }
-
-    fn hand(&self, session: &Session) -> Hand {
-        let p = session.world().screen_point(self.finger.extend(self.touch_z));
-        Hand::new(1, self.skill.hand_mode.kind(), p.x, p.y).with_spread(0.4).with_pressure(0.9)
+        if touched {
+            // Touch down: steer from the next frame on.
+            self.next_decision = now;
+        }
+        out
     }
 
     fn decide(&mut self, session: &Session, observed: &[Vec2], now: f64) {
         let scene = session.scene();
-        let tracker = session.tracker();
-        match self.intent {
-            Intent::Idle { until } => {
-                if now < until || session.progress().complete {
-                    return;
-                }
-                if let Some(object) = next_object(scene, tracker, session, observed, self.finger) {
-                    let o = session.world().object_pose(object).position;
-                    let half_z = scene.objects[object].shape.half_z();
-                    let (touch, z) = match manner(scene) {
-                        // On top of the object.
-                        Manner::Drag => (observed[object], o.z + half_z),
-                        // On the surface just behind it, seen from the goal.
-                        Manner::Push => {
-                            let goal = goal_for(scene, tracker, object, observed).unwrap_or(observed[object]);
-                            let dir = (goal - observed[object]).normalize_or(Vec2::X);
-                            (observed[object] - dir * (footprint(scene, object) + PUSH_GAP), o.z - half_z)
-                        }
-                    };
-                    let touch = self.aim(touch);
-                    self.touch_z = z;
-                    self.intent = Intent::Reach { object, touch };
+        let world = session.world();
+        let active: Vec<bool> = (0..scene.objects.len()).map(|i| world.is_active(i)).collect();
+        let open = open_objects(scene, session.tracker(), &active, observed);
+        let restarts = session.progress().restarts;
+        let dropped = restarts > self.restarts;
+        self.restarts = restarts;
+        let progress = self.account(scene, session, observed, &open, dropped);
+
+        if let Some(e) = &mut self.episode {
+            e.progress += progress;
+            if dropped {
+                e.drops += 1;
+                for h in &mut e.hands {
+                    h.phase = Phase::Lifted;
                 }
             }
-            Intent::Reach { object, .. } => {
-                if !session.world().is_active(object) {
-                    self.lift(now);
-                }
+        }
+        if self.episode.is_none() {
+            if now >= self.idle_until && !session.progress().complete {
+                self.start_episode(session, observed, &open, now);
             }
-            Intent::Push { object, best, best_at } => self.push(session, observed, now, object, best, best_at),
-            Intent::Drag { object, since, best, best_at, .. } => {
-                if !session.world().is_active(object) {
-                    self.lift(now);
-                    return;
+            return;
+        }
+        // Feedback geometry is looked at only while a hand carries something.
+        let carrying = self
+            .episode
+            .as_ref()
+            .is_some_and(|e| e.hands.iter().any(|h| h.phase == Phase::Down && matches!(h.role, Role::Carry { .. })));
+        let feedback = (self.feedback && carrying).then(|| session.feedback());
+        let gain = DRAG_GAIN.min(0.5 / self.delay());
+        let speed = self.speed(scene);
+        let mut regrips = 0;
+        if let Some(e) = &mut self.episode {
+            for h in &mut e.hands {
+                if h.phase != Phase::Down {
+                    continue;
                 }
-                let Some(goal) = goal_for(scene, tracker, object, observed) else {
-                    self.lift(now);
-                    return;
+                let lifted = match &h.role {
+                    Role::Carry { object } => {
+                        carry(h, *object, scene, &open, observed, now, gain, speed, feedback.as_ref())
+                    }
+                    Role::Push { .. } => push(h, scene, &open, observed, now, gain, speed),
                 };
-                let obj = observed[object];
-                let err = goal - obj;
-                let settle = settle_radius(scene);
-                if err.length() < settle {
-                    self.lift(now);
-                    return;
+                match lifted {
+                    Step::Going => {}
+                    Step::Done => h.phase = Phase::Lifted,
+                    Step::Regrip => {
+                        h.phase = Phase::Lifted;
+                        regrips += 1;
+                    }
                 }
-                // Closed loop: aim the finger so that the *object* reaches
-                // the goal; with feedback, lead by the visible lag between
-                // the finger and where the contact acts.
-                let gain = DRAG_GAIN.min(0.5 / self.delay());
-                let mut v = err / err.length() * (gain * err.length()).min(self.speed(scene));
-                if self.feedback
-                    && let Some(acting) = acting_point(&session.feedback())
-                {
-                    let lag = self.finger - acting;
-                    v -= lag.clamp_length_max(0.03) * 2.0;
-                }
-                self.velocity = v.clamp_length_max(self.speed(scene));
-                // Re-grip when the object stopped following or the finger left it.
-                let reach = footprint(scene, object) + 0.03;
-                let lost = (self.finger - obj).length() > reach;
-                let (best, best_at) = if err.length() < best - 0.005 { (err.length(), now) } else { (best, best_at) };
-                if lost || now - best_at > f64::from(STUCK_AFTER) {
-                    self.lift(now);
-                    return;
-                }
-                self.intent = Intent::Drag { object, goal, since, best, best_at };
             }
+            e.regrips += regrips;
+        }
+        let over = self.episode.as_ref().is_some_and(|e| e.hands.iter().all(|h| h.phase == Phase::Lifted));
+        if over && let Some(e) = self.episode.take() {
+            let duration = (now - e.started) as f32;
+            let pay = payoff(e.progress, e.regrips, e.drops, duration);
+            self.learner.update(e.context, e.manner, pay);
+            self.usage.add(e.manner, duration, net_progress(e.progress, e.regrips, e.drops));
+            for h in &e.hands {
+                self.rest[(h.id as usize).saturating_sub(1).min(1)] = h.pos;
+            }
+            self.idle_until = now + f64::from(WAIT_AFTER_LIFT);
         }
     }
 
-    fn push(&mut self, session: &Session, observed: &[Vec2], now: f64, object: usize, best: f32, best_at: f64) {
+    /// Progress since the last decision: the drop in the summed distance of
+    /// open objects to their goals, counting an object that reached its
+    /// region (or a waypoint) as having covered its last distance.
+    fn account(
+        &mut self,
+        scene: &Scene,
+        session: &Session,
+        observed: &[Vec2],
+        open: &[(usize, Want)],
+        dropped: bool,
+    ) -> f32 {
+        let n = scene.objects.len();
+        let mut now: Vec<Option<(u64, f32)>> = vec![None; n];
+        for (i, w) in open {
+            now[*i] = Some((w.region, (w.point - observed[*i]).length()));
+        }
+        // Objects near enough to settle are still wanted somewhere: keep
+        // their region so that leaving it is not counted twice.
+        for i in 0..n {
+            if now[i].is_none()
+                && session.world().is_active(i)
+                && let Some(w) = want(scene, session.tracker(), i, observed)
+            {
+                now[i] = Some((w.region, (w.point - observed[i]).length()));
+            }
+        }
+        let mut progress = 0.0;
+        if !dropped && self.last.len() == n {
+            for (before, after) in self.last.iter().zip(&now) {
+                progress += match (before, after) {
+                    (Some((r, e)), Some((r2, e2))) if r == r2 => e - e2,
+                    (Some((_, e)), _) => *e,
+                    (None, _) => 0.0,
+                };
+            }
+        }
+        self.last = now;
+        progress
+    }
+
+    fn start_episode(&mut self, session: &Session, observed: &[Vec2], open: &[(usize, Want)], now: f64) {
         let scene = session.scene();
-        let Some(goal) = goal_for(scene, session.tracker(), object, observed) else {
-            self.lift(now);
+        // The open object nearest a hand, and that hand.
+        let Some((seed, hand)) = open.iter().flat_map(|(i, _)| (0..2).map(move |h| (*i, h))).min_by(|a, b| {
+            (observed[a.0] - self.rest[a.1]).length().total_cmp(&(observed[b.0] - self.rest[b.1]).length())
+        }) else {
             return;
         };
-        let obj = observed[object];
-        let err = goal - obj;
-        if err.length() < settle_radius(scene) {
-            // Close enough: the goal (a waypoint) moves on by itself.
-            self.velocity = Vec2::ZERO;
-            self.intent = Intent::Push { object, best: f32::MAX, best_at: now };
+        let members = cluster(open, observed, seed);
+        let other = 1 - hand;
+        let second = open.iter().map(|(i, _)| *i).filter(|&i| i != seed).min_by(|&a, &b| {
+            (observed[a] - self.rest[other]).length().total_cmp(&(observed[b] - self.rest[other]).length())
+        });
+        let situation =
+            Situation { cluster: members.len(), footprint: footprint(scene, seed), second_object: second.is_some() };
+        let context = Context::new(&scene.goal, members.len());
+        let options = applicable(situation);
+        let Some(manner) = self.learner.choose(context, &options, self.options.explore, &mut self.rng) else {
             return;
+        };
+        let mut hands = Vec::new();
+        let id = |h: usize| h as u32 + 1;
+        match manner {
+            Manner::Fingertips(_) | Manner::Pinch | Manner::FlatHand => {
+                hands.push(self.carry_hand(session, id(hand), manner, seed, observed));
+            }
+            Manner::BimanualDrag => {
+                hands.push(self.carry_hand(session, id(hand), manner, seed, observed));
+                if let Some(s) = second {
+                    hands.push(self.carry_hand(session, id(other), manner, s, observed));
+                }
+            }
+            Manner::PushFingertip | Manner::PushEdge => {
+                hands.push(self.push_hand(session, id(hand), manner, vec![seed], 0.0, observed));
+            }
+            Manner::EdgeSweep | Manner::ForearmSweep => {
+                hands.push(self.push_hand(session, id(hand), manner, members.clone(), 0.0, observed));
+            }
+            Manner::TwoHandGather => {
+                let width = spread_across(&members, observed, scene, direction(scene, session, &members, observed));
+                let lateral = (width * 0.5).max(0.04);
+                // The right hand takes the side to its right of the push.
+                hands.push(self.push_hand(session, 1, manner, members.clone(), -lateral, observed));
+                hands.push(self.push_hand(session, 2, manner, members.clone(), lateral, observed));
+            }
         }
-        let dir = err / err.length();
-        let behind = obj - dir * (footprint(scene, object) + PUSH_GAP * 0.5);
-        // Off the line behind the object (it turned, or the goal moved on):
-        // lift and set the finger down behind it again.
-        let off = behind - self.finger;
-        let side = (self.finger - obj).normalize_or(-dir);
-        if side.dot(-dir) < 0.8 || off.length() > footprint(scene, object) + 0.03 {
-            self.lift(now);
-            return;
+        for h in &mut hands {
+            h.pos = self.rest[(h.id as usize - 1).min(1)];
         }
-        let gain = DRAG_GAIN.min(0.5 / self.delay());
-        let v = dir * (gain * err.length()).min(self.speed(scene)) + off * 2.0;
-        self.velocity = v.clamp_length_max(self.speed(scene));
-        let (best, best_at) = if err.length() < best - 0.005 { (err.length(), now) } else { (best, best_at) };
-        if now - best_at > f64::from(STUCK_AFTER) * 2.0 {
-            self.lift(now);
-            return;
+        self.episode = Some(Episode { manner, context, started: now, progress: 0.0, regrips: 0, drops: 0, hands });
+    }
+
+    fn carry_hand(&mut self, session: &Session, id: u32, manner: Manner, object: usize, observed: &[Vec2]) -> HandCtl {
+        let scene = session.scene();
+        let o = session.world().object_pose(object).position;
+        let half_z = scene.objects[object].shape.half_z();
+        let r = footprint(scene, object);
+        let (z, spread) = match manner {
+            // Thumb and index beside the object, on the surface it stands on.
+            Manner::Pinch => (o.z - half_z, ((2.0 * (r + 0.004) - 0.013) / 0.012).max(0.0)),
+            _ => (o.z + half_z, 0.4),
+        };
+        // The middle of the contact goes on the object.
+        let centre = contact_centre(manner.hand_kind(), spread);
+        let touch = self.aim(observed[object]) - centre;
+        HandCtl {
+            id,
+            kind: manner.hand_kind(),
+            spread,
+            angle: 0.0,
+            pos: touch,
+            z,
+            touch,
+            centre,
+            phase: Phase::Reach,
+            role: Role::Carry { object },
+            velocity: Vec2::ZERO,
+            best: f32::MAX,
+            best_at: 0.0,
         }
-        self.intent = Intent::Push { object, best, best_at };
+    }
+
+    fn push_hand(
+        &mut self,
+        session: &Session,
+        id: u32,
+        manner: Manner,
+        objects: Vec<usize>,
+        lateral: f32,
+        observed: &[Vec2],
+    ) -> HandCtl {
+        let scene = session.scene();
+        let kind = manner.hand_kind();
+        let standoff = half_thickness(kind) + PUSH_GAP;
+        let dir = direction(scene, session, &objects, observed);
+        let target = behind(scene, &objects, observed, dir, standoff, lateral);
+        let bottom = objects
+            .iter()
+            .map(|&i| session.world().object_pose(i).position.z - scene.objects[i].shape.half_z())
+            .fold(f32::MAX, f32::min);
+        let touch = self.aim(target);
+        HandCtl {
+            id,
+            kind,
+            spread: 0.4,
+            angle: push_angle(kind, dir, lateral),
+            pos: touch,
+            z: bottom.max(0.0),
+            touch,
+            centre: Vec2::ZERO,
+            phase: Phase::Reach,
+            role: Role::Push { objects, lateral, standoff },
+            velocity: Vec2::ZERO,
+            best: f32::MAX,
+            best_at: 0.0,
+        }
     }
 
     fn speed(&self, scene: &Scene) -> f32 {
@@ -297,83 +477,194 @@ impl Planner {
         if matches!(scene.goal, Goal::Steering(_)) { self.skill.hand_speed * 0.5 } else { self.skill.hand_speed }
     }
 
-    fn lift(&mut self, now: f64) {
-        self.intent = Intent::Idle { until: now + f64::from(WAIT_AFTER_LIFT) };
-        self.velocity = Vec2::ZERO;
+    /// Hands on the table now and the fingers they touch with.
+    pub fn hands_down(&self) -> (u32, u32) {
+        self.episode.as_ref().map_or((0, 0), |e| {
+            e.hands.iter().filter(|h| h.phase == Phase::Down).fold((0, 0), |(n, f), h| (n + 1, f + fingers(h.kind)))
+        })
+    }
+
+    /// The manner of the episode under way, if any.
+    pub fn manner(&self) -> Option<Manner> {
+        self.episode.as_ref().map(|e| e.manner)
     }
 }
 
-/// Where the contact acts, from the technique's feedback geometry: the mean
-/// of the points on objects (joint line ends) or of the cubes.
-fn acting_point(f: &Feedback) -> Option<Vec2> {
-    let pts: Vec<Vec2> = if f.lines.is_empty() {
-        f.cubes.iter().map(|(c, _)| c.truncate()).collect()
-    } else {
-        f.lines.iter().map(|(_, b)| b.truncate()).collect()
-    };
+enum Step {
+    Going,
+    Done,
+    Regrip,
+}
+
+/// The area-weighted middle of a hand's footprint in its own frame.
+fn contact_centre(kind: HandKind, spread: f32) -> Vec2 {
+    let patches = Hand::new(0, kind, 0.0, 0.0).with_spread(spread).patches();
+    let (sum, area) = patches.iter().fold((Vec2::ZERO, 0.0), |(sum, area), p| {
+        let [lo, hi] = p.shape.bounds();
+        let a = p.shape.area();
+        (sum + Vec2::new(lo[0] + hi[0], lo[1] + hi[1]) * 0.5 * a, area + a)
+    });
+    if area > 0.0 { sum / area } else { Vec2::ZERO }
+}
+
+/// Half the width of a hand's footprint across a push (m).
+fn half_thickness(kind: HandKind) -> f32 {
+    match kind {
+        HandKind::Edge => 0.012,
+        HandKind::Forearm => 0.035,
+        HandKind::FlatHand => 0.048,
+        _ => 0.0075,
+    }
+}
+
+/// A pushing hand's angle: an edge or forearm (which run along the hand's
+/// local y) lies across the push; a gather's two hands turn inward.
+fn push_angle(kind: HandKind, dir: Vec2, lateral: f32) -> f32 {
+    match kind {
+        HandKind::Edge | HandKind::Forearm => {
+            dir.y.atan2(dir.x) - GATHER_TILT * lateral.signum() * f32::from(lateral != 0.0)
+        }
+        _ => 0.0,
+    }
+}
+
+/// From the objects' centre towards their goals' centre.
+fn direction(scene: &Scene, session: &Session, objects: &[usize], observed: &[Vec2]) -> Vec2 {
+    let goals: Vec<Vec2> =
+        objects.iter().filter_map(|&i| want(scene, session.tracker(), i, observed).map(|w| w.point)).collect();
+    if goals.is_empty() {
+        return Vec2::X;
+    }
+    let g = goals.iter().copied().sum::<Vec2>() / goals.len() as f32;
+    let c = objects.iter().map(|&i| observed[i]).sum::<Vec2>() / objects.len() as f32;
+    (g - c).normalize_or(Vec2::X)
+}
+
+/// How wide the group is across `dir` (m), object rims included.
+fn spread_across(objects: &[usize], observed: &[Vec2], scene: &Scene, dir: Vec2) -> f32 {
+    let perp = dir.perp();
+    let (lo, hi) = objects.iter().fold((f32::MAX, f32::MIN), |(lo, hi), &i| {
+        let s = observed[i].dot(perp);
+        let r = footprint(scene, i);
+        (lo.min(s - r), hi.max(s + r))
+    });
+    (hi - lo).max(0.0)
+}
+
+/// Where a pushing hand belongs: behind the rearmost object, on the group's
+/// centre line shifted by `lateral`.
+fn behind(scene: &Scene, objects: &[usize], observed: &[Vec2], dir: Vec2, standoff: f32, lateral: f32) -> Vec2 {
+    let c = objects.iter().map(|&i| observed[i]).sum::<Vec2>() / objects.len().max(1) as f32;
+    let rear =
+        objects.iter().map(|&i| (observed[i] - c).dot(dir) - footprint(scene, i)).fold(f32::MAX, f32::min).min(0.0);
+    c + dir * (rear - standoff) + dir.perp() * lateral
+}
+
+/// Where the hand's contact acts, from the technique's feedback geometry
+/// near it: joint line ends on the object, proxy cubes, particles.
+fn acting_point(f: &Feedback, near: Vec2) -> Option<Vec2> {
+    const NEAR: f32 = 0.06;
+    let mut pts: Vec<Vec2> =
+        f.lines.iter().filter(|(a, _)| (a.truncate() - near).length() < NEAR).map(|(_, b)| b.truncate()).collect();
+    if pts.is_empty() {
+        pts = f.cubes.iter().map(|(c, _)| c.truncate()).filter(|c| (*c - near).length() < NEAR).collect();
+    }
     if pts.is_empty() { None } else { Some(pts.iter().copied().sum::<Vec2>() / pts.len() as f32) }
 }
 
-fn footprint(scene: &Scene, object: usize) -> f32 {
-    scene.objects[object].shape.footprint_radius()
-}
-
-/// How close to its goal an object must get before the planner lets go.
-fn settle_radius(scene: &Scene) -> f32 {
-    match &scene.goal {
-        Goal::Positioning { targets, .. } => targets.iter().map(|t| t.tolerance).fold(f32::MAX, f32::min) * 0.5,
-        Goal::Steering(g) => g.waypoint_radius * 0.5,
-        _ => 0.02,
+#[allow(clippy::too_many_arguments)]
+fn carry(
+    h: &mut HandCtl,
+    object: usize,
+    scene: &Scene,
+    open: &[(usize, Want)],
+    observed: &[Vec2],
+    now: f64,
+    gain: f32,
+    speed: f32,
+    feedback: Option<&Feedback>,
+) -> Step {
+    let Some((_, w)) = open.iter().find(|(i, _)| *i == object) else {
+        return Step::Done;
+    };
+    let obj = observed[object];
+    let err = w.point - obj;
+    if err.length() < settle_radius(scene) {
+        return Step::Done;
     }
-}
-
-/// Which object to work on next: the nearest one that is not yet where the
-/// goal wants it.
-fn next_object(scene: &Scene, tracker: &Tracker, session: &Session, observed: &[Vec2], finger: Vec2) -> Option<usize> {
-    (0..scene.objects.len())
-        .filter(|&i| session.world().is_active(i))
-        .filter_map(|i| {
-            let goal = goal_for(scene, tracker, i, observed)?;
-            let away = (goal - observed[i]).length();
-            (away >= settle_radius(scene)).then_some((i, (observed[i] - finger).length()))
-        })
-        .min_by(|a, b| a.1.total_cmp(&b.1))
-        .map(|(i, _)| i)
-}
-
-/// Where the goal wants object `i` now, if anywhere.
-fn goal_for(scene: &Scene, tracker: &Tracker, i: usize, observed: &[Vec2]) -> Option<Vec2> {
-    match &scene.goal {
-        // Soft-body goals concern no rigid object.
-        Goal::None | Goal::SoftRegion { .. } | Goal::ClothFlat { .. } | Goal::Torn { .. } => None,
-        Goal::Positioning { targets, .. } => {
-            targets.iter().find(|t| t.object == i && !tracker.is_placed(i)).map(|t| t.position)
-        }
-        Goal::Sorting { zones, .. } => {
-            let o = &scene.objects[i];
-            let p = observed[i];
-            let mine: Vec<_> = zones.iter().filter(|z| z.color_name == o.color_name).collect();
-            if mine.iter().any(|z| {
-                z.contains(p) && inset(z.min, z.max, 0.03).is_some_and(|(a, b)| p.cmpge(a).all() && p.cmple(b).all())
-            }) {
-                return None;
-            }
-            // The nearest point well inside the nearest zone of its colour.
-            mine.iter()
-                .filter_map(|z| inset(z.min, z.max, 0.06).map(|(a, b)| p.clamp(a, b)))
-                .min_by(|a, b| (*a - p).length().total_cmp(&(*b - p).length()))
-        }
-        Goal::Steering(g) => (g.object == i).then(|| tracker.next_waypoint()).flatten(),
-        Goal::Gather { center, radius, .. } => {
-            let p = observed[i];
-            ((p - *center).length() > radius * 0.7).then_some(*center)
-        }
-        Goal::Region { object, min, max, .. } => (*object == i).then(|| (*min + *max) * 0.5),
+    // Closed loop: aim the hand so that the *object* reaches the goal; with
+    // feedback, lead by the visible lag between hand and acting point.
+    let mut v = err / err.length() * (gain * err.length()).min(speed);
+    let pressing = h.pos + h.centre;
+    if let Some(f) = feedback
+        && let Some(acting) = acting_point(f, pressing)
+    {
+        let lag = pressing - acting;
+        v -= lag.clamp_length_max(0.03) * 2.0;
     }
+    h.velocity = v.clamp_length_max(speed);
+    let reach = footprint(scene, object) + 0.03;
+    if (pressing - obj).length() > reach {
+        return Step::Regrip;
+    }
+    if err.length() < h.best - 0.005 {
+        h.best = err.length();
+        h.best_at = now;
+    } else if now - h.best_at > f64::from(STUCK_AFTER) {
+        return Step::Regrip;
+    }
+    Step::Going
 }
 
-fn inset(min: Vec2, max: Vec2, m: f32) -> Option<(Vec2, Vec2)> {
-    let a = min + Vec2::splat(m);
-    let b = max - Vec2::splat(m);
-    (a.x <= b.x && a.y <= b.y).then_some((a, b))
+fn push(
+    h: &mut HandCtl,
+    scene: &Scene,
+    open: &[(usize, Want)],
+    observed: &[Vec2],
+    now: f64,
+    gain: f32,
+    speed: f32,
+) -> Step {
+    let Role::Push { objects, lateral, standoff } = &h.role else {
+        return Step::Done;
+    };
+    let (lateral, standoff) = (*lateral, *standoff);
+    let members: Vec<(usize, Want)> = open.iter().filter(|(i, _)| objects.contains(i)).copied().collect();
+    if members.is_empty() {
+        return Step::Done;
+    }
+    let ids: Vec<usize> = members.iter().map(|(i, _)| *i).collect();
+    let c = ids.iter().map(|&i| observed[i]).sum::<Vec2>() / ids.len() as f32;
+    let g = members.iter().map(|(_, w)| w.point).sum::<Vec2>() / ids.len() as f32;
+    let err = g - c;
+    let dist = err.length();
+    let total: f32 = members.iter().map(|(i, w)| (w.point - observed[*i]).length()).sum();
+    if dist < settle_radius(scene) {
+        // At a waypoint: the goal moves on by itself.
+        h.velocity = Vec2::ZERO;
+        h.best = f32::MAX;
+        h.best_at = now;
+        return Step::Going;
+    }
+    let dir = err / dist;
+    let target = behind(scene, &ids, observed, dir, standoff, lateral);
+    let off = target - h.pos;
+    // Off the line behind the group (it turned, or slipped past): lift and
+    // set the hand down behind it again.
+    let lone = ids.len() == 1;
+    let side = (h.pos - c).normalize_or(-dir);
+    let slack = if lone { footprint(scene, ids[0]) + 0.03 } else { 0.08 };
+    if (lone && lateral == 0.0 && side.dot(-dir) < 0.8) || off.length() > slack {
+        return Step::Regrip;
+    }
+    h.angle = push_angle(h.kind, dir, lateral);
+    let v = dir * (gain * dist).min(speed) + off * 2.0;
+    h.velocity = v.clamp_length_max(speed);
+    if total < h.best - 0.005 {
+        h.best = total;
+        h.best_at = now;
+    } else if now - h.best_at > f64::from(STUCK_AFTER) * 2.0 {
+        return Step::Regrip;
+    }
+    Step::Going
 }

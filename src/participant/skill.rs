@@ -1,5 +1,6 @@
 //! Per-participant skill, drawn from the study seed.
 
+use super::manner::Manner;
 use crate::surface::HandKind;
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -18,6 +19,14 @@ impl HandMode {
             HandMode::TwoFingers => HandKind::Fingertips(2),
         }
     }
+
+    /// The habitual manner this preference starts from (the learner's prior).
+    pub fn habit(self) -> Manner {
+        match self {
+            HandMode::OneFinger => Manner::Fingertips(1),
+            HandMode::TwoFingers => Manner::Fingertips(2),
+        }
+    }
 }
 
 /// What differs between scripted participants. The same skill drives every
@@ -32,10 +41,16 @@ pub struct Skill {
     /// Time between looking and acting (s): the planner re-plans this often
     /// and sees the world this late.
     pub reaction_delay: f32,
+    /// The habitual touch: where the learner's priors start.
     pub hand_mode: HandMode,
 }
 
 impl Skill {
+    /// The manner this participant habitually starts with.
+    pub fn habit(self) -> Manner {
+        self.hand_mode.habit()
+    }
+
     /// A plausible adult drawn from `seed` (Fitts-style drag speeds of
     /// 0.15–0.35 m/s, 2–5 mm aim scatter, 120–250 ms reaction).
     pub fn draw(seed: u64) -> Skill {

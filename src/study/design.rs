@@ -282,8 +282,10 @@ pub struct ParticipantPlan {
 }
 
 /// A slice of a design's trials, run into its own folder so that several
-/// machines (or processes) share a study: shard `i/n` holds the trials whose
-/// trial index `k` has `k % n == i`. `merge` puts the slices back together.
+/// machines (or processes) share a study: shard `i/n` holds every trial of
+/// the participants `p` with `(p - 1) % n == i` (participants learn, so a
+/// session is never split; see `runner::in_shard`). `merge` puts the slices
+/// back together.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Shard {
@@ -302,8 +304,9 @@ impl Shard {
     /// The shard holding every trial (`0/1`).
     pub const WHOLE: Shard = Shard { index: 0, count: 1 };
 
-    pub fn contains(self, trial_index: usize) -> bool {
-        trial_index % self.count as usize == self.index as usize
+    /// Whether the `k`-th item (0-based; the harness passes `p - 1`) is in this shard.
+    pub fn contains(self, k: usize) -> bool {
+        k % self.count as usize == self.index as usize
     }
 }
 

@@ -13,6 +13,7 @@ pub mod report;
 pub mod runner;
 pub mod seeds;
 pub mod seeds_figure;
+pub mod strategies;
 pub mod summary;
 pub mod trial;
 pub mod within_ci;
@@ -21,5 +22,6 @@ pub use design::{DEFAULT_TASKS, ParticipantPlan, Shard, StudyDesign, trial_seed,
 pub use error::StudyError;
 pub use output::{COLUMNS, RunFile, TrialRow};
 pub use runner::{MergeOutcome, RunOptions, RunOutcome, merge, resume_study, run_study, write_report};
+pub use strategies::{STRATEGY_COLUMNS, StrategyRow, read_strategies, strategies};
 pub use summary::{Stats, SummaryRow, describe, summarize, t_quantile_975};
-pub use trial::{Technique, TrialResult, TrialRunner, TrialSpec, UnknownTechnique};
+pub use trial::{ParticipantRun, Technique, TrialResult, TrialRunner, TrialSpec, UnknownTechnique};

@@ -7,6 +7,7 @@
 //! | `errors.log`  | appended when a trial fails    | one line per failed trial |
 //! | `summary.csv` | when every trial has a row     | see `summary` |
 //! | `anova.csv`, `pairwise.csv` | with the summary | see `analysis` |
+//! | `strategies.csv` | with the summary            | see `strategies` |
 //! | `figure.png`, `figure.svg` | with the summary  | see `figure` |
 //! | `report.md`, `report.html` | with the summary  | see `report` |
 //!
@@ -28,6 +29,7 @@ pub const RUN_TOML: &str = "run.toml";
 pub const TRIALS_CSV: &str = "trials.csv";
 pub const ERRORS_LOG: &str = "errors.log";
 pub const SUMMARY_CSV: &str = "summary.csv";
+pub const STRATEGIES_CSV: &str = "strategies.csv";
 pub const FIGURE_PNG: &str = "figure.png";
 pub const FIGURE_SVG: &str = "figure.svg";
 
@@ -40,7 +42,7 @@ pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 pub const RUN_FORMAT: &str = "surfacelab-study/2";
 
 /// `trials.csv` columns, in order. They are the field names of [`TrialRow`].
-pub const COLUMNS: [&str; 14] = [
+pub const COLUMNS: [&str; 19] = [
     "participant",
     "order_index",
     "task",
@@ -55,6 +57,11 @@ pub const COLUMNS: [&str; 14] = [
     "steps",
     "seed",
     "version",
+    "strategy",
+    "hands_max",
+    "fingers_max",
+    "objects_moving_max",
+    "manners",
 ];
 
 /// One line of `trials.csv`: the spec and the result of one trial.
@@ -79,6 +86,13 @@ pub struct TrialRow {
     pub steps: u64,
     pub seed: u64,
     pub version: String,
+    /// The manner used for the most time (empty for replays and failed runs).
+    pub strategy: String,
+    pub hands_max: u32,
+    pub fingers_max: u32,
+    pub objects_moving_max: u32,
+    /// `name:time_s:net_m` per manner used, joined by `;` (see `strategies`).
+    pub manners: String,
 }
 
 impl TrialRow {
@@ -89,6 +103,11 @@ impl TrialRow {
             restarts: result.restarts,
             objects_placed: result.objects_placed,
             steps: result.steps,
+            strategy: result.strategy.clone(),
+            hands_max: result.hands_max,
+            fingers_max: result.fingers_max,
+            objects_moving_max: result.objects_moving_max,
+            manners: result.manners.clone(),
             ..TrialRow::failed(spec)
         }
     }
@@ -110,6 +129,11 @@ impl TrialRow {
             steps: 0,
             seed: spec.seed,
             version: VERSION.to_owned(),
+            strategy: String::new(),
+            hands_max: 0,
+            fingers_max: 0,
+            objects_moving_max: 0,
+            manners: String::new(),
         }
     }
 

@@ -43,7 +43,7 @@ pub type StrategyCounts = BTreeMap<String, BTreeMap<String, usize>>;
 
 /// Strategy shares per technique from `trials.csv`'s `strategy` column:
 /// technique → manner → measured trials. `None` when the column is absent
-/// (runs whose participants do not record it).
+/// or empty in every measured row (replays and the demo record none).
 pub fn strategy_counts(trials_csv: &Path) -> Result<Option<StrategyCounts>, StudyError> {
     let mut reader = csv::Reader::from_path(trials_csv).map_err(StudyError::csv(trials_csv))?;
     let headers = reader.headers().map_err(StudyError::csv(trials_csv))?.clone();
@@ -60,10 +60,12 @@ pub fn strategy_counts(trials_csv: &Path) -> Result<Option<StrategyCounts>, Stud
             continue;
         }
         let (Some(t), Some(s)) = (record.get(technique), record.get(strategy)) else { continue };
-        let s = if s.is_empty() { "(none)" } else { s };
-        *out.entry(t.to_owned()).or_default().entry(s.to_owned()).or_default() += 1;
+        // Replayed and demo trials record no strategy.
+        if !s.is_empty() {
+            *out.entry(t.to_owned()).or_default().entry(s.to_owned()).or_default() += 1;
+        }
     }
-    Ok(Some(out))
+    Ok((!out.is_empty()).then_some(out))
 }
 
 fn opt(v: Option<f64>, digits: usize) -> String {
@@ -205,7 +207,9 @@ pub fn report_blocks(
 
     b.push(Block::Heading(s("Strategies")));
     match strategies {
-        None => b.push(Block::Paragraph(s("Strategy shares: not recorded (trials.csv has no strategy column)."))),
+        None => b.push(Block::Paragraph(s(
+            "Strategy shares: not recorded (no measured trial in trials.csv names a strategy).",
+        ))),
         Some(counts) => {
             b.push(Block::Paragraph(s(
                 "Share of measured trials per technique by the manner used for the most time (trials.csv `strategy`).",

@@ -6,6 +6,13 @@
 //!   until every earlier trial is written. So a seed and a design give a
 //!   byte-identical file whatever `jobs` is and however often the run was
 //!   interrupted.
+//! - Participants learn, so each participant's trials run in session order
+//!   on one [`ParticipantRun`]; workers take whole participants. A trial of
+//!   that participant not run now (already in `trials.csv`) is *replayed*
+//!   first, so a resumed run rebuilds the participant's state exactly and
+//!   writes the same bytes as an uninterrupted one.
+//! - Shards split the study by participant (see [`in_shard`]), so a shard
+//!   never has to replay another shard's trials.
 //! - A trial is identified by (`participant`, `order_index`); a row is accepted
 //!   on resume only if its whole spec (task, technique, feedback,
 //!   repetition, practice, seed) matches the design's — a folder cannot
@@ -19,12 +26,13 @@ use super::design::{Shard, StudyDesign};
 use super::error::StudyError;
 use super::figure::write_figure;
 use super::output::{
-    FIGURE_PNG, FIGURE_SVG, RUN_TOML, RunFile, SUMMARY_CSV, TRIALS_CSV, TrialRow, TrialsWriter, log_error, read_trials,
-    recover_trials, write_trials,
+    FIGURE_PNG, FIGURE_SVG, RUN_TOML, RunFile, STRATEGIES_CSV, SUMMARY_CSV, TRIALS_CSV, TrialRow, TrialsWriter,
+    log_error, read_trials, recover_trials, write_trials,
 };
 use super::report::write_run_report;
+use super::strategies::{strategies, write_strategies};
 use super::summary::{summarize, write_summary};
-use super::trial::{TrialRunner, TrialSpec};
+use super::trial::{ParticipantRun, TrialRunner, TrialSpec};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use std::collections::{BTreeMap, HashMap};
 use std::io::IsTerminal;
@@ -198,6 +206,7 @@ pub fn write_report(dir: &Path) -> Result<(), StudyError> {
 fn write_report_from(dir: &Path, design: &StudyDesign, rows: &[TrialRow]) -> Result<(), StudyError> {
     let summary = summarize(design, rows);
     write_summary(&dir.join(SUMMARY_CSV), &summary)?;
+    write_strategies(&dir.join(STRATEGIES_CSV), &strategies(rows, &dir.join(TRIALS_CSV))?)?;
     let analysis = analyze(design, rows);
     write_anova(&dir.join(ANOVA_CSV), &analysis.anova)?;
     write_pairwise(&dir.join(PAIRWISE_CSV), &analysis.pairwise)?;
@@ -206,6 +215,17 @@ fn write_report_from(dir: &Path, design: &StudyDesign, rows: &[TrialRow]) -> Res
 }
 
 type Key = (u32, u32);
+
+/// A trial of a participant's session: its trial index, and its position
+/// among the trials to run now (`None`: replayed, its row exists).
+type SessionStep = (usize, Option<usize>);
+
+/// Shard `i/n` holds every trial of the participants whose 0-based index
+/// `p - 1` has `(p - 1) % n == i`: participants learn from trial to trial,
+/// so a participant's session is never split across machines.
+pub fn in_shard(shard: Shard, spec: &TrialSpec) -> bool {
+    shard.contains(spec.participant.saturating_sub(1) as usize)
+}
 
 fn index_by_key(trials: &[TrialSpec]) -> HashMap<Key, usize> {
     trials.iter().enumerate().map(|(i, t)| ((t.participant, t.order_index), i)).collect()
@@ -229,8 +249,11 @@ fn check_row(
             format!("{name} differs from the design's trial ({:?} vs {:?})", row.spec(), trials[index]),
         ));
     }
-    if !shard.contains(index) {
-        return Err(StudyError::mismatch(path, format!("{name} (trial index {index}) is not in shard {shard}")));
+    if !in_shard(shard, &trials[index]) {
+        return Err(StudyError::mismatch(
+            path,
+            format!("{name} (participant {}) is not in shard {shard}", row.participant),
+        ));
     }
     Ok(index)
 }
@@ -244,7 +267,7 @@ fn execute(
     let started = Instant::now();
     let trials = run.design.trials();
     let shard = run.shard.unwrap_or(Shard::WHOLE);
-    let mine: Vec<usize> = (0..trials.len()).filter(|&i| shard.contains(i)).collect();
+    let mine: Vec<usize> = (0..trials.len()).filter(|&i| in_shard(shard, &trials[i])).collect();
     let index_of = index_by_key(&trials);
 
     let csv_path = dir.join(TRIALS_CSV);
@@ -267,23 +290,50 @@ fn execute(
     let mut failed = 0usize;
     let mut written = 0usize;
     if !todo.is_empty() {
+        // Each participant's trials up to their last one to run, in session
+        // order; `Some(k)` marks the k-th trial to run, `None` one to replay.
+        let mut sessions: Vec<(u32, Vec<SessionStep>)> = Vec::new();
+        for &index in &todo_index {
+            let p = trials[index].participant;
+            if sessions.last().is_none_or(|(q, _)| *q != p) {
+                sessions.push((p, Vec::new()));
+            }
+        }
+        for (p, steps) in &mut sessions {
+            let last = todo_index.iter().rev().find(|&&i| trials[i].participant == *p).copied().unwrap_or(0);
+            for i in (0..=last).filter(|&i| trials[i].participant == *p) {
+                steps.push((i, todo_index.binary_search(&i).ok()));
+            }
+        }
         let jobs =
             if options.jobs == 0 { std::thread::available_parallelism().map_or(1, usize::from) } else { options.jobs };
-        let jobs = jobs.clamp(1, todo.len());
+        let jobs = jobs.clamp(1, sessions.len().max(1));
         let next = AtomicUsize::new(0);
         let stop = AtomicBool::new(false);
         let (tx, rx) = mpsc::channel::<(usize, TrialRow, Option<String>)>();
         std::thread::scope(|scope| -> Result<(), StudyError> {
             for _ in 0..jobs {
                 let tx = tx.clone();
-                let (next, stop, todo) = (&next, &stop, &todo);
+                let (next, stop, sessions, trials) = (&next, &stop, &sessions, &trials);
                 scope.spawn(move || {
                     while !stop.load(Ordering::Relaxed) {
-                        let k = next.fetch_add(1, Ordering::Relaxed);
-                        let Some(spec) = todo.get(k) else { break };
-                        let (row, error) = run_one(runner, spec);
-                        if tx.send((k, row, error)).is_err() {
-                            break;
+                        let s = next.fetch_add(1, Ordering::Relaxed);
+                        let Some((participant, steps)) = sessions.get(s) else { break };
+                        let mut session = runner.participant(*participant);
+                        for &(index, k) in steps {
+                            if stop.load(Ordering::Relaxed) {
+                                return;
+                            }
+                            let spec = &trials[index];
+                            match k {
+                                None => replay_one(session.as_mut(), spec),
+                                Some(k) => {
+                                    let (row, error) = run_one(session.as_mut(), spec);
+                                    if tx.send((k, row, error)).is_err() {
+                                        return;
+                                    }
+                                }
+                            }
                         }
                     }
                 });
@@ -373,9 +423,14 @@ fn ran_now_totals(csv_path: &Path, ran: &[&TrialSpec]) -> Result<(usize, f64), S
     Ok(mine.fold((0, 0.0), |(n, s), r| (n + usize::from(!r.completed), s + r.completion_time_s.unwrap_or(0.0))))
 }
 
+/// Replays a trial that already has its row; its errors were recorded then.
+fn replay_one(session: &mut dyn ParticipantRun, spec: &TrialSpec) {
+    let _ = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| session.replay(spec)));
+}
+
 /// Runs one trial; an error or a panic becomes a failed row and a message.
-fn run_one(runner: &dyn TrialRunner, spec: &TrialSpec) -> (TrialRow, Option<String>) {
-    let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| runner.run(spec)));
+fn run_one(session: &mut dyn ParticipantRun, spec: &TrialSpec) -> (TrialRow, Option<String>) {
+    let outcome = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| session.run(spec)));
     match outcome {
         Ok(Ok(result)) => (TrialRow::new(spec, &result), None),
         Ok(Err(error)) => (TrialRow::failed(spec), Some(format!("{error:#}"))),

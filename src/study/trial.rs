@@ -99,7 +99,7 @@ pub struct TrialSpec {
 }
 
 /// What one trial produced.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct TrialResult {
     /// Seconds of simulated time until the goal was met, or until the runner
     /// gave up (time limit) when `completed` is false.
@@ -110,10 +110,55 @@ pub struct TrialResult {
     pub objects_placed: u32,
     /// Physics steps taken.
     pub steps: u64,
+    /// The manner used for the most time (empty when unknown, e.g. replays).
+    pub strategy: String,
+    /// Most hands on the table at once.
+    pub hands_max: u32,
+    /// Most fingertips on the table at once (a flat hand counts five).
+    pub fingers_max: u32,
+    /// Most objects moving at once.
+    pub objects_moving_max: u32,
+    /// Time and net progress per manner: `name:time_s:net_m` joined by `;`.
+    pub manners: String,
 }
 
-/// Runs one trial through the physics. Implemented by the CLI; the harness
-/// calls it from several threads at once, hence `Sync`.
+/// Runs trials through the physics. Implemented by the CLI's runners.
+///
+/// Participants may learn: the harness runs each participant's trials in
+/// their session order on one [`ParticipantRun`] (from [`Self::participant`]),
+/// different participants on different threads (hence `Sync`). A trial of
+/// that participant which this run does not execute (already in
+/// `trials.csv`, or in another shard's folder) is passed to
+/// [`ParticipantRun::replay`] in its place, so a resumed or sharded run
+/// leaves the participant in the same state as an uninterrupted one.
 pub trait TrialRunner: Sync {
+    /// Runs one trial on its own: a runner whose participants learn must
+    /// first bring the participant up to this trial.
     fn run(&self, spec: &TrialSpec) -> anyhow::Result<TrialResult>;
+
+    /// A participant's session. The default keeps no state: every trial
+    /// goes to [`Self::run`].
+    fn participant(&self, _participant: u32) -> Box<dyn ParticipantRun + '_> {
+        Box::new(Stateless(self))
+    }
+}
+
+/// One participant's trials, run in session order.
+pub trait ParticipantRun {
+    /// Runs the participant's next trial.
+    fn run(&mut self, spec: &TrialSpec) -> anyhow::Result<TrialResult>;
+
+    /// A trial of this participant that ran elsewhere or earlier: let it
+    /// shape the participant as it did then. The default does nothing.
+    fn replay(&mut self, _spec: &TrialSpec) -> anyhow::Result<()> {
+        Ok(())
+    }
+}
+
+struct Stateless<'a, R: TrialRunner + ?Sized>(&'a R);
+
+impl<R: TrialRunner + ?Sized> ParticipantRun for Stateless<'_, R> {
+    fn run(&mut self, spec: &TrialSpec) -> anyhow::Result<TrialResult> {
+        self.0.run(spec)
+    }
 }
