@@ -13,6 +13,12 @@
 //! hand-written 2D push (the contact module's exit vector) because rapier then
 //! resolves side pushes, stacking and friction consistently with everything
 //! else; the 2D module remains the exact footprint test used elsewhere.
+//! A prism pushes only from the side: it is never created where it would
+//! overlap an object (rapier would push the object out, possibly upwards: a
+//! flat hand whose centroid missed a ball, its fingers over it, lifted the
+//! ball 3 cm), and it stands taller than any object, so it meets a resting
+//! object at its widest point, where the contact normal is horizontal (a
+//! 3 cm prism met a 6 cm ball below its equator and pushed it up and over).
 //!
 //! On a soft body (cloth, a soft block, a torn piece) the contact grabs the
 //! particle nearest to where its ray lands: rapier attaches that particle to
@@ -30,8 +36,13 @@ use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::{BTreeMap, BTreeSet};
 
-/// Height of the kinematic side-collision prism (m).
-const PRISM_HEIGHT: f32 = 0.03;
+/// Height of the kinematic side-collision prism (m): taller than the
+/// tallest object a hand meets on the table (the steering cylinder on its
+/// platform reaches 11 cm), so its side meets convex objects at their widest.
+const PRISM_HEIGHT: f32 = 0.25;
+/// Height above the surface at which the contact's outline is placed (m):
+/// where a finger beside an object meets it, about the old 3 cm prism's middle.
+const PRISM_TOUCH_HEIGHT: f32 = 0.015;
 
 #[derive(Debug, Clone, Copy)]
 struct Grab {
@@ -174,6 +185,11 @@ impl JointTechnique {
             // is the surface next to it, not the object's side).
             let base_z = support_below(world, screen).map_or(0.0, |h| h.point.z) + 0.001;
             let (target, shape) = pusher_shape(world, c, input, screen, base_z);
+            if overlaps_object(world, &shape, target.extend(base_z)) {
+                // Not here: it would shove the object out, maybe upwards.
+                // The contact may come clear of it next frame.
+                return;
+            }
             let physics = world.physics_mut();
             let body = physics
                 .bodies
@@ -198,7 +214,7 @@ fn pusher_shape(
     screen: Vec2,
     base_z: f32,
 ) -> (Vec2, SharedShape) {
-    let mid = base_z + PRISM_HEIGHT / 2.0;
+    let mid = base_z + PRISM_TOUCH_HEIGHT;
     let target = at_height(world, screen, mid);
     let hull: Vec<Vec2> = c
         .blob
@@ -209,21 +225,36 @@ fn pusher_shape(
     (target, prism(&hull, input.sensor.metres_per_pixel()))
 }
 
+/// Whether a prism of `shape` standing at `base` would overlap a dynamic
+/// scene object.
+fn overlaps_object(world: &World, shape: &SharedShape, base: Vec3) -> bool {
+    let physics = world.physics();
+    let pose = Pose::from_translation(base);
+    (0..world.object_count()).filter(|&i| world.is_active(i)).any(|i| {
+        let dynamic = physics.bodies.get(world.object_body(i)).is_some_and(RigidBody::is_dynamic);
+        dynamic
+            && physics.colliders.get(world.object_collider(i)).is_some_and(|c| {
+                rapier3d::parry::query::intersection_test(&pose, shape.as_ref(), c.position(), c.shape())
+                    .is_ok_and(|hit| hit.intersecting)
+            })
+    })
+}
+
 /// A prism over a contact hull (points relative to its centroid), from the
-/// surface up `PRISM_HEIGHT`; a small cylinder-like box for tiny hulls.
+/// surface up `PRISM_HEIGHT`; a small square one for tiny or degenerate hulls.
 fn prism(hull: &[Vec2], pixel: f32) -> SharedShape {
-    let mut pts = Vec::with_capacity(hull.len() * 2);
-    for p in hull {
-        pts.push(p.extend(0.0));
-        pts.push(p.extend(PRISM_HEIGHT));
-    }
+    let extrude = |outline: &[Vec2]| {
+        let pts: Vec<Vec3> = outline.iter().flat_map(|p| [p.extend(0.0), p.extend(PRISM_HEIGHT)]).collect();
+        SharedShape::convex_hull(&pts)
+    };
     if hull.len() >= 3
-        && let Some(s) = SharedShape::convex_hull(&pts)
+        && let Some(s) = extrude(hull)
     {
         return s;
     }
     let r = hull.iter().map(|p| p.length()).fold(pixel * 2.0, f32::max);
-    SharedShape::cuboid(r, r, PRISM_HEIGHT / 2.0)
+    let square = [Vec2::new(-r, -r), Vec2::new(r, -r), Vec2::new(r, r), Vec2::new(-r, r)];
+    extrude(&square).unwrap_or_else(|| SharedShape::cuboid(r, r, PRISM_HEIGHT / 2.0))
 }
 
 impl Technique for JointTechnique {

@@ -7,6 +7,7 @@
 mod config;
 mod error;
 mod groups;
+mod overlap;
 mod ray;
 mod reach;
 mod soft;
