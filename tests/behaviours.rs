@@ -144,3 +144,21 @@ fn behaviour_table() {
         .collect();
     println!("{} cells miss their expectation:\n{}", failing.len(), failing.join("\n"));
 }
+
+/// Issue 14, item 4, for Joint alone (whatever the other techniques do): a
+/// flat hand whose centroid misses a ball, its fingers over it, gets no prism
+/// under the ball (it once lifted it 3 cm), and a hand edge across the
+/// rolling ball's path still stops it from the side and sends it back,
+/// without lifting it.
+#[test]
+fn joint_prisms_never_lift_a_ball_and_push_it_from_the_side() {
+    use surfacelab::behaviour::Metric;
+    use surfacelab::technique::TechniqueKind;
+    let case = |name: &str| all_cases().iter().find(|c| c.name == name).expect("case");
+    let beside = run_case(case("flat_hand_beside_ball"), TechniqueKind::Joint, root()).expect("run");
+    assert!(beside.get(Metric::MaxLift) <= 0.005, "lifted {:.4} m", beside.get(Metric::MaxLift));
+    let bounce = run_case(case("ball_bounce_hand_edge"), TechniqueKind::Joint, root()).expect("run");
+    assert!(bounce.get(Metric::MaxLift) <= 0.005, "the edge lifted the ball {:.4} m", bounce.get(Metric::MaxLift));
+    assert!(bounce.get(Metric::Bounce) >= 0.05, "came back at only {:.3} m/s", bounce.get(Metric::Bounce));
+    assert!(bounce.get(Metric::MaxAlong) <= 0.534, "passed the edge: {:.3} m", bounce.get(Metric::MaxAlong));
+}

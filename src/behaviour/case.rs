@@ -98,8 +98,8 @@ impl fmt::Display for Check {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let s = self.metric.scale();
         let v = |x: f32| {
-            let x = x * s;
-            if x.fract().abs() < 1e-6 { format!("{x:.0}") } else { format!("{x}") }
+            let text = format!("{:.3}", x * s);
+            text.trim_end_matches('0').trim_end_matches('.').to_string()
         };
         match (self.min, self.max) {
             (Some(a), Some(b)) => write!(f, "{} to {}", v(a), v(b)),

@@ -78,7 +78,16 @@ struct Pusher {
     body: RigidBodyHandle,
     collider: ColliderHandle,
     base_z: f32,
+    /// Share of the contact's hull the prism spans (about its centre): less
+    /// than 1 while the whole hull would overlap an object.
+    scale: f32,
 }
+
+/// Hull scales tried, largest first, when the whole hull would overlap an
+/// object: a forearm landing with one gather piece under its edge still
+/// pushes the others with the rest of its outline (without this, the
+/// `sweep_gather` forearm on the far side never got a prism).
+const PRISM_SCALES: [f32; 4] = [1.0, 0.75, 0.5, 0.25];
 
 #[derive(Debug)]
 pub struct JointTechnique {
@@ -169,13 +178,27 @@ impl JointTechnique {
 
     fn update_pusher(&mut self, world: &mut World, c: &Contact, input: &TechniqueInput<'_>, screen: Vec2) {
         let max_step = self.config.max_contact_speed * input.dt;
-        if let Some(p) = self.pushers.get(&c.id).copied() {
-            let (target, shape) = pusher_shape(world, c, input, screen, p.base_z);
+        if let Some(mut p) = self.pushers.get(&c.id).copied() {
+            let (target, shape) = pusher_shape(world, c, input, screen, p.base_z, p.scale);
+            let cur = world.physics().bodies.get(p.body).map_or(target.extend(p.base_z), RigidBody::translation);
+            let next = (cur.truncate() + clamp_len(target - cur.truncate(), max_step)).extend(p.base_z);
+            // Grow back towards the whole hull only where that overlaps nothing.
+            let grown = PRISM_SCALES.iter().copied().rev().find(|&k| k > p.scale).unwrap_or(p.scale);
+            let shape = if grown > p.scale {
+                let (_, bigger) = pusher_shape(world, c, input, screen, p.base_z, grown);
+                if overlaps_object(world, &bigger, next) {
+                    shape
+                } else {
+                    p.scale = grown;
+                    self.pushers.insert(c.id, p);
+                    bigger
+                }
+            } else {
+                shape
+            };
             let physics = world.physics_mut();
             if let Some(b) = physics.bodies.get_mut(p.body) {
-                let cur = b.translation();
-                let next = cur.truncate() + clamp_len(target - cur.truncate(), max_step);
-                b.set_next_kinematic_translation(next.extend(p.base_z));
+                b.set_next_kinematic_translation(next);
             }
             if let Some(col) = physics.colliders.get_mut(p.collider) {
                 col.set_shape(shape);
@@ -184,12 +207,15 @@ impl JointTechnique {
             // Stand on the surface under the finger (beside an object, that
             // is the surface next to it, not the object's side).
             let base_z = support_below(world, screen).map_or(0.0, |h| h.point.z) + 0.001;
-            let (target, shape) = pusher_shape(world, c, input, screen, base_z);
-            if overlaps_object(world, &shape, target.extend(base_z)) {
-                // Not here: it would shove the object out, maybe upwards.
-                // The contact may come clear of it next frame.
+            // Never where it would overlap an object (rapier would shove the
+            // object out, maybe upwards): the largest part of the hull that
+            // is clear, or none this frame.
+            let Some((scale, target, shape)) = PRISM_SCALES.iter().find_map(|&k| {
+                let (target, shape) = pusher_shape(world, c, input, screen, base_z, k);
+                (!overlaps_object(world, &shape, target.extend(base_z))).then_some((k, target, shape))
+            }) else {
                 return;
-            }
+            };
             let physics = world.physics_mut();
             let body = physics
                 .bodies
@@ -199,20 +225,21 @@ impl JointTechnique {
                 .collision_groups(Layer::Proxy.groups())
                 .build();
             let collider = physics.colliders.insert_with_parent(col, body, &mut physics.bodies);
-            self.pushers.insert(c.id, Pusher { body, collider, base_z });
+            self.pushers.insert(c.id, Pusher { body, collider, base_z, scale });
         }
     }
 }
 
 /// Where a pusher standing at `base_z` goes and its shape: the contact's
-/// hull where it appears at the prism's mid-height (perspective), relative
-/// to the contact's own point there.
+/// hull where it appears at touch height (perspective), relative to the
+/// contact's own point there, scaled by `scale` about that point.
 fn pusher_shape(
     world: &World,
     c: &Contact,
     input: &TechniqueInput<'_>,
     screen: Vec2,
     base_z: f32,
+    scale: f32,
 ) -> (Vec2, SharedShape) {
     let mid = base_z + PRISM_TOUCH_HEIGHT;
     let target = at_height(world, screen, mid);
@@ -220,7 +247,9 @@ fn pusher_shape(
         .blob
         .hull
         .iter()
-        .map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target)
+        .map(|q| {
+            (at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target) * scale
+        })
         .collect();
     (target, prism(&hull, input.sensor.metres_per_pixel()))
 }
