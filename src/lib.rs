@@ -21,6 +21,7 @@
 //! - [`cli`]: the command line, which only wires these together.
 
 pub mod app;
+pub mod behaviour;
 pub mod cli;
 pub mod contact;
 pub mod goal;

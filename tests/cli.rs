@@ -303,3 +303,24 @@ fn study_frames_writes_every_frame_of_every_trial() {
     }
     assert!(std::fs::read_to_string(out.join("run.toml")).expect("run.toml").contains("frames = true"));
 }
+
+#[test]
+fn behaviours_prints_the_table_and_checks_it() {
+    // One case under one technique: the markdown header, its row, and the
+    // measured lift (Joint's prisms never lift the ball: under 5 mm).
+    let o = bin()
+        .args(["behaviours", "--case", "flat_hand_beside_ball", "--techniques", "joint", "--check"])
+        .output()
+        .expect("runs");
+    let out = text(&o);
+    assert!(o.status.success(), "{out}");
+    assert!(out.contains("| behaviour | measure | works when | joint |"), "{out}");
+    let row = out.lines().find(|l| l.starts_with("| flat_hand_beside_ball | max lift (mm)")).expect("the case's row");
+    let cell = row.split('|').nth(4).expect("joint cell").trim();
+    let lift: f32 = cell.split_whitespace().next().expect("value").parse().expect("a number");
+    assert!(lift <= 5.0 && cell.ends_with("ok"), "{row}");
+    // An unknown case is bad input.
+    let o = bin().args(["behaviours", "--case", "no_such_case"]).output().expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("--case"), "{}", text(&o));
+}

@@ -2,6 +2,7 @@
 //! arguments are parsed once into a validated struct; the work lives in the
 //! library modules, this layer only wires them together.
 
+mod behaviours;
 mod contact;
 mod demo;
 mod doctor;
@@ -37,6 +38,8 @@ pub enum Command {
     Contact(ContactArgs),
     /// Measure what accuracy costs in time and write the trade-off report.
     Tradeoff(TradeoffArgs),
+    /// Run the paper's manipulations (the behaviour suite) and print the behaviour × technique table.
+    Behaviours(BehavioursArgs),
     /// Print the GPU adapter, the display and the version.
     Doctor,
 }
@@ -230,6 +233,22 @@ pub struct TradeoffArgs {
     pub quick: bool,
 }
 
+#[derive(Debug, Args)]
+pub struct BehavioursArgs {
+    /// Comma-separated techniques (default: every technique but direct).
+    #[arg(long, value_delimiter = ',', value_enum)]
+    pub techniques: Option<Vec<TechniqueKind>>,
+    /// Only the cases whose name contains this text.
+    #[arg(long, value_name = "TEXT")]
+    pub case: Option<String>,
+    /// Runs at a time (0 = one per core).
+    #[arg(long, default_value_t = 0)]
+    pub jobs: usize,
+    /// Exit 1 when a cell fails its expectation.
+    #[arg(long)]
+    pub check: bool,
+}
+
 /// Exit code for bad input and for features that have not landed yet.
 pub const EXIT_USAGE: u8 = 2;
 
@@ -275,6 +294,7 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
         Command::Screenshot(args) => screenshot::run(&args),
         Command::Contact(args) => Ok(contact::run(&args)),
         Command::Tradeoff(args) => tradeoff::run(&args),
+        Command::Behaviours(args) => behaviours::run(&args),
     }
 }
 

@@ -13,6 +13,12 @@
 //! hand-written 2D push (the contact module's exit vector) because rapier then
 //! resolves side pushes, stacking and friction consistently with everything
 //! else; the 2D module remains the exact footprint test used elsewhere.
+//! A prism pushes only from the side: it is never created where it would
+//! overlap an object (rapier would push the object out, possibly upwards: a
+//! flat hand whose centroid missed a ball, its fingers over it, lifted the
+//! ball 3 cm), and it stands taller than any object, so it meets a resting
+//! object at its widest point, where the contact normal is horizontal (a
+//! 3 cm prism met a 6 cm ball below its equator and pushed it up and over).
 //!
 //! On a soft body (cloth, a soft block, a torn piece) the contact grabs the
 //! particle nearest to where its ray lands: rapier attaches that particle to
@@ -30,8 +36,13 @@ use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::{BTreeMap, BTreeSet};
 
-/// Height of the kinematic side-collision prism (m).
-const PRISM_HEIGHT: f32 = 0.03;
+/// Height of the kinematic side-collision prism (m): taller than the
+/// tallest object a hand meets on the table (the steering cylinder on its
+/// platform reaches 11 cm), so its side meets convex objects at their widest.
+const PRISM_HEIGHT: f32 = 0.25;
+/// Height above the surface at which the contact's outline is placed (m):
+/// where a finger beside an object meets it, about the old 3 cm prism's middle.
+const PRISM_TOUCH_HEIGHT: f32 = 0.015;
 
 #[derive(Debug, Clone, Copy)]
 struct Grab {
@@ -67,7 +78,16 @@ struct Pusher {
     body: RigidBodyHandle,
     collider: ColliderHandle,
     base_z: f32,
+    /// Share of the contact's hull the prism spans (about its centre): less
+    /// than 1 while the whole hull would overlap an object.
+    scale: f32,
 }
+
+/// Hull scales tried, largest first, when the whole hull would overlap an
+/// object: a forearm landing with one gather piece under its edge still
+/// pushes the others with the rest of its outline (without this, the
+/// `sweep_gather` forearm on the far side never got a prism).
+const PRISM_SCALES: [f32; 4] = [1.0, 0.75, 0.5, 0.25];
 
 #[derive(Debug)]
 pub struct JointTechnique {
@@ -158,13 +178,27 @@ impl JointTechnique {
 
     fn update_pusher(&mut self, world: &mut World, c: &Contact, input: &TechniqueInput<'_>, screen: Vec2) {
         let max_step = self.config.max_contact_speed * input.dt;
-        if let Some(p) = self.pushers.get(&c.id).copied() {
-            let (target, shape) = pusher_shape(world, c, input, screen, p.base_z);
+        if let Some(mut p) = self.pushers.get(&c.id).copied() {
+            let (target, shape) = pusher_shape(world, c, input, screen, p.base_z, p.scale);
+            let cur = world.physics().bodies.get(p.body).map_or(target.extend(p.base_z), RigidBody::translation);
+            let next = (cur.truncate() + clamp_len(target - cur.truncate(), max_step)).extend(p.base_z);
+            // Grow back towards the whole hull only where that overlaps nothing.
+            let grown = PRISM_SCALES.iter().copied().rev().find(|&k| k > p.scale).unwrap_or(p.scale);
+            let shape = if grown > p.scale {
+                let (_, bigger) = pusher_shape(world, c, input, screen, p.base_z, grown);
+                if overlaps_object(world, &bigger, next) {
+                    shape
+                } else {
+                    p.scale = grown;
+                    self.pushers.insert(c.id, p);
+                    bigger
+                }
+            } else {
+                shape
+            };
             let physics = world.physics_mut();
             if let Some(b) = physics.bodies.get_mut(p.body) {
-                let cur = b.translation();
-                let next = cur.truncate() + clamp_len(target - cur.truncate(), max_step);
-                b.set_next_kinematic_translation(next.extend(p.base_z));
+                b.set_next_kinematic_translation(next);
             }
             if let Some(col) = physics.colliders.get_mut(p.collider) {
                 col.set_shape(shape);
@@ -173,7 +207,15 @@ impl JointTechnique {
             // Stand on the surface under the finger (beside an object, that
             // is the surface next to it, not the object's side).
             let base_z = support_below(world, screen).map_or(0.0, |h| h.point.z) + 0.001;
-            let (target, shape) = pusher_shape(world, c, input, screen, base_z);
+            // Never where it would overlap an object (rapier would shove the
+            // object out, maybe upwards): the largest part of the hull that
+            // is clear, or none this frame.
+            let Some((scale, target, shape)) = PRISM_SCALES.iter().find_map(|&k| {
+                let (target, shape) = pusher_shape(world, c, input, screen, base_z, k);
+                (!overlaps_object(world, &shape, target.extend(base_z))).then_some((k, target, shape))
+            }) else {
+                return;
+            };
             let physics = world.physics_mut();
             let body = physics
                 .bodies
@@ -183,47 +225,65 @@ impl JointTechnique {
                 .collision_groups(Layer::Proxy.groups())
                 .build();
             let collider = physics.colliders.insert_with_parent(col, body, &mut physics.bodies);
-            self.pushers.insert(c.id, Pusher { body, collider, base_z });
+            self.pushers.insert(c.id, Pusher { body, collider, base_z, scale });
         }
     }
 }
 
 /// Where a pusher standing at `base_z` goes and its shape: the contact's
-/// hull where it appears at the prism's mid-height (perspective), relative
-/// to the contact's own point there.
+/// hull where it appears at touch height (perspective), relative to the
+/// contact's own point there, scaled by `scale` about that point.
 fn pusher_shape(
     world: &World,
     c: &Contact,
     input: &TechniqueInput<'_>,
     screen: Vec2,
     base_z: f32,
+    scale: f32,
 ) -> (Vec2, SharedShape) {
-    let mid = base_z + PRISM_HEIGHT / 2.0;
+    let mid = base_z + PRISM_TOUCH_HEIGHT;
     let target = at_height(world, screen, mid);
     let hull: Vec<Vec2> = c
         .blob
         .hull
         .iter()
-        .map(|q| at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target)
+        .map(|q| {
+            (at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target) * scale
+        })
         .collect();
     (target, prism(&hull, input.sensor.metres_per_pixel()))
 }
 
+/// Whether a prism of `shape` standing at `base` would overlap a dynamic
+/// scene object.
+fn overlaps_object(world: &World, shape: &SharedShape, base: Vec3) -> bool {
+    let physics = world.physics();
+    let pose = Pose::from_translation(base);
+    (0..world.object_count()).filter(|&i| world.is_active(i)).any(|i| {
+        let dynamic = physics.bodies.get(world.object_body(i)).is_some_and(RigidBody::is_dynamic);
+        dynamic
+            && physics.colliders.get(world.object_collider(i)).is_some_and(|c| {
+                rapier3d::parry::query::intersection_test(&pose, shape.as_ref(), c.position(), c.shape())
+                    .is_ok_and(|hit| hit.intersecting)
+            })
+    })
+}
+
 /// A prism over a contact hull (points relative to its centroid), from the
-/// surface up `PRISM_HEIGHT`; a small cylinder-like box for tiny hulls.
+/// surface up `PRISM_HEIGHT`; a small square one for tiny or degenerate hulls.
 fn prism(hull: &[Vec2], pixel: f32) -> SharedShape {
-    let mut pts = Vec::with_capacity(hull.len() * 2);
-    for p in hull {
-        pts.push(p.extend(0.0));
-        pts.push(p.extend(PRISM_HEIGHT));
-    }
+    let extrude = |outline: &[Vec2]| {
+        let pts: Vec<Vec3> = outline.iter().flat_map(|p| [p.extend(0.0), p.extend(PRISM_HEIGHT)]).collect();
+        SharedShape::convex_hull(&pts)
+    };
     if hull.len() >= 3
-        && let Some(s) = SharedShape::convex_hull(&pts)
+        && let Some(s) = extrude(hull)
     {
         return s;
     }
     let r = hull.iter().map(|p| p.length()).fold(pixel * 2.0, f32::max);
-    SharedShape::cuboid(r, r, PRISM_HEIGHT / 2.0)
+    let square = [Vec2::new(-r, -r), Vec2::new(r, -r), Vec2::new(r, r), Vec2::new(-r, r)];
+    extrude(&square).unwrap_or_else(|| SharedShape::cuboid(r, r, PRISM_HEIGHT / 2.0))
 }
 
 impl Technique for JointTechnique {
