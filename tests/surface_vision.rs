@@ -5,10 +5,10 @@ use std::path::{Path, PathBuf};
 
 use surfacelab::surface::{
     Button, ContactImage, Gesture, GestureRecorder, Hand, HandKind, Modifiers, Mouse, MouseEvent, Patch, RasterParams,
-    Sensor, Shape, rasterize, rasterize_patches,
+    Sensor, Shape, rasterize, rasterize_into, rasterize_patches, rasterize_rows,
 };
 use surfacelab::vision::{
-    BlockMatcher, Pipeline, VisionFrame, VisionParams, find_blobs, signed_area, sobel_at, threshold,
+    BlockMatcher, FlowInterest, Pipeline, VisionFrame, VisionParams, find_blobs, signed_area, sobel_at, threshold,
 };
 
 fn sensor() -> Sensor {
@@ -596,4 +596,40 @@ fn the_twist_turns_the_contacts_and_the_drag_moves_ten_centimetres() {
     let (a, b) = (at(0.0), at(1.5));
     assert!((b[0] - a[0] - 0.1).abs() < 0.001 && (b[1] - a[1]).abs() < 0.001, "{a:?} -> {b:?}");
     assert!((a[0] + 0.05).abs() < 0.002 && a[1].abs() < 0.002);
+}
+
+// --- the row-restricted path the session takes --------------------------------
+
+/// Rasterizing and analysing only the rows the hands light gives exactly
+/// the image and the vision frame that whole-image passes give, frame after
+/// frame, as hands appear, move across the table, change and lift.
+#[test]
+fn row_restricted_frames_equal_whole_image_frames() {
+    let s = sensor();
+    let params = RasterParams::default();
+    let (mut full_img, mut rows_img) = (ContactImage::default(), ContactImage::default());
+    let (mut full, mut rows) = (Pipeline::default(), Pipeline::default());
+    let mut lit = 0..s.height_px as usize;
+    for frame in 0..90 {
+        let t = frame as f32 / 30.0;
+        let mut hands = Vec::new();
+        if frame < 60 {
+            hands.push(Hand::new(1, HandKind::FlatHand, -0.3 + 0.02 * frame as f32, -0.25 + 0.008 * frame as f32));
+        }
+        if (20..80).contains(&frame) {
+            let mut h = Hand::new(2, HandKind::Fingertips(2), 0.2, 0.3 - 0.01 * (frame - 20) as f32);
+            h.pose.angle = t;
+            hands.push(h);
+        }
+        rasterize_into(&hands, &s, &params, &mut full_img);
+        lit = rasterize_rows(&hands, &s, &params, &mut rows_img, lit);
+        assert_eq!(full_img, rows_img, "frame {frame}: images differ");
+        assert!(
+            (0..s.height_px as usize).filter(|y| !lit.contains(y)).all(|y| rows_img.row(y).iter().all(|&p| p == 0)),
+            "frame {frame}: a lit pixel outside the rows reported"
+        );
+        let a = full.process_with(&full_img, &FlowInterest::All);
+        let b = rows.process_rows(&rows_img, lit.clone(), &FlowInterest::All);
+        assert_eq!((a.contacts, a.edges), (b.contacts, b.edges), "frame {frame}: vision differs");
+    }
 }

@@ -4,7 +4,7 @@
 
 use crate::goal::{Progress, Tracker};
 use crate::scene::Scene;
-use crate::surface::{ContactImage, Gesture, Hand, RasterParams, Sensor, rasterize_into};
+use crate::surface::{ContactImage, Gesture, Hand, RasterParams, Sensor, rasterize_rows};
 use crate::technique::{
     ConfigError, Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind,
 };
@@ -79,6 +79,8 @@ pub struct Session {
     sensor: Sensor,
     raster: RasterParams,
     image: ContactImage,
+    /// Rows of `image` the last frame may have lit.
+    lit: std::ops::Range<usize>,
     frame: VisionFrame,
     tracker: Tracker,
     progress: Progress,
@@ -120,6 +122,7 @@ impl Session {
             sensor,
             raster: options.raster,
             image: ContactImage::new(sensor.width_px as usize, sensor.height_px as usize),
+            lit: 0..sensor.height_px as usize,
             frame: VisionFrame::default(),
             tracker: Tracker::new(scene),
             progress: Progress::default(),
@@ -135,10 +138,12 @@ impl Session {
     pub fn step(&mut self, hands: &[Hand]) -> Result<Progress, SessionError> {
         let t0 = Instant::now();
         let measure = self.measure_penetration;
-        rasterize_into(hands, &self.sensor, &self.raster, &mut self.image);
+        // Only the rows the hands light are cleared, labelled and copied
+        // (see `rasterize_rows`).
+        self.lit = rasterize_rows(hands, &self.sensor, &self.raster, &mut self.image, self.lit.clone());
         let t1 = Instant::now();
         let interest = self.technique.flow_interest(&self.world, &self.sensor, self.world.dt());
-        self.frame = self.vision.process_with(&self.image, &interest);
+        self.frame = self.vision.process_rows(&self.image, self.lit.clone(), &interest);
         let t2 = Instant::now();
         let input = TechniqueInput { frame: &self.frame, sensor: &self.sensor, dt: self.world.dt() };
         self.technique.apply(&input, &mut self.world)?;

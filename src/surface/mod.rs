@@ -13,6 +13,6 @@ pub use gesture::{FORMAT, Gesture, GestureError, GestureRecorder, Key, Track, VE
 pub use hand::{Hand, HandKind, Pose};
 pub use image::ContactImage;
 pub use mouse::{Button, DEGREES_PER_NOTCH, MAX_SPREAD, Modifiers, Mouse, MouseEvent, SPREAD_PER_NOTCH};
-pub use raster::{Noise, RasterParams, rasterize, rasterize_into, rasterize_patches};
+pub use raster::{Noise, RasterParams, rasterize, rasterize_into, rasterize_patches, rasterize_rows};
 pub use sensor::Sensor;
 pub use shape::{Patch, Prepared, Shape};

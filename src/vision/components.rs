@@ -8,6 +8,7 @@
 //! over runs, so no label image is needed.
 
 use crate::surface::ContactImage;
+use std::ops::Range;
 
 use super::contour::trace_contour;
 use super::hull::convex_hull;
@@ -177,6 +178,12 @@ fn find(parent: &mut [u32], mut i: u32) -> u32 {
 /// ordered by their first pixel in raster order. `image` supplies the grey
 /// levels (it must have the mask's size).
 pub fn find_blobs(image: &ContactImage, mask: &Mask, min_area: u32) -> Vec<Blob> {
+    find_blobs_in_rows(image, mask, min_area, 0..mask.height)
+}
+
+/// [`find_blobs`] for a mask that is clear outside `rows`: only those rows
+/// are scanned. The result is the same as [`find_blobs`]'s.
+pub fn find_blobs_in_rows(image: &ContactImage, mask: &Mask, min_area: u32, rows: Range<usize>) -> Vec<Blob> {
     let (w, h) = (mask.width, mask.height);
     if w == 0 || h == 0 || mask.bits.len() != w * h || image.pixels.len() != w * h {
         return Vec::new();
@@ -185,7 +192,7 @@ pub fn find_blobs(image: &ContactImage, mask: &Mask, min_area: u32) -> Vec<Blob>
     let mut runs: Vec<Run> = Vec::new();
     let mut parent: Vec<u32> = Vec::new();
     let mut prev_start = 0usize;
-    for y in 0..h {
+    for y in rows.start.min(h)..rows.end.min(h) {
         let start = runs.len();
         let row = &mask.bits[y * w..(y + 1) * w];
         // Most rows are empty glass: an OR over the row vectorises and

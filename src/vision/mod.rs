@@ -10,11 +10,11 @@ mod sobel;
 mod threshold;
 mod tracking;
 
-pub use components::{BBox, Blob, Ellipse, Run, find_blobs};
+pub use components::{BBox, Blob, Ellipse, Run, find_blobs, find_blobs_in_rows};
 pub use contour::trace_contour;
 pub use flow::{BlockMatcher, MAX_BLOCK};
 pub use hull::{convex_hull, signed_area};
 pub use pipeline::{Contact, EdgeSample, FlowInterest, Pipeline, StageTimings, VisionFrame, VisionParams, rigid_guess};
 pub use sobel::{EDGE_PAD, EdgePixel, find_edges, gradient_magnitude, sobel_at};
-pub use threshold::{Mask, threshold, threshold_into};
+pub use threshold::{Mask, threshold, threshold_into, threshold_rows};
 pub use tracking::{Tracked, Tracker, TrackerParams};

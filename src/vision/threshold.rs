@@ -1,6 +1,7 @@
 //! Thresholding: which pixels count as touching.
 
 use crate::surface::ContactImage;
+use std::ops::Range;
 
 /// A binary image the size of the contact image: 1 where touching, 0 not.
 /// Bytes rather than bits: the run scan in `components` reads eight of them
@@ -42,6 +43,25 @@ pub fn threshold_into(image: &ContactImage, level: u8, mask: &mut Mask) {
     mask.height = image.height;
     mask.bits.clear();
     mask.bits.extend(image.pixels.iter().map(|&p| u8::from(p >= level)));
+}
+
+/// Like [`threshold_into`] for a `mask` already made from a frame of the
+/// same size that differed from `image` only in `rows`: only those rows
+/// are thresholded again. Falls back to the whole image when the sizes
+/// differ or `level` is 0 (which sets every pixel).
+pub fn threshold_rows(image: &ContactImage, level: u8, mask: &mut Mask, rows: Range<usize>) {
+    let w = image.width;
+    if level == 0 || mask.width != w || mask.height != image.height || mask.bits.len() != image.pixels.len() {
+        threshold_into(image, level, mask);
+        return;
+    }
+    let (r0, r1) = (rows.start.min(image.height), rows.end.min(image.height));
+    if r0 >= r1 {
+        return;
+    }
+    for (m, &p) in mask.bits[r0 * w..r1 * w].iter_mut().zip(&image.pixels[r0 * w..r1 * w]) {
+        *m = u8::from(p >= level);
+    }
 }
 
 #[cfg(test)]
