@@ -1,5 +1,6 @@
 //! `surfacelab study`: scripted or replayed participants → trials.csv,
-//! summary.csv, anova.csv, pairwise.csv, figure.png/svg, report.md/html and
+//! summary.csv, anova.csv, pairwise.csv, strategies.csv, figure.png/svg,
+//! report.md/html and
 //! run.toml in one folder; with `--seeds N`, N such folders and findings.csv.
 
 use super::{StudyAction, StudyArgs};
@@ -44,7 +45,7 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
     print_outcome(&outcome, cpu_since(cpu_before));
     if outcome.reported {
         println!(
-            "  trials.csv, summary.csv, anova.csv, pairwise.csv, figure.png, figure.svg, report.md, report.html, run.toml"
+            "  trials.csv, summary.csv, anova.csv, pairwise.csv, strategies.csv, figure.png, figure.svg, report.md, report.html, run.toml"
         );
     } else {
         println!("  trials.csv, run.toml (the rest once every trial of an unsharded run has a row)");
