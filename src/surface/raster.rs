@@ -60,7 +60,7 @@ pub fn rasterize_into(hands: &[Hand], sensor: &Sensor, params: &RasterParams, im
 /// As [`rasterize_into`], for an image that is black outside the rows
 /// `lit` (what the previous call returned): only those rows are cleared.
 /// Returns the rows this frame lit (possibly empty), for the next call and
-/// for [`crate::vision::Pipeline::process_rows`].
+/// for the vision pipeline (its `process_rows`).
 ///
 /// Why: whole hands are drawn every frame of a study, and clearing,
 /// thresholding, labelling and copying the whole 640×480 image each frame
