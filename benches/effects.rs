@@ -10,11 +10,11 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use rapier3d::prelude::PhysicsWorld;
 use std::time::Duration;
+use surfacelab::pipeline::surface::{Hand, HandKind};
+use surfacelab::pipeline::technique::TechniqueKind;
+use surfacelab::pipeline::world::World;
 use surfacelab::scene::{self, Effect, EffectSet, Scene};
 use surfacelab::session::{Session, SessionOptions};
-use surfacelab::surface::{Hand, HandKind};
-use surfacelab::technique::TechniqueKind;
-use surfacelab::world::World;
 
 fn without(effects: EffectSet, e: Effect) -> EffectSet {
     effects.iter().filter(|x| *x != e).collect()

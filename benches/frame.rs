@@ -6,10 +6,10 @@
 //!
 //! `cargo bench --bench frame`
 
+use surfacelab::pipeline::surface::{Hand, HandKind};
+use surfacelab::pipeline::technique::{TechniqueConfig, TechniqueKind};
 use surfacelab::scene;
 use surfacelab::session::{Session, SessionOptions, StageTimes};
-use surfacelab::surface::{Hand, HandKind};
-use surfacelab::technique::{TechniqueConfig, TechniqueKind};
 
 const WARMUP: usize = 60;
 const FRAMES: usize = 600;

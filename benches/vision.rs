@@ -8,8 +8,8 @@
 use std::hint::black_box;
 
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
-use surfacelab::surface::{ContactImage, Hand, HandKind, RasterParams, Sensor, rasterize, rasterize_into};
-use surfacelab::vision::{
+use surfacelab::pipeline::surface::{ContactImage, Hand, HandKind, RasterParams, Sensor, rasterize, rasterize_into};
+use surfacelab::pipeline::vision::{
     BlockMatcher, Mask, Pipeline, Tracker, TrackerParams, VisionParams, find_blobs, find_edges, gradient_magnitude,
     rigid_guess, threshold_into,
 };

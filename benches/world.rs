@@ -7,8 +7,8 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use glam::Vec3;
+use surfacelab::pipeline::world::World;
 use surfacelab::scene::{self, EffectSet};
-use surfacelab::world::World;
 
 fn stir(w: &mut World, k: usize) {
     let t = k as f32 / 60.0;

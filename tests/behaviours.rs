@@ -1,7 +1,7 @@
 //! The behaviour suite (issue 14): the paper's manipulations, each a scene
 //! file plus a gesture file replayed through the real pipeline under every
 //! technique, asserted against the paper's expectation. The cases, their
-//! physical thresholds and the paper's words live in `src/behaviour/cases.rs`
+//! physical thresholds and the paper's words live in `src/harness/behaviour/cases.rs`
 //! (one definition for these tests, `surfacelab behaviours` and the demo).
 //!
 //! One test per case, so `cargo test --release --test behaviours ball_spin`
@@ -12,7 +12,9 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::sync::OnceLock;
-use surfacelab::behaviour::{Case, Expectation, GAPS, Outcome, Verdict, cases, cells, markdown, run_case, suite_kinds};
+use surfacelab::harness::behaviour::{
+    Case, Expectation, GAPS, Outcome, Verdict, cases, cells, markdown, run_case, suite_kinds,
+};
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -118,7 +120,7 @@ fn every_case_has_a_test_and_its_files() {
     }
 }
 
-/// The known gaps (src/behaviour/gaps.rs) are exactly the cells that miss
+/// The known gaps (src/harness/behaviour/gaps.rs) are exactly the cells that miss
 /// today: each names a case, technique and measure the suite has, and each
 /// still misses its check. One that starts to pass must come off the list,
 /// so the list only shrinks.
@@ -171,7 +173,7 @@ fn behaviour_table() {
         })
         .collect();
     println!("{} cells miss their expectation:\n{}", failing.len(), failing.join("\n"));
-    println!("{} known gaps (src/behaviour/gaps.rs)", GAPS.len());
+    println!("{} known gaps (src/harness/behaviour/gaps.rs)", GAPS.len());
 }
 
 /// Issue 14, item 4, for Joint alone (whatever the other techniques do): a
@@ -181,8 +183,8 @@ fn behaviour_table() {
 /// without lifting it.
 #[test]
 fn joint_prisms_never_lift_a_ball_and_push_it_from_the_side() {
-    use surfacelab::behaviour::Metric;
-    use surfacelab::technique::TechniqueKind;
+    use surfacelab::harness::behaviour::Metric;
+    use surfacelab::pipeline::technique::TechniqueKind;
     let case = |name: &str| all_cases().iter().find(|c| c.name == name).expect("case");
     let beside = run_case(case("flat_hand_beside_ball"), TechniqueKind::Joint, root()).expect("run");
     assert!(beside.get(Metric::MaxLift) <= 0.005, "lifted {:.4} m", beside.get(Metric::MaxLift));

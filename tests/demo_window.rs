@@ -240,7 +240,7 @@ dwell_s = 0.5
     assert!(out.status.success(), "{report}");
     let csv = std::fs::read_to_string(dir.join("trials.csv")).unwrap_or_else(|e| panic!("trials.csv: {e}\n{report}"));
     let mut lines = csv.lines();
-    assert_eq!(lines.next(), Some(surfacelab::study::COLUMNS.join(",").as_str()), "the study's header");
+    assert_eq!(lines.next(), Some(surfacelab::harness::study::COLUMNS.join(",").as_str()), "the study's header");
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 2, "two trials, two rows:\n{csv}");
     for (i, row) in rows.iter().enumerate() {
@@ -257,7 +257,7 @@ dwell_s = 0.5
     // Each trial's input was recorded where `study --replay` looks for it.
     for r in 1..=2 {
         let g = dir.join(format!("out/gestures/p7/box_proxy_on_r{r}.toml"));
-        let gesture = surfacelab::surface::Gesture::load(&g).unwrap_or_else(|e| panic!("{e}\n{report}"));
+        let gesture = surfacelab::input::Gesture::load(&g).unwrap_or_else(|e| panic!("{e}\n{report}"));
         assert_eq!(gesture.tracks().len(), 1, "the scripted flat hand");
     }
 }

@@ -9,10 +9,10 @@
 //! persist at a given depth".
 
 use glam::Vec2;
+use surfacelab::input::Gesture;
+use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
 use surfacelab::session::{Session, SessionOptions};
-use surfacelab::surface::Gesture;
-use surfacelab::technique::TechniqueKind;
 
 fn asset(path: &str) -> String {
     format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))

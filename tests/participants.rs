@@ -4,11 +4,11 @@
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use surfacelab::participant::{Learner, Manner, PlannerOptions, ScriptedRunner, Skill, run_scripted_with};
+use surfacelab::harness::participant::{Learner, Manner, PlannerOptions, ScriptedRunner, Skill, run_scripted_with};
+use surfacelab::harness::study::output::{RUN_TOML, TRIALS_CSV};
+use surfacelab::harness::study::{RunOptions, StudyDesign, Technique, resume_study, run_study};
+use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
-use surfacelab::study::output::{RUN_TOML, TRIALS_CSV};
-use surfacelab::study::{RunOptions, StudyDesign, Technique, resume_study, run_study};
-use surfacelab::technique::TechniqueKind;
 
 fn scratch(name: &str) -> PathBuf {
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("participants").join(name);
@@ -85,8 +85,10 @@ fn practice_tries_several_manners_and_what_is_learned_carries_over() {
     let scene = scene::load("sorting").expect("sorting");
     let skill = Skill::draw(11);
     let fresh = Learner::new(Manner::Fingertips(1));
-    let practice =
-        PlannerOptions { explore: surfacelab::participant::learner::EXPLORE_PRACTICE, ..PlannerOptions::default() };
+    let practice = PlannerOptions {
+        explore: surfacelab::harness::participant::learner::EXPLORE_PRACTICE,
+        ..PlannerOptions::default()
+    };
     let (o, learned) =
         run_scripted_with(&scene, TechniqueKind::Proxy, true, skill, 5, 120.0, fresh.clone(), practice, None)
             .expect("practice");
@@ -128,8 +130,10 @@ fn every_study_task_is_completed_with_every_technique() {
     // cells: nothing here is tuned per technique. (A fresh participant
     // without practice keeps to the index finger, which does not steer the
     // cylinder under Particle within the limit for seeds 1-3.)
-    let practice =
-        PlannerOptions { explore: surfacelab::participant::learner::EXPLORE_PRACTICE, ..PlannerOptions::default() };
+    let practice = PlannerOptions {
+        explore: surfacelab::harness::participant::learner::EXPLORE_PRACTICE,
+        ..PlannerOptions::default()
+    };
     let mut missed = Vec::new();
     for task in ["positioning", "sorting", "steering"] {
         let scene = scene::load(task).expect("task");

@@ -1,5 +1,5 @@
 //! How hard a particle presses, measured in rapier: the figures behind the
-//! comment in `src/technique/particle.rs` (where it places particles).
+//! comment in `src/pipeline/technique/particle.rs` (where it places particles).
 //!
 //! Sixteen particles (0.2 kg, pressing 0.08 N each, the defaults) rest on a
 //! 10 cm box; the normal impulse they get from the box in each step,
@@ -8,8 +8,8 @@
 
 use glam::Vec3;
 use rapier3d::prelude::*;
+use surfacelab::pipeline::world::{Layer, World};
 use surfacelab::scene;
-use surfacelab::world::{Layer, World};
 
 const SCENE: &str = r#"
 name = "press"

@@ -6,12 +6,13 @@
 //! refreshes them. A machine with no GPU adapter fails with the Mesa
 //! install hint (it never skips).
 
+use surfacelab::app::scene_view::{self, ViewOptions};
+use surfacelab::input::Gesture;
+use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::render::snapshot::{SnapshotDir, Tolerance};
-use surfacelab::render::{self, GpuContext, ViewOptions};
+use surfacelab::render::{self, GpuContext};
 use surfacelab::scene;
 use surfacelab::session::{Session, SessionOptions};
-use surfacelab::surface::Gesture;
-use surfacelab::technique::TechniqueKind;
 
 /// Set on lavapipe, "llvmpipe (LLVM 15.0.6, 256 bits)": 12/255 per channel,
 /// at most 0.5% of pixels (antialiased edges and shadow-map texels differ
@@ -74,7 +75,7 @@ fn each_task_scene_matches_its_golden_image() {
     let gpu = gpu();
     for task in ["positioning", "sorting", "steering"] {
         let s = session_at(&format!("tasks/{task}.toml"), TechniqueKind::Proxy, None, 0.25);
-        let img = render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1)
+        let img = render::render_to_image(&gpu, &scene_view::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1)
             .expect("render");
         snapshots().check(&format!("task_{task}"), &img, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
     }
@@ -88,12 +89,12 @@ fn feedback_on_and_off_differ_exactly_by_red_feedback_for_every_technique() {
         let s = session_at("tasks/sorting.toml", kind, Some(DRAG_RED_BOX), 0.6);
         let off = render::render_to_image(
             &gpu,
-            &render::draw_list(&s, ViewOptions { feedback: false, contact_overlay: false }),
+            &scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: false }),
             SIZE.0,
             SIZE.1,
         )
         .expect("render");
-        let on_list = render::draw_list(&s, ViewOptions { feedback: true, contact_overlay: false });
+        let on_list = scene_view::draw_list(&s, ViewOptions { feedback: true, contact_overlay: false });
         assert!(
             !on_list.feedback.is_empty() || kind == TechniqueKind::Direct,
             "{kind}: no feedback geometry mid-gesture"
@@ -123,11 +124,11 @@ fn the_contact_overlay_shadows_where_the_hands_are() {
     let gpu = gpu();
     let s =
         session_at("tasks/sorting.toml", TechniqueKind::Particle, Some("assets/gestures/flat_hand_sweep.toml"), 0.5);
-    let plain =
-        render::render_to_image(&gpu, &render::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1).expect("render");
+    let plain = render::render_to_image(&gpu, &scene_view::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1)
+        .expect("render");
     let shadow = render::render_to_image(
         &gpu,
-        &render::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true }),
+        &scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true }),
         SIZE.0,
         SIZE.1,
     )

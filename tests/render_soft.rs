@@ -6,12 +6,13 @@
 //! `NAME.new.png` and `NAME.diff.png` beside them; `UPDATE_SNAPSHOTS=1`
 //! refreshes them.
 
+use surfacelab::app::scene_view::{self, ViewOptions};
+use surfacelab::input::Gesture;
+use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::render::snapshot::{SnapshotDir, Tolerance};
-use surfacelab::render::{self, GpuContext, ViewOptions};
+use surfacelab::render::{self, GpuContext};
 use surfacelab::scene;
 use surfacelab::session::{Session, SessionOptions};
-use surfacelab::surface::Gesture;
-use surfacelab::technique::TechniqueKind;
 
 /// Set on lavapipe, "llvmpipe (LLVM 15.0.6, 256 bits)", as in `render_scenes.rs`.
 const TOLERANCE: Tolerance = Tolerance { per_pixel: 12, max_differing_share: 0.005 };
@@ -36,7 +37,7 @@ fn session_at(task: &str, gesture: Option<&str>, at: f64) -> Session {
 #[test]
 fn the_crumpled_cloth_matches_its_golden_image() {
     let s = session_at("tasks/cloth.toml", None, 0.5);
-    let list = render::draw_list(&s, ViewOptions::default());
+    let list = scene_view::draw_list(&s, ViewOptions::default());
     assert_eq!(list.deformables.len(), 1, "one cloth");
     assert_eq!(list.deformables[0].positions.len(), 16 * 16);
     let img = render::render_to_image(&gpu(), &list, SIZE.0, SIZE.1).expect("render");
@@ -49,7 +50,7 @@ fn the_torn_paper_draws_both_pieces() {
     // shadows on so the hands show.
     let s = session_at("tasks/tear.toml", Some("assets/gestures/tear_two_hands.toml"), 1.4);
     assert!(s.world().soft_piece_masses(0).len() >= 2, "the paper should have torn by 1.4 s");
-    let list = render::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true });
+    let list = scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true });
     assert!(list.deformables.len() >= 2, "every piece is drawn: {}", list.deformables.len());
     let img = render::render_to_image(&gpu(), &list, SIZE.0, SIZE.1).expect("render");
     SnapshotDir::new(root("tests/snapshots")).check("soft_tear", &img, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));

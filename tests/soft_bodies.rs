@@ -7,11 +7,12 @@
 //! cores (the 10,000-step cloth run is the longest, ~20 s).
 
 use glam::{Vec2, Vec3};
+use surfacelab::input::Gesture;
+use surfacelab::pipeline::surface::{Hand, HandKind};
+use surfacelab::pipeline::technique::TechniqueKind;
+use surfacelab::pipeline::world::{World, WorldError};
 use surfacelab::scene::{self, Effect, EffectSet, Goal, Scene};
 use surfacelab::session::{Session, SessionOptions};
-use surfacelab::surface::{Gesture, Hand, HandKind};
-use surfacelab::technique::TechniqueKind;
-use surfacelab::world::{World, WorldError};
 
 fn root(p: &str) -> String {
     format!("{}/{p}", env!("CARGO_MANIFEST_DIR"))

@@ -9,10 +9,10 @@ use glam::{Vec2, Vec3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use surfacelab::contact::{self, ConvexPolygon};
+use surfacelab::pipeline::surface::{Hand, HandKind};
+use surfacelab::pipeline::technique::{TechniqueConfig, TechniqueKind};
 use surfacelab::scene;
 use surfacelab::session::{Session, SessionOptions};
-use surfacelab::surface::{Hand, HandKind};
-use surfacelab::technique::{TechniqueConfig, TechniqueKind};
 
 const STEPS: usize = 10_000;
 /// Penetration allowed between scene bodies (m).

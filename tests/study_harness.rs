@@ -7,8 +7,8 @@ use std::collections::{BTreeMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
-use surfacelab::study::output::{RUN_TOML, SUMMARY_CSV, TRIALS_CSV, read_trials};
-use surfacelab::study::{
+use surfacelab::harness::study::output::{RUN_TOML, SUMMARY_CSV, TRIALS_CSV, read_trials};
+use surfacelab::harness::study::{
     COLUMNS, ParticipantRun, RunFile, RunOptions, STRATEGY_COLUMNS, Shard, StudyDesign, StudyError, Technique,
     TrialResult, TrialRow, TrialRunner, TrialSpec, describe, merge, resume_study, run_study, summarize, t_quantile_975,
     trial_seed, williams_square,
@@ -635,8 +635,8 @@ fn summary_of_hand_made_rows() {
 
     let dir = scratch("summary_file");
     let path = dir.join(SUMMARY_CSV);
-    surfacelab::study::summary::write_summary(&path, &summary).expect("write");
-    assert_eq!(surfacelab::study::summary::read_summary(&path).expect("read"), summary);
+    surfacelab::harness::study::summary::write_summary(&path, &summary).expect("write");
+    assert_eq!(surfacelab::harness::study::summary::read_summary(&path).expect("read"), summary);
     let text = std::fs::read_to_string(&path).expect("text");
     assert!(text.starts_with(
         "task,technique,feedback,participants,trials,completed,failed,mean_s,sd_s,ci95_low_s,ci95_high_s,errors,ci95_within_low_s,ci95_within_high_s\n"
@@ -689,7 +689,7 @@ fn strategies_csv_sums_manner_time_per_condition() {
     let text = String::from_utf8(read(&dir.join("strategies.csv"))).expect("utf8");
     assert_eq!(text.lines().next(), Some("participant,task,technique,feedback,manner,time_s,time_share,payoff"));
     assert_eq!(STRATEGY_COLUMNS.join(","), text.lines().next().expect("header"));
-    let rows = surfacelab::study::read_strategies(&dir.join("strategies.csv")).expect("read");
+    let rows = surfacelab::harness::study::read_strategies(&dir.join("strategies.csv")).expect("read");
     // 2 participants x 3 techniques x 2 feedback levels, two manners each.
     assert_eq!(rows.len(), 2 * 3 * 2 * 2);
     let trials = read_trials(&dir.join(TRIALS_CSV)).expect("trials");
@@ -872,7 +872,7 @@ fn figure_copes_with_sparse_data() {
     assert!(png.starts_with(b"\x89PNG"));
     let svg = String::from_utf8(read(&dir.join("figure.svg"))).expect("svg text");
     assert!(svg.contains("Particle") && svg.contains("Feedback off") && !svg.contains("Feedback on"));
-    let summary = surfacelab::study::summary::read_summary(&dir.join(SUMMARY_CSV)).expect("summary");
+    let summary = surfacelab::harness::study::summary::read_summary(&dir.join(SUMMARY_CSV)).expect("summary");
     // Two tasks, every technique.
     assert_eq!(summary.len(), 2 * 5);
     assert!(summary.iter().filter(|s| s.technique == Technique::Direct).all(|s| s.mean_s.is_none() && s.failed == 2));

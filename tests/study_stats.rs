@@ -5,13 +5,13 @@
 //! the paper's findings decided on them.
 
 use std::path::{Path, PathBuf};
-use surfacelab::study::analysis::{analyze, read_anova, write_anova, write_pairwise};
-use surfacelab::study::anova::{TwoWayData, rm_anova};
-use surfacelab::study::findings::{FINDINGS, Verdict};
-use surfacelab::study::pairwise::{holm, paired_t};
-use surfacelab::study::report::{REPORT_HTML, REPORT_MD};
-use surfacelab::study::within_ci::cousineau_morey_half_widths;
-use surfacelab::study::{
+use surfacelab::harness::study::analysis::{analyze, read_anova, write_anova, write_pairwise};
+use surfacelab::harness::study::anova::{TwoWayData, rm_anova};
+use surfacelab::harness::study::findings::{FINDINGS, Verdict};
+use surfacelab::harness::study::pairwise::{holm, paired_t};
+use surfacelab::harness::study::report::{REPORT_HTML, REPORT_MD};
+use surfacelab::harness::study::within_ci::cousineau_morey_half_widths;
+use surfacelab::harness::study::{
     RunOptions, StudyDesign, Technique, TrialResult, TrialRow, TrialRunner, TrialSpec, run_study, summarize,
 };
 
@@ -347,7 +347,7 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
 
 #[test]
 fn the_report_reads_strategy_shares_when_trials_csv_has_them() {
-    use surfacelab::study::report::{Block, report_blocks, strategy_counts};
+    use surfacelab::harness::study::report::{Block, report_blocks, strategy_counts};
     let dir = scratch("strategies");
     std::fs::create_dir_all(&dir).expect("dir");
     let path = dir.join("trials.csv");

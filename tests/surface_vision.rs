@@ -3,11 +3,13 @@
 
 use std::path::{Path, PathBuf};
 
-use surfacelab::surface::{
-    Button, ContactImage, Gesture, GestureRecorder, Hand, HandKind, Modifiers, Mouse, MouseEvent, Patch, RasterParams,
-    Sensor, Shape, rasterize, rasterize_into, rasterize_patches, rasterize_rows,
+use surfacelab::pipeline::surface::{
+    ContactImage, Hand, HandKind, Patch, RasterParams, Sensor, Shape, rasterize, rasterize_into, rasterize_patches,
+    rasterize_rows,
 };
-use surfacelab::vision::{
+
+use surfacelab::input::{Button, Gesture, GestureRecorder, Modifiers, Mouse, MouseEvent};
+use surfacelab::pipeline::vision::{
     BlockMatcher, FlowInterest, Pipeline, VisionFrame, VisionParams, find_blobs, signed_area, sobel_at, threshold,
 };
 
@@ -325,7 +327,7 @@ fn random_frames_do_not_panic() {
     let mut p = Pipeline::default();
     for (k, density) in [0.05f32, 0.3, 0.45, 0.6, 0.95].into_iter().enumerate() {
         let params = RasterParams {
-            noise: Some(surfacelab::surface::Noise { seed: k as u64, amplitude: 255 }),
+            noise: Some(surfacelab::pipeline::surface::Noise { seed: k as u64, amplitude: 255 }),
             ..RasterParams::default()
         };
         // Uniform noise in -255..=255 clamps to 0 about half the time; shift
@@ -343,8 +345,10 @@ fn random_frames_do_not_panic() {
 
 #[test]
 fn noisy_frames_give_no_phantom_contacts() {
-    let params =
-        RasterParams { noise: Some(surfacelab::surface::Noise { seed: 42, amplitude: 20 }), ..RasterParams::default() };
+    let params = RasterParams {
+        noise: Some(surfacelab::pipeline::surface::Noise { seed: 42, amplitude: 20 }),
+        ..RasterParams::default()
+    };
     let image = rasterize(&[Hand::new(1, HandKind::FlatHand, 0.0, 0.0)], &sensor(), &params);
     let f = Pipeline::default().process(&image);
     assert_eq!(f.contacts.len(), 1);

@@ -3,10 +3,10 @@
 //! what the paper says the physics should do.
 
 use glam::{Quat, Vec3};
+use surfacelab::input::Gesture;
+use surfacelab::pipeline::technique::{TechniqueConfig, TechniqueKind};
 use surfacelab::scene;
 use surfacelab::session::{Session, SessionOptions};
-use surfacelab::surface::Gesture;
-use surfacelab::technique::{TechniqueConfig, TechniqueKind};
 
 fn asset(path: &str) -> String {
     format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))

@@ -5,8 +5,8 @@
 use rosc::{OscBundle, OscMessage, OscPacket, OscTime, OscType, encoder};
 use std::net::UdpSocket;
 use std::time::{Duration, Instant};
-use surfacelab::app::tuio::TuioListener;
-use surfacelab::surface::{Hand, HandKind};
+use surfacelab::input::tuio::TuioListener;
+use surfacelab::pipeline::surface::{Hand, HandKind};
 
 const TABLE: [f32; 2] = [1.0, 0.75];
 

@@ -1,8 +1,8 @@
 //! The physics world: determinism, ray casts, and effect gating.
 
 use glam::{Vec2, Vec3};
+use surfacelab::pipeline::world::World;
 use surfacelab::scene::{self, EffectSet};
-use surfacelab::world::World;
 
 fn push_pattern(world: &mut World, step: usize) {
     // A fixed, input-like sequence of forces on a few objects.

@@ -5,16 +5,17 @@
 
 use super::DemoOptions;
 use super::clock::Clock;
-use super::input::Input;
-use super::participant::{Phase, Trials};
+use super::participant_mode::{Phase, Trials};
 use super::record::{Recording, timestamped};
+use super::scene_view::{self, ViewOptions};
 use super::stats::Stats;
-use super::tuio::TuioListener;
-use crate::render::{self, DrawList, GpuContext, ViewOptions};
+use crate::harness::study::TrialResult;
+use crate::input::Input;
+use crate::input::tuio::TuioListener;
+use crate::pipeline::technique::{TechniqueConfig, TechniqueKind};
+use crate::render::{self, DrawList, GpuContext};
 use crate::scene::{self, Goal, Scene};
 use crate::session::{Session, SessionOptions};
-use crate::study::TrialResult;
-use crate::technique::{TechniqueConfig, TechniqueKind};
 use anyhow::Context;
 use std::path::PathBuf;
 
@@ -249,7 +250,7 @@ impl Lab {
     /// with the field of view fitted so the whole table shows, with a small
     /// margin, whatever the view's shape.
     pub fn draw_list(&self, size: [u32; 2]) -> DrawList {
-        let mut list = render::draw_list(&self.session, self.view);
+        let mut list = scene_view::draw_list(&self.session, self.view);
         let [w, d] = self.table();
         let aspect = size[0].max(1) as f32 / size[1].max(1) as f32;
         let height = list.camera.eye.z;
@@ -346,7 +347,7 @@ impl Lab {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::surface::{Button, Gesture, MouseEvent};
+    use crate::input::{Button, Gesture, MouseEvent};
 
     /// What the record button writes replays, through `run`'s path, to
     /// the very state the demo showed.

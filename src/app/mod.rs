@@ -1,8 +1,8 @@
 //! The desktop demo: a window with the live table and a side panel, for a
 //! researcher trying the techniques and for a participant doing trials. It
 //! only wires library pieces together: [`crate::session`] runs the
-//! pipeline, [`crate::render`] draws it, [`crate::surface::Mouse`] and
-//! [`crate::surface::tuio`] turn input into hands, the gesture recorder and
+//! pipeline, [`crate::render`] draws it, [`crate::input::Mouse`] and
+//! [`crate::input::tuio`] turn input into hands, the gesture recorder and
 //! the study's row types write files.
 //!
 //! - [`window`]: winit, wgpu and egui; the frame loop.
@@ -15,21 +15,21 @@
 
 pub mod capture;
 pub mod clock;
-pub mod input;
 pub mod lab;
 pub mod panel;
-pub mod participant;
+pub mod participant_mode;
 pub mod record;
+pub mod scene_view;
 pub mod stats;
-pub mod tuio;
 pub mod view;
 pub mod window;
 
-pub use participant::ParticipantOptions;
+pub use participant_mode::ParticipantOptions;
+pub use scene_view::{ViewOptions, draw_list, scene_camera};
 pub use window::run;
 
-use crate::surface::Gesture;
-use crate::technique::TechniqueKind;
+use crate::input::Gesture;
+use crate::pipeline::technique::TechniqueKind;
 use std::net::SocketAddr;
 use std::path::PathBuf;
 

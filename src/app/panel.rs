@@ -5,8 +5,9 @@
 
 use super::lab::Lab;
 use super::view::progress_line;
-use crate::surface::{DEGREES_PER_NOTCH, HandKind, MouseEvent, SPREAD_PER_NOTCH};
-use crate::technique::TechniqueKind;
+use crate::input::{DEGREES_PER_NOTCH, MouseEvent, SPREAD_PER_NOTCH};
+use crate::pipeline::surface::HandKind;
+use crate::pipeline::technique::TechniqueKind;
 use egui::{Color32, RichText, Slider};
 use std::path::{Path, PathBuf};
 

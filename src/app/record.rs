@@ -2,7 +2,9 @@
 //! `surfacelab study --replay` replay. A recording starts from a freshly
 //! reset scene, so the file replays from the state it was made in.
 
-use crate::surface::{Gesture, GestureRecorder, Hand};
+use crate::pipeline::surface::Hand;
+
+use crate::input::{Gesture, GestureRecorder};
 use anyhow::Context;
 use std::path::{Path, PathBuf};
 use std::time::{SystemTime, UNIX_EPOCH};
@@ -79,7 +81,7 @@ pub fn timestamp(unix_secs: u64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::surface::HandKind;
+    use crate::pipeline::surface::HandKind;
 
     #[test]
     fn timestamps_are_utc_calendar_dates() {

@@ -4,9 +4,9 @@
 //! hint, participant-mode instructions).
 
 use super::lab::{BETWEEN_TRIALS_S, Lab};
-use super::participant::Phase;
+use super::participant_mode::Phase;
+use crate::pipeline::surface::{Hand, Shape};
 use crate::render::CameraMatrices;
-use crate::surface::{Hand, Shape};
 use egui::{Color32, FontId, Pos2, Rect, Stroke, TextureId, Vec2};
 use glam::Vec3;
 

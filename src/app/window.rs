@@ -9,10 +9,10 @@ use super::lab::Lab;
 use super::panel::{self, Action, HAND_MODES, PanelState};
 use super::view::{self, ViewFrame};
 use super::{DemoOptions, Screenshot};
+use crate::input::{Button, Modifiers, MouseEvent};
 use crate::render::{
     GpuContext, Renderer, RendererOptions, preferred_surface_format, request_adapter, request_device, save_png,
 };
-use crate::surface::{Button, Modifiers, MouseEvent};
 use anyhow::{Context, anyhow, bail};
 use glam::Vec2;
 use std::sync::Arc;

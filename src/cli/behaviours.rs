@@ -1,7 +1,7 @@
-//! `surfacelab behaviours`: the behaviour suite's table (src/behaviour).
+//! `surfacelab behaviours`: the behaviour suite's table (src/harness/behaviour).
 
 use super::{BehavioursArgs, EXIT_USAGE};
-use crate::behaviour::{Verdict, cases, cells, markdown, run_suite, suite_kinds};
+use crate::harness::behaviour::{Verdict, cases, cells, markdown, run_suite, suite_kinds};
 use std::process::ExitCode;
 use std::time::Instant;
 
@@ -25,7 +25,7 @@ pub fn run(args: &BehavioursArgs) -> anyhow::Result<ExitCode> {
     let gaps = all_cells.iter().filter(|cell| cell.verdict == Verdict::KnownGap).count();
     eprintln!(
         "surfacelab behaviours: {} cases x {} techniques in {:.1} s; {failures} cells miss their expectation, \
-         {gaps} more are known gaps (src/behaviour/gaps.rs)",
+         {gaps} more are known gaps (src/harness/behaviour/gaps.rs)",
         chosen.len(),
         kinds.len(),
         t0.elapsed().as_secs_f64(),

@@ -3,8 +3,8 @@
 
 use super::{DemoArgs, EXIT_USAGE};
 use crate::app::{self, DemoOptions, ParticipantOptions, Screenshot};
-use crate::surface::Gesture;
-use crate::technique::TechniqueKind;
+use crate::input::Gesture;
+use crate::pipeline::technique::TechniqueKind;
 use clap::Parser;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::path::PathBuf;
@@ -113,7 +113,7 @@ pub fn parse_condition(s: &str) -> Result<(TechniqueKind, bool), String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::surface::tuio::DEFAULT_PORT;
+    use crate::input::tuio::DEFAULT_PORT;
 
     fn parse(args: &[&str]) -> Result<DemoOptions, String> {
         let cli = super::super::Cli::try_parse_from(

@@ -11,7 +11,7 @@ mod screenshot;
 mod study;
 mod tradeoff;
 
-use crate::technique::TechniqueKind;
+use crate::pipeline::technique::TechniqueKind;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -270,9 +270,9 @@ pub fn main() -> ExitCode {
 fn is_bad_input(e: &anyhow::Error) -> bool {
     e.chain().any(|c| {
         c.is::<crate::scene::SceneError>()
-            || c.is::<crate::surface::GestureError>()
-            || c.is::<crate::technique::ConfigError>()
-            || c.is::<crate::study::StudyError>()
+            || c.is::<crate::input::GestureError>()
+            || c.is::<crate::pipeline::technique::ConfigError>()
+            || c.is::<crate::harness::study::StudyError>()
             || c.is::<crate::render::RenderError>()
             || matches!(c.downcast_ref::<crate::session::SessionError>(), Some(crate::session::SessionError::Config(_)))
     })

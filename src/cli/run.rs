@@ -1,9 +1,9 @@
 //! `surfacelab run`: replay one gesture headless and write a JSON report.
 
 use super::RunArgs;
+use crate::input::Gesture;
 use crate::scene;
 use crate::session::{RunReport, Session, SessionOptions};
-use crate::surface::Gesture;
 use anyhow::Context;
 use std::process::ExitCode;
 use std::time::Instant;

@@ -2,10 +2,11 @@
 //! then render it off-screen and write a PNG. Needs no display.
 
 use super::ScreenshotArgs;
-use crate::render::{self, GpuContext, ViewOptions};
+use crate::app::scene_view::{self, ViewOptions};
+use crate::input::Gesture;
+use crate::render::{self, GpuContext};
 use crate::scene;
 use crate::session::{Session, SessionOptions};
-use crate::surface::Gesture;
 use anyhow::Context;
 use std::process::ExitCode;
 
@@ -28,7 +29,7 @@ pub fn run(args: &ScreenshotArgs) -> anyhow::Result<ExitCode> {
         }
     }
     let list =
-        render::draw_list(&session, ViewOptions { feedback: args.feedback, contact_overlay: args.contact_overlay });
+        scene_view::draw_list(&session, ViewOptions { feedback: args.feedback, contact_overlay: args.contact_overlay });
     let gpu = GpuContext::new_headless()?;
     let image = render::render_to_image(&gpu, &list, w, h)?;
     if let Some(dir) = args.out.parent().filter(|d| !d.as_os_str().is_empty()) {

@@ -4,8 +4,8 @@
 //! run.toml in one folder; with `--seeds N`, N such folders and findings.csv.
 
 use super::{StudyAction, StudyArgs};
-use crate::participant::{ReplayRunner, ScriptedRunner};
-use crate::study::{self, RunFile, RunOptions, StudyDesign, Technique, TrialRunner};
+use crate::harness::participant::{ReplayRunner, ScriptedRunner};
+use crate::harness::study::{self, RunFile, RunOptions, StudyDesign, Technique, TrialRunner};
 use anyhow::Context;
 use std::process::ExitCode;
 

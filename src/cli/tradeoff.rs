@@ -1,7 +1,7 @@
 //! `surfacelab tradeoff --out DIR [--quick]`: what accuracy costs in time.
 
 use super::TradeoffArgs;
-use crate::tradeoff::{TradeoffOptions, run_tradeoff};
+use crate::harness::tradeoff::{TradeoffOptions, run_tradeoff};
 use std::io::IsTerminal;
 use std::process::ExitCode;
 

@@ -26,7 +26,6 @@ mod mesh_library;
 mod pipelines;
 pub mod renderer;
 pub mod samples;
-pub mod scene_view;
 mod shadow_map;
 pub mod snapshot;
 mod targets;
@@ -41,4 +40,3 @@ pub use gpu::{
     request_device,
 };
 pub use renderer::{Renderer, RendererOptions};
-pub use scene_view::{ViewOptions, draw_list, scene_camera};

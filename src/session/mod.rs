@@ -2,6 +2,7 @@
 //! world → goal. `run`, `study`, `screenshot`, the demo, the benchmarks and
 //! the tests all drive this same loop, so they cannot drift apart.
 
+pub mod goal;
 mod report;
 #[allow(clippy::module_inception)]
 mod session;

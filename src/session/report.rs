@@ -1,8 +1,8 @@
 //! The JSON report of one headless run (`surfacelab run --report`).
 
 use super::Session;
-use crate::goal::Progress;
 use crate::scene::SoftKind;
+use crate::session::goal::Progress;
 use serde::Serialize;
 
 /// Mean time per stage, µs.

@@ -2,14 +2,15 @@
 //! surface camera and the simulation run at the same rate (60 Hz by default),
 //! which keeps replays exact.
 
-use crate::goal::{Progress, Tracker};
-use crate::scene::Scene;
-use crate::surface::{ContactImage, Gesture, Hand, RasterParams, Sensor, rasterize_rows};
-use crate::technique::{
+use crate::input::Gesture;
+use crate::pipeline::surface::{ContactImage, Hand, RasterParams, Sensor, rasterize_rows};
+use crate::pipeline::technique::{
     ConfigError, Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind,
 };
-use crate::vision::{Pipeline, VisionFrame, VisionParams};
-use crate::world::{World, WorldError};
+use crate::pipeline::vision::{Pipeline, VisionFrame, VisionParams};
+use crate::pipeline::world::{World, WorldError};
+use crate::scene::Scene;
+use crate::session::goal::{Progress, Tracker};
 use std::time::Instant;
 
 #[derive(Debug, thiserror::Error)]

@@ -1,0 +1,96 @@
+//! Known gaps: cells of the behaviour table that miss the paper's
+//! expectation today, each with what was measured and why, as far as it is
+//! understood. They are issue 14's open work, listed so that the suite can
+//! run in CI: a known gap is printed as `**FAIL** (known gap)` and does not
+//! fail the tests, every other cell does, and a known gap that starts to
+//! pass fails `tests/behaviours.rs` until it is taken off this list (the
+//! list can only shrink as the physics improves).
+
+use super::case::Metric;
+use crate::pipeline::technique::TechniqueKind;
+
+/// One known gap: a case, a technique and a measure, and why it misses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Gap {
+    pub case: &'static str,
+    pub technique: TechniqueKind,
+    pub metric: Metric,
+    pub why: &'static str,
+}
+
+const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's top get normal impulses swinging \
+     between 0 and 6x their weight from step to step while they drag it (a same-sized box: 1.1-1.2x): parry gives a \
+     cylinder's caps, for contact manifolds, as a square inscribed in them and turned towards each contact, so it \
+     rocks under a push at its top; a compound base and a convex hull were tried and made Proxy's top drag worse";
+const OUTSIDE_PUSH_LANDS_ON_TOP: &str = "from outside, perspective puts the finger over the cylinder's top first: per-frame \
+     particles land on the top (the paper's own account of why they cannot grasp) and need friction there, which \
+     fails as in cylinder_top_drag";
+const FINGERTIP_FRICTION: &str = "a fingertip's ring of ~19 particles presses 1.5 N; the friction it gives is marginal \
+     against the table friction its own press adds, and a ring slipping round its centre holds no pivot";
+const FLICK: &str = "the finger stays on the 6 cm box for two frames at 1.6 m/s: friction from the top for two frames \
+     (at most ~0.75 m/s, a ~7 cm slide) cannot throw it 16 cm; Joint drags it kinematically, Proxy's persistent cube \
+     meets its trailing edge";
+const PILE_CONTACTS: &str = "rapier's soft contacts (30 Hz) let light pieces (10 g) pushed by heavy or kinematic \
+     pushers sink into each other: the contact-parameter work of issue 14, item 2, is not done";
+
+use Metric::{Along as Distance, Carry, EndSpeed, MaxOverlap as Overlap, PinDrift, Yaw as Turn};
+use TechniqueKind::{Hybrid, Joint, Particle, Proxy};
+
+/// The known gaps, as measured by `surfacelab behaviours` on this build.
+pub const GAPS: &[Gap] = &[
+    Gap { case: "pin_and_spin_small_box", technique: Proxy, metric: Turn, why: FINGERTIP_FRICTION },
+    Gap { case: "pin_and_spin_small_box", technique: Particle, metric: Turn, why: FINGERTIP_FRICTION },
+    Gap { case: "pin_and_spin_small_box", technique: Particle, metric: PinDrift, why: FINGERTIP_FRICTION },
+    Gap { case: "pin_and_spin_small_box", technique: Hybrid, metric: Turn, why: FINGERTIP_FRICTION },
+    Gap { case: "pin_and_spin_small_box", technique: Hybrid, metric: PinDrift, why: FINGERTIP_FRICTION },
+    Gap { case: "pin_and_spin_one_box", technique: Proxy, metric: Turn, why: FINGERTIP_FRICTION },
+    Gap { case: "pin_and_spin_one_box", technique: Particle, metric: Turn, why: FINGERTIP_FRICTION },
+    Gap { case: "pin_and_spin_one_box", technique: Hybrid, metric: Turn, why: FINGERTIP_FRICTION },
+    Gap { case: "pin_and_spin_one_box", technique: Hybrid, metric: PinDrift, why: FINGERTIP_FRICTION },
+    Gap { case: "two_finger_twist", technique: Particle, metric: Turn, why: FINGERTIP_FRICTION },
+    Gap { case: "two_finger_twist", technique: Hybrid, metric: Turn, why: FINGERTIP_FRICTION },
+    Gap { case: "cylinder_top_drag", technique: Particle, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
+    Gap { case: "cylinder_top_drag", technique: Hybrid, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
+    Gap { case: "side_push_floor_000", technique: Particle, metric: Distance, why: OUTSIDE_PUSH_LANDS_ON_TOP },
+    Gap { case: "side_push_floor_045", technique: Particle, metric: Distance, why: OUTSIDE_PUSH_LANDS_ON_TOP },
+    Gap { case: "side_push_floor_090", technique: Particle, metric: Distance, why: OUTSIDE_PUSH_LANDS_ON_TOP },
+    Gap { case: "side_push_floor_315", technique: Particle, metric: Distance, why: OUTSIDE_PUSH_LANDS_ON_TOP },
+    Gap { case: "side_push_platform_000", technique: Particle, metric: Distance, why: OUTSIDE_PUSH_LANDS_ON_TOP },
+    Gap { case: "side_push_platform_045", technique: Particle, metric: Distance, why: OUTSIDE_PUSH_LANDS_ON_TOP },
+    Gap { case: "side_push_platform_090", technique: Particle, metric: Distance, why: OUTSIDE_PUSH_LANDS_ON_TOP },
+    Gap { case: "side_push_platform_315", technique: Particle, metric: Distance, why: OUTSIDE_PUSH_LANDS_ON_TOP },
+    Gap {
+        case: "ball_under_hand",
+        technique: Particle,
+        metric: Carry,
+        why: "particles under the flat hand land on the ball's far flank, which the camera sees edge-on, and push it \
+              back (the surface-speed cap keeps it slow, not forwards)",
+    },
+    Gap {
+        case: "ball_under_hand",
+        technique: Hybrid,
+        metric: Carry,
+        why: "the hand's outline beside the ball becomes grips at table depth that cage the ball: it is carried, not \
+              rolled",
+    },
+    Gap {
+        case: "ball_stop_flat_hand",
+        technique: Particle,
+        metric: EndSpeed,
+        why: "0.052 m/s against 0.05: the flat hand's particles leave the ball slowly rolling",
+    },
+    Gap { case: "flick_from_rest", technique: Particle, metric: Distance, why: FLICK },
+    Gap { case: "flick_from_rest", technique: Hybrid, metric: Distance, why: FLICK },
+    Gap { case: "gather_hand_edges", technique: Joint, metric: Overlap, why: PILE_CONTACTS },
+    Gap { case: "gather_hand_edges", technique: Proxy, metric: Overlap, why: PILE_CONTACTS },
+    Gap { case: "gather_hand_edges", technique: Particle, metric: Overlap, why: PILE_CONTACTS },
+    Gap { case: "gather_hand_edges", technique: Hybrid, metric: Overlap, why: PILE_CONTACTS },
+    Gap { case: "gather_forearms", technique: Joint, metric: Overlap, why: PILE_CONTACTS },
+    Gap { case: "gather_forearms", technique: Particle, metric: Overlap, why: PILE_CONTACTS },
+    Gap { case: "gather_forearms", technique: Hybrid, metric: Overlap, why: PILE_CONTACTS },
+];
+
+/// The known gap for this cell, if it is one.
+pub fn known_gap(case: &str, technique: TechniqueKind, metric: Metric) -> Option<&'static Gap> {
+    GAPS.iter().find(|g| g.case == case && g.technique == technique && g.metric == metric)
+}

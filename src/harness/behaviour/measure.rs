@@ -1,0 +1,185 @@
+//! Running one case under one technique and measuring what happened.
+
+use super::case::{Axis, Case, Metric};
+use super::cases::GATHER_RADIUS;
+use crate::input::{Gesture, GestureError};
+use crate::pipeline::technique::TechniqueKind;
+use crate::scene::{self, BodyKind, SceneError};
+use crate::session::{Session, SessionError, SessionOptions};
+use glam::{Vec2, Vec3};
+use std::collections::BTreeMap;
+use std::path::Path;
+
+#[derive(Debug, thiserror::Error)]
+pub enum BehaviourError {
+    #[error(transparent)]
+    Scene(#[from] SceneError),
+    #[error(transparent)]
+    Gesture(#[from] GestureError),
+    #[error(transparent)]
+    Session(#[from] SessionError),
+    #[error("behaviour `{case}`: scene {scene} has no object `{object}`")]
+    NoObject { case: String, scene: String, object: String },
+    #[error("behaviour `{case}`: gesture {gesture} has no hands")]
+    NoHands { case: String, gesture: String },
+}
+
+/// What one run measured.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Outcome {
+    pub case: &'static str,
+    pub technique: TechniqueKind,
+    pub values: BTreeMap<Metric, f32>,
+    /// NaN seen in the world (always a failure).
+    pub nan_count: u64,
+}
+
+impl Outcome {
+    /// The value of `m` (NaN when it was not measured).
+    pub fn get(&self, m: Metric) -> f32 {
+        self.values.get(&m).copied().unwrap_or(f32::NAN)
+    }
+}
+
+/// Yaw rate integration and per-frame extremes of the measured object.
+#[derive(Debug, Default)]
+struct Track {
+    yaw_rad: f32,
+    max_tilt: f32,
+    max_lift: f32,
+    max_drop: f32,
+    max_along: f32,
+    max_overlap: f32,
+    end_speed: f32,
+    back_speed: f32,
+}
+
+/// Runs `case` under `kind` (files relative to `root`) and measures it.
+pub fn run_case(case: &Case, kind: TechniqueKind, root: &Path) -> Result<Outcome, BehaviourError> {
+    let scene_path = root.join(case.scene);
+    let scene = scene::load(&scene_path.to_string_lossy())?;
+    let gesture = Gesture::load(root.join(case.gesture))?;
+    let object = scene.object_index(case.object).ok_or_else(|| BehaviourError::NoObject {
+        case: case.name.to_string(),
+        scene: case.scene.to_string(),
+        object: case.object.to_string(),
+    })?;
+    let lead = gesture
+        .tracks()
+        .first()
+        .ok_or_else(|| BehaviourError::NoHands { case: case.name.to_string(), gesture: case.gesture.to_string() })?;
+    let at = |k: &crate::input::Key| Vec2::new(k.pos[0] as f32, k.pos[1] as f32);
+    let (Some(first_key), Some(last_key)) = (lead.keys().first(), lead.keys().last()) else {
+        return Err(BehaviourError::NoHands { case: case.name.to_string(), gesture: case.gesture.to_string() });
+    };
+    let hand_start = at(first_key);
+    let hand_move = at(last_key) - hand_start;
+    let axis = match case.axis {
+        Axis::Hand => hand_move.normalize_or_zero(),
+        Axis::Fixed(d) => Vec2::from(d).normalize_or_zero(),
+    };
+    let wants_overlap = case.metrics().contains(&Metric::MaxOverlap);
+
+    let mut s = Session::new(&scene, kind, SessionOptions::default())?;
+    let start = s.world().object_pose(object);
+    // The object point the first hand first touches (its ray hit), in the object's frame.
+    let pinned = s
+        .world()
+        .cast_contact_ray(hand_start)
+        .filter(|h| h.object == Some(object))
+        .map(|h| (h.point, start.rotation.inverse() * (h.point - start.position)));
+    let dt = f64::from(s.world().dt());
+    let mut t = Track { max_along: f32::MIN, ..Track::default() };
+    let end = gesture.duration() + case.settle_s;
+    while s.time() + 0.5 * dt < end {
+        let hands = gesture.sample(s.time());
+        s.step(&hands)?;
+        let p = s.world().object_pose(object);
+        t.yaw_rad += p.angvel.z * dt as f32;
+        let up = p.rotation * Vec3::Z;
+        t.max_tilt = t.max_tilt.max(up.z.clamp(-1.0, 1.0).acos().to_degrees());
+        t.max_lift = t.max_lift.max(p.position.z - start.position.z);
+        t.max_drop = t.max_drop.max(start.position.z - p.position.z);
+        t.max_along = t.max_along.max((p.position - start.position).truncate().dot(axis));
+        t.back_speed = t.back_speed.max(-p.linvel.truncate().dot(axis));
+        if wants_overlap {
+            t.max_overlap = t.max_overlap.max(s.world().max_object_overlap());
+        }
+        if s.time() <= gesture.duration() + 0.5 * dt {
+            t.end_speed = p.linvel.truncate().length();
+        }
+    }
+    let last = s.world().object_pose(object);
+    let moved = (last.position - start.position).truncate();
+    let along = moved.dot(axis);
+    let hand_along = hand_move.dot(axis);
+    let mut values = BTreeMap::new();
+    values.insert(Metric::Along, along);
+    values.insert(Metric::Carry, if hand_along.abs() > 1e-6 { along / hand_along } else { f32::NAN });
+    values.insert(Metric::FollowError, (moved - hand_move).length());
+    values.insert(Metric::Across, (moved - axis * along).length());
+    values.insert(Metric::Yaw, t.yaw_rad.to_degrees());
+    values.insert(Metric::MaxTilt, t.max_tilt);
+    values.insert(Metric::MaxLift, t.max_lift);
+    values.insert(Metric::MaxDrop, t.max_drop);
+    values.insert(Metric::MaxAlong, t.max_along);
+    values.insert(Metric::Bounce, t.back_speed);
+    values.insert(Metric::EndSpeed, t.end_speed);
+    let drift = pinned.map_or(f32::NAN, |(at, local)| {
+        let now = last.position + last.rotation * local;
+        (now - at).truncate().length()
+    });
+    values.insert(Metric::PinDrift, drift);
+    if wants_overlap {
+        values.insert(Metric::MaxOverlap, t.max_overlap);
+    }
+    values.insert(Metric::Gathered, gathered(&s, &scene));
+    Ok(Outcome { case: case.name, technique: kind, values, nan_count: s.world().stats().nan_count })
+}
+
+/// Share of the dynamic scene objects whose centre lies within
+/// [`GATHER_RADIUS`] of the table centre.
+fn gathered(s: &Session, scene: &crate::scene::Scene) -> f32 {
+    let dynamic: Vec<usize> =
+        scene.objects.iter().enumerate().filter(|(_, o)| o.body == BodyKind::Dynamic).map(|(i, _)| i).collect();
+    if dynamic.is_empty() {
+        return f32::NAN;
+    }
+    let inside =
+        dynamic.iter().filter(|&&i| s.world().object_pose(i).position.truncate().length() <= GATHER_RADIUS).count();
+    inside as f32 / dynamic.len() as f32
+}
+
+/// Runs every case under every technique, `jobs` runs at a time (each run is
+/// deterministic and independent, so the order of work changes nothing);
+/// outcomes come back in case-major order.
+pub fn run_suite(
+    cases: &[Case],
+    kinds: &[TechniqueKind],
+    root: &Path,
+    jobs: usize,
+) -> Result<Vec<Outcome>, BehaviourError> {
+    let work: Vec<(usize, &Case, TechniqueKind)> = cases
+        .iter()
+        .flat_map(|c| kinds.iter().map(move |k| (c, *k)))
+        .enumerate()
+        .map(|(i, (c, k))| (i, c, k))
+        .collect();
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let results = std::sync::Mutex::new(Vec::with_capacity(work.len()));
+    std::thread::scope(|scope| {
+        for _ in 0..jobs.clamp(1, work.len().max(1)) {
+            scope.spawn(|| {
+                loop {
+                    let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                    let Some(&(idx, case, kind)) = work.get(i) else { break };
+                    let r = run_case(case, kind, root);
+                    results.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push((idx, r));
+                }
+            });
+        }
+    });
+    let mut results = results.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
+    results.sort_by_key(|(i, _)| *i);
+    results.into_iter().map(|(_, r)| r).collect()
+}

@@ -1,0 +1,153 @@
+//! The behaviour × technique table: verdicts and markdown.
+
+use super::case::{Case, Check, Expectation, Metric};
+use super::gaps::known_gap;
+use super::measure::Outcome;
+use crate::pipeline::technique::TechniqueKind;
+use std::fmt::Write as _;
+
+/// How a measured value stands against the expectation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Verdict {
+    /// Meets the check where the manipulation should work.
+    Pass,
+    /// Misses it.
+    Fail,
+    /// Meets the paper's stated limit of this technique.
+    LimitHolds,
+    /// Misses the check of the paper's stated limit.
+    LimitBroken,
+    /// Misses it, as listed in [`super::GAPS`] (issue 14's open work).
+    KnownGap,
+    /// Not asserted.
+    Shown,
+}
+
+impl Verdict {
+    pub fn is_failure(self) -> bool {
+        matches!(self, Verdict::Fail | Verdict::LimitBroken)
+    }
+
+    fn mark(self) -> &'static str {
+        match self {
+            Verdict::Pass => "ok",
+            Verdict::Fail => "**FAIL**",
+            Verdict::LimitHolds => "limit ok",
+            Verdict::LimitBroken => "**FAIL** (limit)",
+            Verdict::KnownGap => "**FAIL** (known gap)",
+            Verdict::Shown => "shown",
+        }
+    }
+}
+
+/// One measured value of one case under one technique.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cell {
+    pub case: &'static str,
+    pub technique: TechniqueKind,
+    pub metric: Metric,
+    pub value: f32,
+    /// The check applied to it, if any.
+    pub check: Option<Check>,
+    pub verdict: Verdict,
+}
+
+/// The cells of one outcome: one per metric the case shows.
+pub fn cells(case: &Case, outcome: &Outcome) -> Vec<Cell> {
+    let kind = outcome.technique;
+    let expectation = case.expectation(kind);
+    let applied = case.checks_for(kind);
+    case.metrics()
+        .into_iter()
+        .map(|metric| {
+            let value = outcome.get(metric);
+            let check = applied.iter().find(|c| c.metric == metric).copied();
+            let verdict = match (&expectation, check) {
+                (_, None) | (Expectation::Shown { .. }, _) => Verdict::Shown,
+                (Expectation::Works, Some(c)) if c.holds(value) && outcome.nan_count == 0 => Verdict::Pass,
+                (Expectation::Works, Some(_)) => Verdict::Fail,
+                (Expectation::Limit { .. }, Some(c)) if c.holds(value) => Verdict::LimitHolds,
+                (Expectation::Limit { .. }, Some(_)) => Verdict::LimitBroken,
+            };
+            let verdict = match verdict {
+                Verdict::Fail | Verdict::LimitBroken if known_gap(case.name, kind, metric).is_some() => {
+                    Verdict::KnownGap
+                }
+                v => v,
+            };
+            Cell { case: case.name, technique: kind, metric, value, check, verdict }
+        })
+        .collect()
+}
+
+fn format_value(metric: Metric, value: f32) -> String {
+    if value.is_nan() {
+        return "n/a".to_string();
+    }
+    let v = value * metric.scale();
+    match metric {
+        Metric::Carry | Metric::Gathered | Metric::EndSpeed | Metric::Bounce => format!("{v:.2}"),
+        _ => format!("{v:.1}"),
+    }
+}
+
+/// The markdown table: one row per case and metric, one column per
+/// technique, each cell the measured value and its verdict; then the
+/// paper's limits quoted.
+pub fn markdown(cases: &[Case], kinds: &[TechniqueKind], outcomes: &[Outcome]) -> String {
+    let mut s = String::new();
+    let _ = write!(s, "| behaviour | measure | works when |");
+    for k in kinds {
+        let _ = write!(s, " {k} |");
+    }
+    s.push('\n');
+    s.push_str("|---|---|---|");
+    for _ in kinds {
+        s.push_str("---|");
+    }
+    s.push('\n');
+    let mut limits: Vec<String> = Vec::new();
+    for case in cases {
+        for metric in case.metrics() {
+            let works = case.checks.iter().find(|c| c.metric == metric).map_or("—".to_string(), ToString::to_string);
+            let _ = write!(s, "| {} | {} | {} |", case.name, metric.label(), works);
+            for k in kinds {
+                let cell = outcomes
+                    .iter()
+                    .find(|o| o.case == case.name && o.technique == *k)
+                    .and_then(|o| cells(case, o).into_iter().find(|c| c.metric == metric));
+                match cell {
+                    Some(c) => {
+                        let bound = match (c.verdict, c.check) {
+                            (Verdict::LimitHolds | Verdict::LimitBroken, Some(ch)) => format!(" ({ch})"),
+                            _ => String::new(),
+                        };
+                        let _ = write!(s, " {} {}{} |", format_value(metric, c.value), c.verdict.mark(), bound);
+                    }
+                    None => s.push_str(" — |"),
+                }
+            }
+            s.push('\n');
+        }
+        for (technique, e) in &case.others {
+            if !kinds.iter().any(|k| k.name() == *technique) {
+                continue;
+            }
+            match e {
+                Expectation::Limit { quote, .. } => limits.push(format!("- {} / {technique}: \"{quote}\"", case.name)),
+                Expectation::Shown { why } => {
+                    limits.push(format!("- {} / {technique}: not asserted: {why}", case.name));
+                }
+                Expectation::Works => {}
+            }
+        }
+    }
+    if !limits.is_empty() {
+        s.push_str("\nThe paper's limits, asserted instead (\"limit ok\": the limit holds), and cells only shown:\n\n");
+        for l in limits {
+            s.push_str(&l);
+            s.push('\n');
+        }
+    }
+    s
+}

@@ -1,0 +1,13 @@
+//! What runs sessions to measure them: nothing in the pipeline reads these.
+//!
+//! - [`participant`]: simulated participants who choose how to use their hands and learn.
+//! - [`study`]: the study design, its trials, CSVs, statistics, figures and report.
+//! - [`behaviour`]: the paper's manipulations as cases, measured per technique.
+//! - [`tradeoff`]: what contact accuracy costs in time.
+//! - [`plot_font`]: the one font the figures use.
+
+pub mod behaviour;
+pub mod participant;
+pub mod plot_font;
+pub mod study;
+pub mod tradeoff;

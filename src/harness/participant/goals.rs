@@ -1,0 +1,113 @@
+//! What the goal wants of each object, read from the scene and the tracker
+//! (never from the technique): where an object should go, which zone that
+//! is, how much work is left, and which objects share a destination.
+
+use crate::scene::{Goal, Scene};
+use crate::session::goal::Tracker;
+use glam::Vec2;
+
+/// Where the goal wants one object now.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Want {
+    /// The nearest point the object should reach.
+    pub point: Vec2,
+    /// Which destination that is (a zone, a target, a waypoint): objects with
+    /// the same region may be swept there together; a new region means the
+    /// old one was reached.
+    pub region: u64,
+}
+
+/// Where the goal wants object `i` now, if anywhere.
+pub fn want(scene: &Scene, tracker: &Tracker, i: usize, observed: &[Vec2]) -> Option<Want> {
+    let point_region = |p: Vec2| (u64::from(p.x.to_bits()) << 32) | u64::from(p.y.to_bits());
+    match &scene.goal {
+        // Soft-body goals concern no rigid object.
+        Goal::None | Goal::SoftRegion { .. } | Goal::ClothFlat { .. } | Goal::Torn { .. } => None,
+        Goal::Positioning { targets, .. } => targets
+            .iter()
+            .find(|t| t.object == i && !tracker.is_placed(i))
+            .map(|t| Want { point: t.position, region: point_region(t.position) }),
+        Goal::Sorting { zones, .. } => {
+            let o = &scene.objects[i];
+            let p = *observed.get(i)?;
+            let mine = || zones.iter().enumerate().filter(|(_, z)| z.color_name == o.color_name);
+            if mine().any(|(_, z)| {
+                z.contains(p) && inset(z.min, z.max, 0.03).is_some_and(|(a, b)| p.cmpge(a).all() && p.cmple(b).all())
+            }) {
+                return None;
+            }
+            // The nearest point well inside the nearest zone of its colour.
+            mine()
+                .filter_map(|(k, z)| inset(z.min, z.max, 0.06).map(|(a, b)| (k, p.clamp(a, b))))
+                .min_by(|a, b| (a.1 - p).length().total_cmp(&(b.1 - p).length()))
+                .map(|(k, point)| Want { point, region: k as u64 })
+        }
+        Goal::Steering(g) => (g.object == i)
+            .then(|| tracker.next_waypoint())
+            .flatten()
+            .map(|p| Want { point: p, region: point_region(p) }),
+        Goal::Gather { center, radius, .. } => {
+            let p = *observed.get(i)?;
+            ((p - *center).length() > radius * 0.7).then_some(Want { point: *center, region: 0 })
+        }
+        Goal::Region { object, min, max, .. } => (*object == i).then(|| Want { point: (*min + *max) * 0.5, region: 0 }),
+    }
+}
+
+/// How close to its goal point an object must get before the participant
+/// lets go (half the goal's own tolerance: aiming for the middle).
+pub fn settle_radius(scene: &Scene) -> f32 {
+    match &scene.goal {
+        Goal::Positioning { targets, .. } => targets.iter().map(|t| t.tolerance).fold(f32::MAX, f32::min) * 0.5,
+        Goal::Steering(g) => g.waypoint_radius * 0.5,
+        _ => 0.02,
+    }
+}
+
+/// Objects that still need moving, with what the goal wants of each.
+pub fn open_objects(scene: &Scene, tracker: &Tracker, active: &[bool], observed: &[Vec2]) -> Vec<(usize, Want)> {
+    let settle = settle_radius(scene);
+    (0..scene.objects.len().min(observed.len()))
+        .filter(|&i| active.get(i).copied().unwrap_or(false))
+        .filter_map(|i| want(scene, tracker, i, observed).map(|w| (i, w)))
+        .filter(|(i, w)| (w.point - observed[*i]).length() >= settle)
+        .collect()
+}
+
+/// How far apart (m, centre to centre) two objects bound for the same region
+/// may lie and still be moved as one cluster: about a hand's width.
+pub const CLUSTER_REACH: f32 = 0.12;
+
+/// The open objects bound for the same region as `seed` and lying within
+/// [`CLUSTER_REACH`] of it or of another member (grown from the seed),
+/// seed first.
+pub fn cluster(open: &[(usize, Want)], observed: &[Vec2], seed: usize) -> Vec<usize> {
+    let Some(region) = open.iter().find(|(i, _)| *i == seed).map(|(_, w)| w.region) else {
+        return vec![seed];
+    };
+    let mut members = vec![seed];
+    let mut grew = true;
+    while grew {
+        grew = false;
+        for (i, w) in open {
+            if w.region == region
+                && !members.contains(i)
+                && members.iter().any(|&m| (observed[m] - observed[*i]).length() <= CLUSTER_REACH)
+            {
+                members.push(*i);
+                grew = true;
+            }
+        }
+    }
+    members
+}
+
+pub fn inset(min: Vec2, max: Vec2, m: f32) -> Option<(Vec2, Vec2)> {
+    let a = min + Vec2::splat(m);
+    let b = max - Vec2::splat(m);
+    (a.x <= b.x && a.y <= b.y).then_some((a, b))
+}
+
+pub fn footprint(scene: &Scene, object: usize) -> f32 {
+    scene.objects[object].shape.footprint_radius()
+}

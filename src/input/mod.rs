@@ -1,0 +1,18 @@
+//! The input layer: every source of [`Hand`](crate::pipeline::surface::Hand)s
+//! for the surface. Sources only describe where hands are; the surface turns
+//! them into a contact image.
+//!
+//! - [`Mouse`]: a mouse (and its wheel and modifier keys) as one hand.
+//! - [`tuio`]: TUIO 1.1 packets decoded into hands, and the UDP listener.
+//! - [`Gesture`]: gesture files (recorded or written by hand) replayed frame by frame;
+//!   [`GestureRecorder`] writes them.
+//! - [`Input`]: the demo's sources merged into one list per physics step.
+
+mod gesture;
+mod mouse;
+mod sources;
+pub mod tuio;
+
+pub use gesture::{FORMAT, Gesture, GestureError, GestureRecorder, Key, Track, VERSION};
+pub use mouse::{Button, DEGREES_PER_NOTCH, MAX_SPREAD, Modifiers, Mouse, MouseEvent, SPREAD_PER_NOTCH};
+pub use sources::{Input, SCRIPT_ID_BASE, TOUCH_ID_BASE};

@@ -1,0 +1,104 @@
+//! The TUIO listener: a UDP socket read on its own thread, each datagram
+//! handed to the pure decoder ([`crate::input::tuio::TuioState`]). The
+//! window asks for the current hands once per physics step.
+
+use super::decode::{TuioState, TuioStats};
+use crate::pipeline::surface::Hand;
+use std::net::{SocketAddr, UdpSocket};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex, PoisonError};
+use std::thread::JoinHandle;
+use std::time::{Duration, Instant};
+
+/// How often the thread looks at the stop flag while no packet arrives.
+const POLL: Duration = Duration::from_millis(50);
+/// Largest UDP payload.
+const MAX_DATAGRAM: usize = 65_536;
+
+/// A bound socket and the thread reading it. Dropping it stops the thread.
+pub struct TuioListener {
+    addr: SocketAddr,
+    state: Arc<Mutex<TuioState>>,
+    stop: Arc<AtomicBool>,
+    thread: Option<JoinHandle<()>>,
+    start: Instant,
+}
+
+impl std::fmt::Debug for TuioListener {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("TuioListener").field("addr", &self.addr).finish_non_exhaustive()
+    }
+}
+
+impl TuioListener {
+    /// Binds `addr` (port 0 picks a free port; see [`Self::local_addr`])
+    /// and starts reading.
+    pub fn bind(addr: SocketAddr) -> std::io::Result<Self> {
+        let socket = UdpSocket::bind(addr)?;
+        socket.set_read_timeout(Some(POLL))?;
+        let addr = socket.local_addr()?;
+        let state = Arc::new(Mutex::new(TuioState::new()));
+        let stop = Arc::new(AtomicBool::new(false));
+        let start = Instant::now();
+        let thread = {
+            let (state, stop) = (Arc::clone(&state), Arc::clone(&stop));
+            std::thread::Builder::new().name("tuio".into()).spawn(move || read_loop(&socket, &state, &stop, start))?
+        };
+        Ok(Self { addr, state, stop, thread: Some(thread), start })
+    }
+
+    pub fn local_addr(&self) -> SocketAddr {
+        self.addr
+    }
+
+    /// The hands touching a table of [width, depth] metres now.
+    pub fn hands(&self, table: [f32; 2]) -> Vec<Hand> {
+        self.lock().hands(table, self.start.elapsed().as_secs_f64())
+    }
+
+    pub fn stats(&self) -> TuioStats {
+        self.lock().stats()
+    }
+
+    /// Live (cursors, blobs) now.
+    pub fn live_counts(&self) -> (usize, usize) {
+        let (c, b) = self.lock().live(self.start.elapsed().as_secs_f64());
+        (c.len(), b.len())
+    }
+
+    fn lock(&self) -> std::sync::MutexGuard<'_, TuioState> {
+        // The decoder never panics mid-update; a poisoned lock still holds
+        // a consistent state.
+        self.state.lock().unwrap_or_else(PoisonError::into_inner)
+    }
+}
+
+impl Drop for TuioListener {
+    fn drop(&mut self) {
+        self.stop.store(true, Ordering::Relaxed);
+        if let Some(t) = self.thread.take() {
+            let _ = t.join();
+        }
+    }
+}
+
+fn read_loop(socket: &UdpSocket, state: &Mutex<TuioState>, stop: &AtomicBool, start: Instant) {
+    let mut buf = vec![0u8; MAX_DATAGRAM];
+    while !stop.load(Ordering::Relaxed) {
+        match socket.recv_from(&mut buf) {
+            Ok((n, from)) => {
+                let now = start.elapsed().as_secs_f64();
+                let result = state.lock().unwrap_or_else(PoisonError::into_inner).receive(&buf[..n], now);
+                if let Err(e) = result {
+                    tracing::debug!("TUIO packet from {from} ignored: {e}");
+                }
+            }
+            Err(e) if matches!(e.kind(), std::io::ErrorKind::WouldBlock | std::io::ErrorKind::TimedOut) => {}
+            Err(e) => {
+                // E.g. ICMP port unreachable echoes; never spin on them.
+                tracing::debug!("TUIO socket: {e}");
+                std::thread::sleep(POLL);
+            }
+        }
+    }
+}

@@ -1,0 +1,416 @@
+//! Joint: a spring from each contact to an anchor point on the touched object
+//! (`BumpTop` style: an off-centre anchor gives torque).
+//!
+//! The contact drives an invisible kinematic anchor body; a rapier spring
+//! joint (rest length 0) ties it to the object at the ray-cast point. A joint
+//! breaks when its spring force passes `joint_break_force`; that contact then
+//! grabs nothing until it lifts.
+//!
+//! Side collisions: joints have no collision of their own, so, as in the
+//! paper's study, contacts that grab nothing get a simple kinematic collision
+//! model — a kinematic prism shaped like the contact's convex hull, standing on
+//! the surface the contact started on. We chose kinematic colliders over a
+//! hand-written 2D push (the contact module's exit vector) because rapier then
+//! resolves side pushes, stacking and friction consistently with everything
+//! else; the 2D module remains the exact footprint test used elsewhere.
+//! A prism pushes only from the side: it is never created where it would
+//! overlap an object (rapier would push the object out, possibly upwards: a
+//! flat hand whose centroid missed a ball, its fingers over it, lifted the
+//! ball 3 cm), and it stands taller than any object, so it meets a resting
+//! object at its widest point, where the contact normal is horizontal (a
+//! 3 cm prism met a 6 cm ball below its equator and pushed it up and over).
+//!
+//! On a soft body (cloth, a soft block, a torn piece) the contact grabs the
+//! particle nearest to where its ray lands: rapier attaches that particle to
+//! the kinematic anchor (a point constraint, `SoftBody::attach_particle`),
+//! and the grab breaks like a joint when the attachment's force passes
+//! `joint_break_force`. Several contacts grab several particles, so two hands
+//! pulling apart stretch (and may tear) the sheet between them.
+
+use super::proxy::remove_body;
+use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
+use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use crate::pipeline::vision::Contact;
+use crate::pipeline::world::{Layer, World, WorldError};
+use glam::{Vec2, Vec3};
+use rapier3d::prelude::*;
+use std::collections::{BTreeMap, BTreeSet};
+
+/// Height of the kinematic side-collision prism (m): taller than the
+/// tallest object a hand meets on the table (the steering cylinder on its
+/// platform reaches 11 cm), so its side meets convex objects at their widest.
+const PRISM_HEIGHT: f32 = 0.25;
+/// Height above the surface at which the contact's outline is placed (m):
+/// where a finger beside an object meets it, about the old 3 cm prism's middle.
+const PRISM_TOUCH_HEIGHT: f32 = 0.015;
+
+#[derive(Debug, Clone, Copy)]
+struct Grab {
+    anchor: RigidBodyHandle,
+    joint: ImpulseJointHandle,
+    object: usize,
+    /// Anchor point in the object's local frame.
+    local: Vec3,
+    /// Height the anchor moves at (the touched surface).
+    z: f32,
+    /// Hand velocity last frame (m/s), for a clean release.
+    v_hand: Vec2,
+}
+
+/// A contact holding a soft-body particle through its kinematic anchor.
+/// The particle is found again through the attachment (a tear renumbers
+/// particles and may move it to another piece; the attachment follows).
+#[derive(Debug, Clone, Copy)]
+struct SoftGrab {
+    anchor: RigidBodyHandle,
+    /// Height the anchor moves at (the touched surface).
+    z: f32,
+}
+
+/// What a new contact took hold of.
+enum Hold {
+    Object(Grab),
+    Soft(SoftGrab),
+}
+
+#[derive(Debug, Clone, Copy)]
+struct Pusher {
+    body: RigidBodyHandle,
+    collider: ColliderHandle,
+    base_z: f32,
+    /// Share of the contact's hull the prism spans (about its centre): less
+    /// than 1 while the whole hull would overlap an object.
+    scale: f32,
+}
+
+/// Hull scales tried, largest first, when the whole hull would overlap an
+/// object: a forearm landing with one gather piece under its edge still
+/// pushes the others with the rest of its outline (without this, the
+/// `sweep_gather` forearm on the far side never got a prism).
+const PRISM_SCALES: [f32; 4] = [1.0, 0.75, 0.5, 0.25];
+
+#[derive(Debug)]
+pub struct JointTechnique {
+    config: TechniqueConfig,
+    grabs: BTreeMap<u32, Grab>,
+    soft_grabs: BTreeMap<u32, SoftGrab>,
+    pushers: BTreeMap<u32, Pusher>,
+    /// Contacts whose joint broke: they grab nothing until lifted.
+    broken: BTreeSet<u32>,
+    contacts: usize,
+}
+
+impl JointTechnique {
+    pub fn new(config: TechniqueConfig) -> Self {
+        JointTechnique {
+            config,
+            grabs: BTreeMap::new(),
+            soft_grabs: BTreeMap::new(),
+            pushers: BTreeMap::new(),
+            broken: BTreeSet::new(),
+            contacts: 0,
+        }
+    }
+
+    fn try_grab(&self, world: &mut World, target: Vec2, v_hand: Vec2) -> Option<Hold> {
+        let hit = world.cast_contact_ray(target)?;
+        if let Some((h, particle)) = hit.soft {
+            let physics = world.physics_mut();
+            let at = physics.soft_bodies.get(h)?.particle_position(particle as usize);
+            let anchor = physics.bodies.insert(RigidBodyBuilder::kinematic_position_based().translation(at).build());
+            physics.soft_bodies.get_mut(h)?.attach_particle(particle as usize, anchor, &physics.bodies);
+            return Some(Hold::Soft(SoftGrab { anchor, z: at.z }));
+        }
+        let object = hit.object?;
+        let h = world.object_body(object);
+        let physics = world.physics_mut();
+        let body = physics.bodies.get(h)?;
+        if !body.is_dynamic() {
+            return None;
+        }
+        let local = body.position().inverse_transform_point(hit.point);
+        let anchor = physics.bodies.insert(RigidBodyBuilder::kinematic_position_based().translation(hit.point).build());
+        let joint = SpringJointBuilder::new(0.0, self.config.joint_stiffness, self.config.joint_damping)
+            .local_anchor1(Vec3::ZERO)
+            .local_anchor2(local)
+            .build();
+        let joint = physics.impulse_joints.insert(anchor, h, joint, true);
+        Some(Hold::Object(Grab { anchor, joint, object, local, z: hit.point.z, v_hand }))
+    }
+
+    /// The soft particle held by `anchor` (its position) and the force (N)
+    /// the attachment applied over the last step; `None` once it is gone.
+    fn soft_held(world: &World, anchor: RigidBodyHandle, dt: f32) -> Option<(Vec3, f32)> {
+        world.physics().soft_bodies.iter().find_map(|(_, b)| {
+            let a = b.particle_attachments().iter().find(|a| a.body == anchor)?;
+            Some((b.particle_position(a.particle as usize), a.impulse().length() / dt))
+        })
+    }
+
+    fn release_soft(world: &mut World, g: SoftGrab) {
+        let physics = world.physics_mut();
+        for (_, b) in physics.soft_bodies.iter_mut() {
+            let held: Vec<u32> =
+                b.particle_attachments().iter().filter(|a| a.body == g.anchor).map(|a| a.particle).collect();
+            for p in held {
+                b.detach_particle(p as usize);
+            }
+        }
+        remove_body(world, g.anchor);
+    }
+
+    fn release(world: &mut World, g: Grab) {
+        world.physics_mut().impulse_joints.remove(g.joint, true);
+        remove_body(world, g.anchor);
+        // No slingshot: the object leaves with the hand's velocity, not with
+        // energy stored in the stretched spring.
+        let h = world.object_body(g.object);
+        if let Some(b) = world.physics_mut().bodies.get_mut(h) {
+            let v = b.linvel();
+            let cap = g.v_hand.length() * 1.2 + 0.05;
+            let horiz = Vec2::new(v.x, v.y);
+            if horiz.length() > cap {
+                let c = clamp_len(horiz, cap);
+                b.set_linvel(Vec3::new(c.x, c.y, v.z), true);
+            }
+        }
+    }
+
+    fn update_pusher(&mut self, world: &mut World, c: &Contact, input: &TechniqueInput<'_>, screen: Vec2) {
+        let max_step = self.config.max_contact_speed * input.dt;
+        if let Some(mut p) = self.pushers.get(&c.id).copied() {
+            let (target, shape) = pusher_shape(world, c, input, screen, p.base_z, p.scale);
+            let cur = world.physics().bodies.get(p.body).map_or(target.extend(p.base_z), RigidBody::translation);
+            let next = (cur.truncate() + clamp_len(target - cur.truncate(), max_step)).extend(p.base_z);
+            // Grow back towards the whole hull only where that overlaps nothing.
+            let grown = PRISM_SCALES.iter().copied().rev().find(|&k| k > p.scale).unwrap_or(p.scale);
+            let shape = if grown > p.scale {
+                let (_, bigger) = pusher_shape(world, c, input, screen, p.base_z, grown);
+                if overlaps_object(world, &bigger, next) {
+                    shape
+                } else {
+                    p.scale = grown;
+                    self.pushers.insert(c.id, p);
+                    bigger
+                }
+            } else {
+                shape
+            };
+            let physics = world.physics_mut();
+            if let Some(b) = physics.bodies.get_mut(p.body) {
+                b.set_next_kinematic_translation(next);
+            }
+            if let Some(col) = physics.colliders.get_mut(p.collider) {
+                col.set_shape(shape);
+            }
+        } else {
+            // Stand on the surface under the finger (beside an object, that
+            // is the surface next to it, not the object's side).
+            let base_z = support_below(world, screen).map_or(0.0, |h| h.point.z) + 0.001;
+            // Never where it would overlap an object (rapier would shove the
+            // object out, maybe upwards): the largest part of the hull that
+            // is clear, or none this frame.
+            let Some((scale, target, shape)) = PRISM_SCALES.iter().find_map(|&k| {
+                let (target, shape) = pusher_shape(world, c, input, screen, base_z, k);
+                (!overlaps_object(world, &shape, target.extend(base_z))).then_some((k, target, shape))
+            }) else {
+                return;
+            };
+            let physics = world.physics_mut();
+            let body = physics
+                .bodies
+                .insert(RigidBodyBuilder::kinematic_position_based().translation(target.extend(base_z)).build());
+            let col = ColliderBuilder::new(shape)
+                .friction(self.config.friction)
+                .collision_groups(Layer::Proxy.groups())
+                .build();
+            let collider = physics.colliders.insert_with_parent(col, body, &mut physics.bodies);
+            self.pushers.insert(c.id, Pusher { body, collider, base_z, scale });
+        }
+    }
+}
+
+/// Where a pusher standing at `base_z` goes and its shape: the contact's
+/// hull where it appears at touch height (perspective), relative to the
+/// contact's own point there, scaled by `scale` about that point.
+fn pusher_shape(
+    world: &World,
+    c: &Contact,
+    input: &TechniqueInput<'_>,
+    screen: Vec2,
+    base_z: f32,
+    scale: f32,
+) -> (Vec2, SharedShape) {
+    let mid = base_z + PRISM_TOUCH_HEIGHT;
+    let target = at_height(world, screen, mid);
+    let hull: Vec<Vec2> = c
+        .blob
+        .hull
+        .iter()
+        .map(|q| {
+            (at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target) * scale
+        })
+        .collect();
+    (target, prism(&hull, input.sensor.metres_per_pixel()))
+}
+
+/// Whether a prism of `shape` standing at `base` would overlap a dynamic
+/// scene object.
+fn overlaps_object(world: &World, shape: &SharedShape, base: Vec3) -> bool {
+    let physics = world.physics();
+    let pose = Pose::from_translation(base);
+    (0..world.object_count()).filter(|&i| world.is_active(i)).any(|i| {
+        let dynamic = physics.bodies.get(world.object_body(i)).is_some_and(RigidBody::is_dynamic);
+        dynamic
+            && physics.colliders.get(world.object_collider(i)).is_some_and(|c| {
+                rapier3d::parry::query::intersection_test(&pose, shape.as_ref(), c.position(), c.shape())
+                    .is_ok_and(|hit| hit.intersecting)
+            })
+    })
+}
+
+/// A prism over a contact hull (points relative to its centroid), from the
+/// surface up `PRISM_HEIGHT`; a small square one for tiny or degenerate hulls.
+fn prism(hull: &[Vec2], pixel: f32) -> SharedShape {
+    let extrude = |outline: &[Vec2]| {
+        let pts: Vec<Vec3> = outline.iter().flat_map(|p| [p.extend(0.0), p.extend(PRISM_HEIGHT)]).collect();
+        SharedShape::convex_hull(&pts)
+    };
+    if hull.len() >= 3
+        && let Some(s) = extrude(hull)
+    {
+        return s;
+    }
+    let r = hull.iter().map(|p| p.length()).fold(pixel * 2.0, f32::max);
+    let square = [Vec2::new(-r, -r), Vec2::new(r, -r), Vec2::new(r, r), Vec2::new(-r, r)];
+    extrude(&square).unwrap_or_else(|| SharedShape::cuboid(r, r, PRISM_HEIGHT / 2.0))
+}
+
+impl Technique for JointTechnique {
+    fn kind(&self) -> TechniqueKind {
+        TechniqueKind::Joint
+    }
+
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+        world.require_joints("the Joint technique")?;
+        self.contacts = input.frame.contacts.len();
+        let dt = input.dt;
+        let max_step = self.config.max_contact_speed * dt;
+        let mut seen = BTreeSet::new();
+        for c in &input.frame.contacts {
+            seen.insert(c.id);
+            let target = table_point(input.sensor, c.blob.centroid);
+            let v_hand = clamp_len(table_velocity(input.sensor, c.velocity_px, dt), self.config.max_contact_speed);
+            if let Some(g) = self.soft_grabs.get(&c.id).copied() {
+                let goal = at_height(world, target, g.z);
+                let held = Self::soft_held(world, g.anchor, dt);
+                let physics = world.physics_mut();
+                let cur = physics.bodies.get(g.anchor).map_or(Vec3::ZERO, RigidBody::translation);
+                let next = cur.truncate() + clamp_len(goal - cur.truncate(), max_step);
+                if let Some(a) = physics.bodies.get_mut(g.anchor) {
+                    a.set_next_kinematic_translation(next.extend(g.z));
+                }
+                if held.is_none_or(|(_, force)| force > self.config.joint_break_force) {
+                    self.soft_grabs.remove(&c.id);
+                    self.broken.insert(c.id);
+                    Self::release_soft(world, g);
+                }
+                continue;
+            }
+            if let Some(mut g) = self.grabs.get(&c.id).copied() {
+                g.v_hand = v_hand;
+                let object_body = world.object_body(g.object);
+                let goal = at_height(world, target, g.z);
+                let physics = world.physics_mut();
+                let cur = physics.bodies.get(g.anchor).map_or(Vec3::ZERO, RigidBody::translation);
+                let next = cur.truncate() + clamp_len(goal - cur.truncate(), max_step);
+                if let Some(a) = physics.bodies.get_mut(g.anchor) {
+                    a.set_next_kinematic_translation(next.extend(g.z));
+                }
+                // The spring's pull: stiffness × stretch. Past the break force it snaps.
+                let obj = physics.bodies.get(object_body).map(|b| b.position().transform_point(g.local));
+                let stretch = obj.map_or(0.0, |p| (p - next.extend(g.z)).length());
+                if self.config.joint_stiffness * stretch > self.config.joint_break_force || !world.is_active(g.object) {
+                    self.grabs.remove(&c.id);
+                    self.broken.insert(c.id);
+                    Self::release(world, g);
+                } else {
+                    self.grabs.insert(c.id, g);
+                }
+                continue;
+            }
+            if !self.broken.contains(&c.id)
+                && !self.pushers.contains_key(&c.id)
+                && let Some(hold) = self.try_grab(world, target, v_hand)
+            {
+                match hold {
+                    Hold::Object(g) => self.grabs.insert(c.id, g).map(|_| ()),
+                    Hold::Soft(g) => self.soft_grabs.insert(c.id, g).map(|_| ()),
+                };
+                continue;
+            }
+            self.update_pusher(world, c, input, target);
+        }
+        let lifted: Vec<u32> = self.grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
+        for id in lifted {
+            if let Some(g) = self.grabs.remove(&id) {
+                Self::release(world, g);
+            }
+        }
+        let lifted: Vec<u32> = self.soft_grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
+        for id in lifted {
+            if let Some(g) = self.soft_grabs.remove(&id) {
+                Self::release_soft(world, g);
+            }
+        }
+        let lifted: Vec<u32> = self.pushers.keys().copied().filter(|id| !seen.contains(id)).collect();
+        for id in lifted {
+            if let Some(p) = self.pushers.remove(&id) {
+                remove_body(world, p.body);
+            }
+        }
+        self.broken.retain(|id| seen.contains(id));
+        Ok(())
+    }
+
+    fn feedback(&self, world: &World) -> Feedback {
+        let physics = world.physics();
+        let mut lines: Vec<(Vec3, Vec3)> = self
+            .grabs
+            .values()
+            .filter_map(|g| {
+                let a = physics.bodies.get(g.anchor)?.translation();
+                let o = physics.bodies.get(world.object_body(g.object))?.position().transform_point(g.local);
+                Some((a, o))
+            })
+            .collect();
+        lines.extend(self.soft_grabs.values().filter_map(|g| {
+            let a = physics.bodies.get(g.anchor)?.translation();
+            let (p, _) = Self::soft_held(world, g.anchor, world.dt())?;
+            Some((a, p))
+        }));
+        Feedback { lines, cubes: Vec::new() }
+    }
+
+    fn counts(&self) -> TechniqueCounts {
+        let held = self.grabs.len() + self.soft_grabs.len();
+        TechniqueCounts { contacts: self.contacts, bodies: held + self.pushers.len(), joints: held }
+    }
+
+    fn clear(&mut self, world: &mut World) {
+        for (_, g) in std::mem::take(&mut self.grabs) {
+            Self::release(world, g);
+        }
+        for (_, g) in std::mem::take(&mut self.soft_grabs) {
+            Self::release_soft(world, g);
+        }
+        for (_, p) in std::mem::take(&mut self.pushers) {
+            remove_body(world, p.body);
+        }
+        self.broken.clear();
+    }
+
+    fn config_mut(&mut self) -> &mut TechniqueConfig {
+        &mut self.config
+    }
+}

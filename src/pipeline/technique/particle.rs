@@ -1,0 +1,397 @@
+//! Particle proxies: one small body per high-gradient (Sobel) pixel.
+//!
+//! Each edge sample is ray-cast to the surface it touches, moved by the flow
+//! at that pixel projected onto that surface's tangent plane (paper, Figure
+//! 6), and pushed down by gravity. Particles never collide with each other.
+//!
+//! Two variants behave the same: the paper's own (`particle_pooled = false`),
+//! which creates every particle before the step and destroys it after, and a
+//! pooled one that keeps bodies and re-places them. Pooling keeps each body on
+//! a stable point of the outline (matched by position through the flow), so
+//! rapier's broad phase keeps its pairs; PLATFORM.md measured that pooling
+//! without such coherence is *slower* than create/destroy.
+//!
+//! Two departures from the paper, both measured (README, "Particles: what
+//! they cost" and the study notes): a particle that can touch nothing
+//! movable during its step is drawn but not simulated (`particle_cull`),
+//! and a particle never slides along a surface faster than
+//! [`MAX_SURFACE_SPEEDUP`] times the hand moves over the table.
+
+use super::proxy::{gravity_scale_for, pressure_weight, remove_body, soft_mass};
+use super::surface_point::{clamp_len, project_flow, table_point};
+use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use crate::pipeline::surface::Sensor;
+use crate::pipeline::vision::FlowInterest;
+use crate::pipeline::world::{Layer, Reach, World, WorldError};
+use glam::{Vec2, Vec3};
+use rapier3d::prelude::*;
+use std::collections::HashMap;
+
+/// Outline spacing (m) that `particle_mass` and `particle_weight` are given
+/// for: the default stride (3 px) on the default sensor (1.5625 mm pixels).
+/// Particles stand for a length of outline, so at a finer spacing each one
+/// weighs proportionally less: resolution and stride trade accuracy for
+/// time without changing how hard a hand presses.
+pub const REFERENCE_SPACING: f32 = 3.0 * 0.001_562_5;
+
+/// Extra distance (m) at which a particle is still simulated near a
+/// movable body, beyond what both can travel in the step.
+const CULL_SLACK: f32 = 0.01;
+
+/// A particle's speed along the surface it touches, at most this many times
+/// the hand's speed over the table.
+const MAX_SURFACE_SPEEDUP: f32 = 1.2;
+
+/// How much larger a length looks on screen than on the table, at most:
+/// perspective scales a point at height z by H / (H - z), under 1.1 for
+/// anything a hand touches under the default camera.
+const MAX_PERSPECTIVE: f32 = 1.25;
+
+/// Grid cell (px) for matching pooled particles to this frame's samples.
+const CELL: f32 = 4.0;
+/// A pooled particle is re-used for a sample within this many pixels of its
+/// flow-predicted position.
+const MATCH_PX: f32 = 3.0;
+
+#[derive(Debug, Clone, Copy)]
+struct Slot {
+    body: RigidBodyHandle,
+    /// Pixel position it sat on last frame.
+    px: [f32; 2],
+    active: bool,
+    /// The mass its collider was given.
+    mass: f32,
+}
+
+#[derive(Debug)]
+pub struct ParticleTechnique {
+    config: TechniqueConfig,
+    /// Pooled bodies (pooled variant) or this frame's bodies (per-frame variant).
+    slots: Vec<Slot>,
+    positions: Vec<Vec3>,
+    /// This frame's culled particles (feedback only, see `particle_cull`).
+    sensed_only: Vec<Vec3>,
+    /// The movable bodies' reach, computed for `flow_interest` and used
+    /// again by `apply` in the same frame (the world has not stepped since).
+    reach: Option<Vec<Reach>>,
+    contacts: usize,
+}
+
+/// One particle to place this frame.
+#[derive(Debug, Clone, Copy)]
+struct Placement {
+    px: [f32; 2],
+    /// This frame's flow at `px` (pixels): where the sample was one frame ago.
+    flow_px: [f32; 2],
+    center: Vec3,
+    velocity: Vec3,
+    /// Press (N).
+    weight: f32,
+    /// Inertia (kg).
+    mass: f32,
+}
+
+impl ParticleTechnique {
+    pub fn new(config: TechniqueConfig) -> Self {
+        ParticleTechnique {
+            config,
+            slots: Vec::new(),
+            positions: Vec::new(),
+            sensed_only: Vec::new(),
+            reach: None,
+            contacts: 0,
+        }
+    }
+
+    pub(super) fn config(&self) -> &TechniqueConfig {
+        &self.config
+    }
+
+    /// Where each particle goes this frame, and where the culled ones sit
+    /// (pure given the frame and world).
+    fn placements(&mut self, input: &TechniqueInput<'_>, world: &World) -> (Vec<Placement>, Vec<Vec3>) {
+        // Stride and edge threshold were applied by the vision stage, which
+        // the session configures from `particle_stride` and
+        // `particle_edge_threshold`: one knob each, not two.
+        let mut samples: Vec<_> = input.frame.edges.iter().collect();
+        if samples.len() > self.config.particle_cap {
+            // Drop evenly, never the tail of the list only.
+            let keep = self.config.particle_cap;
+            let n = samples.len();
+            samples = (0..keep).map(|k| samples[k * n / keep]).collect();
+        }
+        let r = self.config.particle_radius;
+        let share = self.config.particle_stride as f32 * input.sensor.metres_per_pixel() / REFERENCE_SPACING;
+        let reach = match self.reach.take() {
+            Some(r) => r,
+            None if self.config.particle_cull => world.movable_reach(),
+            None => Vec::new(),
+        };
+        let mut out = Vec::with_capacity(samples.len());
+        let mut culled = Vec::new();
+        for e in samples {
+            let p = table_point(input.sensor, e.px);
+            let Some(hit) = world.cast_contact_ray(p) else { continue };
+            let next = table_point(input.sensor, [e.px[0] + e.flow_px[0], e.px[1] + e.flow_px[1]]);
+            let p_next = project_flow(world, &hit, next);
+            let mut v = (p_next - hit.point) / input.dt;
+            // Tangential only: the plane projection already removed the normal part.
+            v -= hit.normal * v.dot(hit.normal);
+            // Never faster than the hand over the table (plus perspective's
+            // scale-up): on a face the camera sees edge-on, like a ball's
+            // far side, the projection turns a millimetre of flow into a
+            // centimetre of slide down the face, and a particle driven down
+            // into the wedge under a ball shot it backwards at 1.2 m/s.
+            let hand_speed = (next - p).length() / input.dt;
+            v = v.clamp_length_max(hand_speed * MAX_SURFACE_SPEEDUP);
+            let vt = clamp_len(Vec2::new(v.x, v.y), self.config.max_contact_speed);
+            let vz = if v.z.abs() > self.config.max_contact_speed {
+                v.z.signum() * self.config.max_contact_speed
+            } else {
+                v.z
+            };
+            let offset = if self.config.particle_capsules { r * 3.0 } else { r };
+            let center = hit.point + hit.normal * (offset - 0.0001);
+            // No flow measured: the vision stage found it out of reach of
+            // everything movable (see `flow_interest`).
+            if self.config.particle_cull
+                && hit.soft.is_none()
+                && (!e.has_flow || !reach.iter().any(|b| b.can_touch(center, offset, v.length(), input.dt, CULL_SLACK)))
+            {
+                culled.push(center);
+                continue;
+            }
+            let weight = pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey)) * share;
+            out.push(Placement {
+                px: e.px,
+                flow_px: e.flow_px,
+                // Just touching (0.1 mm in). rapier's soft contact (30 Hz) does
+                // not give a new contact its full press in one step: 16
+                // particles resting on a box get 29% of the normal impulse
+                // their weight calls for in their first step; pooled ones,
+                // re-placed like this, 75%, 91% and then 96-102% from the
+                // fifth step (warm-started). Created afresh every step (the
+                // paper's variant) they climb to 2-3x as the box under them
+                // sinks into its own soft contact (tests/particle_press.rs).
+                center,
+                velocity: Vec3::new(vt.x, vt.y, vz),
+                weight,
+                // On a soft body a particle weighs what it presses (see `soft_mass`).
+                mass: if hit.soft.is_some() { soft_mass(weight) } else { self.config.particle_mass * share },
+            });
+        }
+        (out, culled)
+    }
+
+    fn new_body(&self, world: &mut World, p: &Placement) -> RigidBodyHandle {
+        let r = self.config.particle_radius;
+        let shape = if self.config.particle_capsules {
+            ColliderBuilder::capsule_z(r * 2.0, r)
+        } else {
+            ColliderBuilder::ball(r)
+        };
+        let physics = world.physics_mut();
+        // Rotations locked: a rolling ball would transmit no friction.
+        let body = physics.bodies.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(p.center)
+                .linvel(p.velocity)
+                .gravity_scale(gravity_scale_for(p.mass, p.weight))
+                .lock_rotations()
+                .can_sleep(false)
+                .build(),
+        );
+        let col = shape
+            .mass(p.mass)
+            .friction(self.config.friction)
+            .friction_combine_rule(CoefficientCombineRule::Max)
+            .restitution(0.0)
+            .collision_groups(Layer::Particle.groups())
+            .build();
+        physics.colliders.insert_with_parent(col, body, &mut physics.bodies);
+        body
+    }
+
+    fn place_pooled(&mut self, world: &mut World, placements: &[Placement]) {
+        // Index last frame's active slots by where they sat.
+        let key = |px: [f32; 2]| ((px[0] / CELL).floor() as i32, (px[1] / CELL).floor() as i32);
+        let mut grid: HashMap<(i32, i32), Vec<usize>> = HashMap::new();
+        for (i, s) in self.slots.iter().enumerate() {
+            if s.active {
+                grid.entry(key(s.px)).or_default().push(i);
+            }
+        }
+        let mut taken = vec![false; self.slots.len()];
+        let mut assignment = vec![usize::MAX; placements.len()];
+        for (k, p) in placements.iter().enumerate() {
+            // Where this outline point was last frame, by its flow.
+            let prev = [p.px[0] - p.flow_px[0], p.px[1] - p.flow_px[1]];
+            let (cx, cy) = key(prev);
+            let mut best = (MATCH_PX * MATCH_PX, usize::MAX);
+            for dx in -1..=1 {
+                for dy in -1..=1 {
+                    for &i in grid.get(&(cx + dx, cy + dy)).map_or(&[][..], Vec::as_slice) {
+                        if taken[i] {
+                            continue;
+                        }
+                        let s = self.slots[i].px;
+                        let d2 = (s[0] - prev[0]).powi(2) + (s[1] - prev[1]).powi(2);
+                        if d2 <= best.0 {
+                            best = (d2, i);
+                        }
+                    }
+                }
+            }
+            if best.1 != usize::MAX {
+                taken[best.1] = true;
+                assignment[k] = best.1;
+            }
+        }
+        // Unmatched samples take a free slot, else a new body.
+        let mut free: Vec<usize> = (0..self.slots.len()).filter(|&i| !taken[i]).rev().collect();
+        for (k, p) in placements.iter().enumerate() {
+            if assignment[k] != usize::MAX {
+                continue;
+            }
+            if let Some(i) = free.pop() {
+                taken[i] = true;
+                assignment[k] = i;
+            } else {
+                let body = self.new_body(world, p);
+                self.slots.push(Slot { body, px: p.px, active: true, mass: p.mass });
+                taken.push(true);
+                assignment[k] = self.slots.len() - 1;
+            }
+        }
+        let mut used = vec![false; self.slots.len()];
+        let physics = world.physics_mut();
+        for (k, p) in placements.iter().enumerate() {
+            let i = assignment[k];
+            used[i] = true;
+            let s = &mut self.slots[i];
+            s.px = p.px;
+            s.active = true;
+            if let Some(b) = physics.bodies.get_mut(s.body) {
+                b.set_enabled(true);
+                b.set_position(Pose::from_translation(p.center), true);
+                b.set_linvel(p.velocity, true);
+                b.set_gravity_scale(gravity_scale_for(p.mass, p.weight), true);
+                // Moving between a soft body and rigid ground changes its mass
+                // (see `soft_mass`); rapier applies it at the next step.
+                if (s.mass - p.mass).abs() > 1e-7 {
+                    s.mass = p.mass;
+                    if let Some(&c) = b.colliders().first()
+                        && let Some(col) = physics.colliders.get_mut(c)
+                    {
+                        col.set_mass(p.mass);
+                    }
+                }
+            }
+        }
+        // Spare bodies are disabled (cheap) rather than removed.
+        for (i, s) in self.slots.iter_mut().enumerate() {
+            if !used[i] && s.active {
+                s.active = false;
+                if let Some(b) = physics.bodies.get_mut(s.body) {
+                    b.set_enabled(false);
+                }
+            }
+        }
+    }
+}
+
+impl Technique for ParticleTechnique {
+    fn kind(&self) -> TechniqueKind {
+        TechniqueKind::Particle
+    }
+
+    /// With culling, flow is needed only where a particle could reach
+    /// something movable: each body's box, grown by what `placements` adds
+    /// to it (the particle's size, the body's travel and the slack),
+    /// projected to the contact image. Vision grows each box further by the
+    /// point's own largest flow, times the speed cap and perspective, so
+    /// every particle `placements` keeps has its flow measured.
+    fn flow_interest(&mut self, world: &World, sensor: &Sensor, dt: f32) -> FlowInterest {
+        if !self.config.particle_cull {
+            self.reach = None;
+            return FlowInterest::All;
+        }
+        let reach = world.movable_reach();
+        let offset =
+            if self.config.particle_capsules { self.config.particle_radius * 3.0 } else { self.config.particle_radius };
+        let boxes = reach
+            .iter()
+            .map(|b| {
+                let grow = Vec3::splat(offset + b.speed * dt + CULL_SLACK);
+                let (lo, hi) = (b.min - grow, b.max + grow);
+                let mut px = [f32::MAX, f32::MAX, f32::MIN, f32::MIN];
+                for k in 0..8 {
+                    let corner = Vec3::new(
+                        if k & 1 == 0 { lo.x } else { hi.x },
+                        if k & 2 == 0 { lo.y } else { hi.y },
+                        if k & 4 == 0 { lo.z } else { hi.z },
+                    );
+                    let [x, y] = sensor.to_pixel(world.screen_point(corner).to_array());
+                    px = [px[0].min(x), px[1].min(y), px[2].max(x), px[3].max(y)];
+                }
+                px
+            })
+            .collect();
+        self.reach = Some(reach);
+        FlowInterest::Near { boxes, flow_scale: MAX_SURFACE_SPEEDUP * MAX_PERSPECTIVE }
+    }
+
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+        self.contacts = input.frame.contacts.len();
+        let (placements, culled) = self.placements(input, world);
+        self.sensed_only = culled;
+        if self.config.particle_pooled {
+            self.place_pooled(world, &placements);
+        } else {
+            // The paper's way: every particle is created now and destroyed after the step.
+            for p in &placements {
+                let body = self.new_body(world, p);
+                self.slots.push(Slot { body, px: p.px, active: true, mass: p.mass });
+            }
+        }
+        Ok(())
+    }
+
+    fn after_step(&mut self, world: &mut World) {
+        self.positions.clear();
+        let physics = world.physics();
+        for s in self.slots.iter().filter(|s| s.active) {
+            if let Some(b) = physics.bodies.get(s.body) {
+                self.positions.push(b.translation());
+            }
+        }
+        if !self.config.particle_pooled {
+            for s in std::mem::take(&mut self.slots) {
+                remove_body(world, s.body);
+            }
+        }
+    }
+
+    fn feedback(&self, _world: &World) -> Feedback {
+        let half = self.config.particle_radius;
+        let all = self.positions.iter().chain(&self.sensed_only);
+        Feedback { lines: Vec::new(), cubes: all.map(|p| (*p, half)).collect() }
+    }
+
+    fn counts(&self) -> TechniqueCounts {
+        TechniqueCounts { contacts: self.contacts, bodies: self.positions.len(), joints: 0 }
+    }
+
+    fn clear(&mut self, world: &mut World) {
+        for s in std::mem::take(&mut self.slots) {
+            remove_body(world, s.body);
+        }
+        self.positions.clear();
+        self.sensed_only.clear();
+        self.reach = None;
+    }
+
+    fn config_mut(&mut self) -> &mut TechniqueConfig {
+        &mut self.config
+    }
+}

@@ -1,0 +1,558 @@
+//! Contact tracking by overlap: persistent ids for the Joint and Proxy
+//! techniques, which attach something to "the same finger" frame after
+//! frame.
+//!
+//! # Rules
+//!
+//! Each contact of the previous frame is first moved by its velocity (its
+//! predicted place), then compared with the blobs of the new frame by pixel
+//! overlap (runs against runs, no label image).
+//!
+//! 1. **Continue.** A previous contact hands its id to the new blob it
+//!    overlaps most. A blob claimed by exactly one previous contact takes
+//!    its id.
+//! 2. **Merge.** A blob claimed by several previous contacts takes the id of
+//!    the *oldest* (earliest first seen; lower id on a tie). The others are
+//!    remembered inside it, with where they were relative to its centroid.
+//! 3. **Split.** When a previous contact overlaps several new blobs, the
+//!    blobs and the identities it carried (its own and any merged into it)
+//!    are paired by position, nearest first, within `max_jump_px`. So two
+//!    fingers that touched and parted get their own ids back, each on its
+//!    own side. The carried contact's own id always goes to one part (the
+//!    one overlapping it most, if position did not place it); parts left
+//!    over get new ids; identities left over stay merged in the part
+//!    nearest to them.
+//! 4. **Jump.** A blob overlapping nothing takes the id of the nearest
+//!    previous contact that overlaps nothing either, if its predicted
+//!    centroid is within `max_jump_px` (a fast flick can outrun overlap).
+//! 5. **New / lost.** Any other blob gets a new id (ids are never reused);
+//!    a previous contact matched by nothing is gone.
+//!
+//! Velocity is the weighted-centroid displacement since the previous frame,
+//! except in a frame where the contact merged or split: then the centroid
+//! jumps without anything moving, and the previous velocity carries over.
+
+use std::collections::HashSet;
+
+use super::components::{BBox, Blob, Run};
+use super::grid::BoxGrid;
+
+/// Tracker settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TrackerParams {
+    /// Furthest a contact may be from its predicted place and keep its id
+    /// without overlap, or reclaim an id after a split; pixels.
+    pub max_jump_px: f32,
+    /// Blobs with major / minor axis below this are too round for their
+    /// axis angle to mean anything: no rotation is reported for them.
+    pub min_elongation: f32,
+}
+
+impl Default for TrackerParams {
+    fn default() -> Self {
+        Self { max_jump_px: 40.0, min_elongation: 1.2 }
+    }
+}
+
+/// What tracking says about one blob of the current frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Tracked {
+    pub id: u32,
+    /// Weighted-centroid motion, pixels per frame.
+    pub velocity: [f32; 2],
+    /// Turn of the principal axis since the previous frame, radians per
+    /// frame in image orientation (positive = clockwise on screen); 0 for
+    /// round blobs and in frames where the contact merged or split.
+    pub rotation: f32,
+    /// Frames since the id was first seen (0 = new this frame).
+    pub age: u32,
+}
+
+/// An identity carried by a (merged) contact.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Identity {
+    id: u32,
+    birth: u64,
+    /// Its last own centroid relative to the carrying contact's centroid.
+    offset: [f32; 2],
+}
+
+/// A contact of the previous frame.
+#[derive(Debug, Clone, PartialEq)]
+struct Live {
+    id: u32,
+    birth: u64,
+    centroid: [f32; 2],
+    velocity: [f32; 2],
+    /// Principal-axis angle, when the blob is elongated enough.
+    angle: Option<f32>,
+    bbox: BBox,
+    runs: Vec<Run>,
+    /// Identities merged in this contact, its own included; empty when it
+    /// is a single contact.
+    members: Vec<Identity>,
+}
+
+impl Live {
+    fn predicted(&self) -> [f32; 2] {
+        [self.centroid[0] + self.velocity[0], self.centroid[1] + self.velocity[1]]
+    }
+
+    /// The identities it carries, its own first when single.
+    fn identities(&self) -> Vec<Identity> {
+        if self.members.is_empty() {
+            vec![Identity { id: self.id, birth: self.birth, offset: [0.0, 0.0] }]
+        } else {
+            self.members.clone()
+        }
+    }
+}
+
+/// The result for one new blob while the frame is being resolved.
+#[derive(Debug, Clone)]
+struct Assignment {
+    id: u32,
+    birth: u64,
+    velocity: [f32; 2],
+    /// Previous angle, when the contact continued without a topology change.
+    previous_angle: Option<f32>,
+    members: Vec<Identity>,
+}
+
+/// Keeps contact ids from frame to frame.
+#[derive(Debug, Clone, Default)]
+pub struct Tracker {
+    params: TrackerParams,
+    live: Vec<Live>,
+    next_id: u32,
+    frame: u64,
+}
+
+fn distance(a: [f32; 2], b: [f32; 2]) -> f32 {
+    (a[0] - b[0]).hypot(a[1] - b[1])
+}
+
+/// Pixels shared by `a` moved by `shift` and `b`; both sorted by row, then
+/// column.
+fn overlap(a: &[Run], shift: [i32; 2], b: &[Run]) -> u32 {
+    let (Some(af), Some(al), Some(bf), Some(bl)) = (a.first(), a.last(), b.first(), b.last()) else {
+        return 0;
+    };
+    // Only the rows both cover: a small blob against a huge one (a frame
+    // of speckle) then costs the small one's rows, not the huge one's.
+    let (a_first, a_last) = (i64::from(af.y) + i64::from(shift[1]), i64::from(al.y) + i64::from(shift[1]));
+    let (lo, hi) = (a_first.max(i64::from(bf.y)), a_last.min(i64::from(bl.y)));
+    if lo > hi {
+        return 0;
+    }
+    let a = &a[a.partition_point(|r| i64::from(r.y) + i64::from(shift[1]) < lo)..];
+    let a = &a[..a.partition_point(|r| i64::from(r.y) + i64::from(shift[1]) <= hi)];
+    let b = &b[b.partition_point(|r| i64::from(r.y) < lo)..];
+    let b = &b[..b.partition_point(|r| i64::from(r.y) <= hi)];
+    let (mut i, mut j, mut total) = (0, 0, 0i64);
+    while i < a.len() && j < b.len() {
+        let ay = i64::from(a[i].y) + i64::from(shift[1]);
+        let by = i64::from(b[j].y);
+        match ay.cmp(&by) {
+            std::cmp::Ordering::Less => i += 1,
+            std::cmp::Ordering::Greater => j += 1,
+            std::cmp::Ordering::Equal => {
+                let a0 = i64::from(a[i].x0) + i64::from(shift[0]);
+                let a1 = i64::from(a[i].x1) + i64::from(shift[0]);
+                let (b0, b1) = (i64::from(b[j].x0), i64::from(b[j].x1));
+                total += (a1.min(b1) - a0.max(b0)).max(0);
+                if a1 < b1 {
+                    i += 1;
+                } else {
+                    j += 1;
+                }
+            }
+        }
+    }
+    total as u32
+}
+
+fn boxes_meet(a: BBox, shift: [i32; 2], b: BBox) -> bool {
+    let (ax0, ax1) = (i64::from(a.x0) + i64::from(shift[0]), i64::from(a.x1) + i64::from(shift[0]));
+    let (ay0, ay1) = (i64::from(a.y0) + i64::from(shift[1]), i64::from(a.y1) + i64::from(shift[1]));
+    ax0 <= i64::from(b.x1) && i64::from(b.x0) <= ax1 && ay0 <= i64::from(b.y1) && i64::from(b.y0) <= ay1
+}
+
+/// Difference of two axis angles (defined modulo pi), in `(-pi/2, pi/2]`.
+fn axis_turn(from: f32, to: f32) -> f32 {
+    use std::f32::consts::{FRAC_PI_2, PI};
+    let mut d = (to - from).rem_euclid(PI);
+    if d > FRAC_PI_2 {
+        d -= PI;
+    }
+    d
+}
+
+impl Tracker {
+    pub fn new(params: TrackerParams) -> Self {
+        Self { params, live: Vec::new(), next_id: 1, frame: 0 }
+    }
+
+    pub fn params(&self) -> TrackerParams {
+        self.params
+    }
+
+    /// Forgets every contact (ids keep counting up).
+    pub fn reset(&mut self) {
+        self.live.clear();
+    }
+
+    fn new_id(&mut self) -> u32 {
+        let id = self.next_id.max(1);
+        self.next_id = id.wrapping_add(1);
+        id
+    }
+
+    /// Assigns ids to this frame's blobs, in their order.
+    pub fn update(&mut self, blobs: &[Blob]) -> Vec<Tracked> {
+        self.frame += 1;
+        let frame = self.frame;
+        let gate = self.params.max_jump_px;
+        let prev = std::mem::take(&mut self.live);
+        let centroid = |j: usize| blobs[j].weighted_centroid;
+
+        // Overlap of every predicted previous contact with the blobs near
+        // it (the grid keeps this linear in the number of blobs).
+        let as_box = |b: BBox, shift: [i64; 2]| {
+            [
+                i64::from(b.x0) + shift[0],
+                i64::from(b.y0) + shift[1],
+                i64::from(b.x1) + shift[0],
+                i64::from(b.y1) + shift[1],
+            ]
+        };
+        let grid = BoxGrid::new(&blobs.iter().map(|b| as_box(b.bbox, [0, 0])).collect::<Vec<_>>());
+        let mut near = Vec::new();
+        let mut overlaps: Vec<Vec<(usize, u32)>> = Vec::with_capacity(prev.len());
+        let mut overlapped_by: Vec<Vec<(usize, u32)>> = vec![Vec::new(); blobs.len()];
+        for (i, p) in prev.iter().enumerate() {
+            let shift = [p.velocity[0].round() as i32, p.velocity[1].round() as i32];
+            grid.query(as_box(p.bbox, [i64::from(shift[0]), i64::from(shift[1])]), &mut near);
+            let found: Vec<(usize, u32)> = near
+                .iter()
+                .map(|&j| j as usize)
+                .filter(|&j| boxes_meet(p.bbox, shift, blobs[j].bbox))
+                .map(|j| (j, overlap(&p.runs, shift, &blobs[j].runs)))
+                .filter(|&(_, a)| a > 0)
+                .collect();
+            for &(j, a) in &found {
+                overlapped_by[j].push((i, a));
+            }
+            overlaps.push(found);
+        }
+        let best: Vec<Option<usize>> = overlaps
+            .iter()
+            .map(|o| o.iter().max_by_key(|&&(j, a)| (a, std::cmp::Reverse(j))).map(|&(j, _)| j))
+            .collect();
+        let mut owners: Vec<Vec<usize>> = vec![Vec::new(); blobs.len()];
+        for (i, b) in best.iter().enumerate() {
+            if let Some(j) = *b {
+                owners[j].push(i);
+            }
+        }
+        // Blobs nobody claimed, attached to the previous contact overlapping
+        // them most: the parts a split produced.
+        let mut split_parts: Vec<Vec<usize>> = vec![Vec::new(); prev.len()];
+        for j in (0..blobs.len()).filter(|&j| owners[j].is_empty()) {
+            let parent = overlapped_by[j].iter().max_by_key(|&&(i, a)| (a, std::cmp::Reverse(i)));
+            if let Some(&(i, _)) = parent {
+                split_parts[i].push(j);
+            }
+        }
+
+        let mut out: Vec<Option<Assignment>> = vec![None; blobs.len()];
+
+        // Rules 1 and 2: continue and merge.
+        for j in 0..blobs.len() {
+            let Some(keeper) = owners[j].iter().copied().min_by_key(|&i| (prev[i].birth, prev[i].id)) else {
+                continue;
+            };
+            let p = &prev[keeper];
+            out[j] = Some(if owners[j].len() == 1 {
+                Assignment {
+                    id: p.id,
+                    birth: p.birth,
+                    velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
+                    previous_angle: p.angle,
+                    members: p.members.clone(),
+                }
+            } else {
+                let c = centroid(j);
+                let members = owners[j]
+                    .iter()
+                    .flat_map(|&i| {
+                        let o = &prev[i];
+                        let at = o.predicted();
+                        o.identities().into_iter().map(move |m| Identity {
+                            offset: [at[0] + m.offset[0] - c[0], at[1] + m.offset[1] - c[1]],
+                            ..m
+                        })
+                    })
+                    .collect();
+                Assignment { id: p.id, birth: p.birth, velocity: p.velocity, previous_angle: None, members }
+            });
+        }
+
+        // Rule 3: splits. (Ids in use, built only if a merge and a split
+        // meet in one frame.)
+        let mut taken: Option<HashSet<u32>> = None;
+        for (i, p) in prev.iter().enumerate() {
+            if split_parts[i].is_empty() {
+                continue;
+            }
+            let main = best[i].filter(|&b| owners[b].len() == 1);
+            let parts: Vec<usize> = main.into_iter().chain(split_parts[i].iter().copied()).collect();
+            let mut identities = p.identities();
+            if main.is_none() {
+                // The main part merged with others this same frame and keeps
+                // that result; the other parts draw from what is left.
+                let taken = taken.get_or_insert_with(|| {
+                    out.iter().flatten().flat_map(|a| a.members.iter().map(|m| m.id).chain([a.id])).collect()
+                });
+                identities.retain(|m| !taken.contains(&m.id));
+            }
+            let at = p.predicted();
+            let place = |m: &Identity| [at[0] + m.offset[0], at[1] + m.offset[1]];
+            let mut pairs: Vec<(f32, usize, usize)> = Vec::new();
+            for (k, &j) in parts.iter().enumerate() {
+                for (n, m) in identities.iter().enumerate() {
+                    let d = distance(centroid(j), place(m));
+                    if d <= gate {
+                        pairs.push((d, k, n));
+                    }
+                }
+            }
+            pairs.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
+            let mut part_identity: Vec<Option<usize>> = vec![None; parts.len()];
+            let mut identity_part: Vec<Option<usize>> = vec![None; identities.len()];
+            for (_, k, n) in pairs {
+                if part_identity[k].is_none() && identity_part[n].is_none() {
+                    part_identity[k] = Some(n);
+                    identity_part[n] = Some(k);
+                }
+            }
+            // The carried contact's own id must survive in some part.
+            if main.is_some()
+                && let Some(own) = identities.iter().position(|m| m.id == p.id)
+                && identity_part[own].is_none()
+            {
+                let overlap_of = |j: usize| overlaps[i].iter().find(|&&(k, _)| k == j).map_or(0, |&(_, a)| a);
+                if let Some(k) =
+                    (0..parts.len()).filter(|&k| part_identity[k].is_none()).max_by_key(|&k| overlap_of(parts[k]))
+                {
+                    part_identity[k] = Some(own);
+                    identity_part[own] = Some(k);
+                }
+            }
+            let mut assigned: Vec<Assignment> = parts
+                .iter()
+                .enumerate()
+                .map(|(k, _)| match part_identity[k] {
+                    Some(n) => Assignment {
+                        id: identities[n].id,
+                        birth: identities[n].birth,
+                        velocity: p.velocity,
+                        previous_angle: None,
+                        members: Vec::new(),
+                    },
+                    None => Assignment {
+                        id: self.new_id(),
+                        birth: frame,
+                        velocity: [0.0, 0.0],
+                        previous_angle: None,
+                        members: Vec::new(),
+                    },
+                })
+                .collect();
+            // Identities no part took stay merged in the nearest part.
+            for (n, m) in identities.iter().enumerate() {
+                if identity_part[n].is_some() {
+                    continue;
+                }
+                let spot = place(m);
+                if let Some(k) = (0..parts.len())
+                    .min_by(|&a, &b| distance(centroid(parts[a]), spot).total_cmp(&distance(centroid(parts[b]), spot)))
+                {
+                    let c = centroid(parts[k]);
+                    let a = &mut assigned[k];
+                    if a.members.is_empty() {
+                        a.members.push(Identity { id: a.id, birth: a.birth, offset: [0.0, 0.0] });
+                    }
+                    a.members.push(Identity { offset: [spot[0] - c[0], spot[1] - c[1]], ..*m });
+                }
+            }
+            for (k, a) in assigned.into_iter().enumerate() {
+                if let Some(taken) = &mut taken {
+                    taken.insert(a.id);
+                }
+                out[parts[k]] = Some(a);
+            }
+        }
+
+        // Rule 4: jumps, nearest first.
+        let orphans: Vec<usize> = (0..blobs.len()).filter(|&j| out[j].is_none()).collect();
+        let lost: Vec<usize> = (0..prev.len()).filter(|&i| overlaps[i].is_empty()).collect();
+        let spot = |c: [f32; 2], r: f32| {
+            [(c[0] - r).floor() as i64, (c[1] - r).floor() as i64, (c[0] + r).ceil() as i64, (c[1] + r).ceil() as i64]
+        };
+        let lost_grid = BoxGrid::new(&lost.iter().map(|&i| spot(prev[i].predicted(), 0.0)).collect::<Vec<_>>());
+        let mut pairs: Vec<(f32, usize, usize)> = Vec::new();
+        for &j in &orphans {
+            lost_grid.query(spot(centroid(j), gate), &mut near);
+            for &n in &near {
+                let i = lost[n as usize];
+                let d = distance(centroid(j), prev[i].predicted());
+                if d <= gate {
+                    pairs.push((d, j, i));
+                }
+            }
+        }
+        pairs.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
+        let mut used = vec![false; prev.len()];
+        for (_, j, i) in pairs {
+            if out[j].is_none() && !used[i] {
+                used[i] = true;
+                let p = &prev[i];
+                out[j] = Some(Assignment {
+                    id: p.id,
+                    birth: p.birth,
+                    velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
+                    previous_angle: p.angle,
+                    members: p.members.clone(),
+                });
+            }
+        }
+
+        // Rule 5: new contacts; then remember this frame.
+        let mut result = Vec::with_capacity(blobs.len());
+        for (j, blob) in blobs.iter().enumerate() {
+            let a = match out[j].take() {
+                Some(a) => a,
+                None => Assignment {
+                    id: self.new_id(),
+                    birth: frame,
+                    velocity: [0.0, 0.0],
+                    previous_angle: None,
+                    members: Vec::new(),
+                },
+            };
+            let angle = (blob.ellipse.elongation() >= self.params.min_elongation).then_some(blob.ellipse.angle);
+            let rotation = match (a.previous_angle, angle) {
+                (Some(from), Some(to)) => axis_turn(from, to),
+                _ => 0.0,
+            };
+            let members = if a.members.len() > 1 { a.members } else { Vec::new() };
+            result.push(Tracked { id: a.id, velocity: a.velocity, rotation, age: (frame - a.birth) as u32 });
+            self.live.push(Live {
+                id: a.id,
+                birth: a.birth,
+                centroid: blob.weighted_centroid,
+                velocity: a.velocity,
+                angle,
+                bbox: blob.bbox,
+                runs: blob.runs.clone(),
+                members,
+            });
+        }
+        result
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipeline::surface::ContactImage;
+    use crate::pipeline::vision::{find_blobs, threshold};
+
+    /// Blobs of filled squares of side `s` centred at the given points.
+    fn squares(centres: &[[i32; 2]], s: i32) -> Vec<Blob> {
+        let mut img = ContactImage::new(100, 60);
+        for c in centres {
+            for y in c[1] - s / 2..c[1] - s / 2 + s {
+                for x in c[0] - s / 2..c[0] - s / 2 + s {
+                    img.pixels[(y * 100 + x) as usize] = 200;
+                }
+            }
+        }
+        find_blobs(&img, &threshold(&img, 1), 1)
+    }
+
+    #[test]
+    fn moving_contact_keeps_its_id_and_speed() {
+        let mut t = Tracker::new(TrackerParams::default());
+        let a = t.update(&squares(&[[20, 30]], 8));
+        let b = t.update(&squares(&[[23, 30]], 8));
+        assert_eq!(a[0].id, b[0].id);
+        assert_eq!(b[0].velocity, [3.0, 0.0]);
+        assert_eq!(b[0].age, 1);
+        // Faster than its own size: prediction keeps the overlap.
+        let c = t.update(&squares(&[[26, 30]], 8));
+        let d = t.update(&squares(&[[40, 30]], 8));
+        assert_eq!(c[0].id, d[0].id);
+        // Lifted, then a new touch: a new id.
+        assert!(t.update(&[]).is_empty());
+        let e = t.update(&squares(&[[40, 30]], 8));
+        assert_ne!(e[0].id, d[0].id);
+        assert_eq!(e[0].age, 0);
+    }
+
+    #[test]
+    fn merge_keeps_the_older_id_and_split_restores_both() {
+        let mut t = Tracker::new(TrackerParams::default());
+        let old = t.update(&squares(&[[30, 30]], 8))[0].id;
+        let ab = t.update(&squares(&[[30, 30], [50, 30]], 8));
+        let young = ab[1].id;
+        assert_ne!(old, young);
+        t.update(&squares(&[[34, 30], [46, 30]], 8));
+        let merged = t.update(&squares(&[[37, 30], [43, 30]], 8));
+        assert_eq!(merged.len(), 1);
+        assert_eq!(merged[0].id, old);
+        t.update(&squares(&[[37, 30], [43, 30]], 8));
+        let apart = t.update(&squares(&[[33, 30], [47, 30]], 8));
+        assert_eq!(apart.len(), 2);
+        assert_eq!(apart[0].id, old);
+        assert_eq!(apart[1].id, young);
+    }
+
+    #[test]
+    fn split_restores_ids_on_the_right_side_whatever_the_sizes() {
+        let mut t = Tracker::new(TrackerParams::default());
+        let both = t.update(&squares(&[[30, 30], [50, 30]], 8));
+        let (left, right) = (both[0].id, both[1].id);
+        t.update(&squares(&[[37, 30], [43, 30]], 8));
+        // The right-hand part is the bigger one; ids must still follow sides.
+        let mut img = ContactImage::new(100, 60);
+        for y in 26..34 {
+            for x in 29..35 {
+                img.pixels[y * 100 + x] = 200;
+            }
+            for x in 42..56 {
+                img.pixels[y * 100 + x] = 200;
+            }
+        }
+        let apart = t.update(&find_blobs(&img, &threshold(&img, 1), 1));
+        assert_eq!((apart[0].id, apart[1].id), (left, right));
+    }
+
+    #[test]
+    fn splitting_a_single_contact_gives_a_new_id_to_the_smaller_part() {
+        let mut t = Tracker::new(TrackerParams::default());
+        let one = t.update(&squares(&[[30, 30]], 20))[0].id;
+        let parts = t.update(&squares(&[[26, 30], [36, 30]], 6));
+        assert_eq!(parts.len(), 2);
+        assert!(parts.iter().any(|p| p.id == one));
+        assert!(parts.iter().any(|p| p.id != one && p.age == 0));
+    }
+
+    #[test]
+    fn axis_turn_wraps() {
+        use std::f32::consts::PI;
+        assert!((axis_turn(1.5, -1.5) - (PI - 3.0)).abs() < 1e-6);
+        assert!((axis_turn(0.1, 0.3) - 0.2).abs() < 1e-6);
+    }
+}

@@ -1,0 +1,520 @@
+//! [`World`]: the scene's rigid bodies in rapier3d, stepped at a fixed rate.
+
+use super::config::WorldConfig;
+use super::error::WorldError;
+use super::groups::Layer;
+use super::ray::RayHit;
+use super::soft::{self, SOFT_TAG, SoftBodies};
+use super::stats::{StepStats, WorldStats};
+use crate::scene::{BodyKind, EffectSet, Scene, Shape};
+use glam::{Quat, Vec2, Vec3};
+use rapier3d::parry::bounding_volume::Aabb;
+use rapier3d::parry::query::{RayCast, RayIntersection};
+use rapier3d::prelude::*;
+use std::time::Instant;
+
+/// `user_data` tag of environment colliders (table, walls).
+const ENV_TAG: u128 = u128::MAX;
+
+/// The pose of one scene object.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ObjectPose {
+    pub position: Vec3,
+    pub rotation: Quat,
+    pub linvel: Vec3,
+    pub angvel: Vec3,
+    /// False once removed (a placed positioning object vanishes).
+    pub active: bool,
+}
+
+#[derive(Debug, Clone, Copy)]
+struct ObjectSlot {
+    body: RigidBodyHandle,
+    collider: ColliderHandle,
+    active: bool,
+}
+
+/// The physics world of one scene.
+pub struct World {
+    physics: PhysicsWorld,
+    config: WorldConfig,
+    scene: Scene,
+    objects: Vec<ObjectSlot>,
+    /// Declared soft bodies (src/pipeline/world/soft.rs); empty slots when their effect is off.
+    soft: SoftBodies,
+    /// The table, its walls and every object's collider, with the object
+    /// index (`None` for the environment) and a cached world AABB. Rigid
+    /// scene ray casts test these directly: rapier's broad phase also holds
+    /// the technique's particles, which sit exactly where contact rays go,
+    /// and walking past hundreds of them per ray cost more than the physics
+    /// (measured with `cargo bench --bench frame`).
+    scene_colliders: Vec<(ColliderHandle, Option<usize>, Aabb)>,
+    time: f64,
+    stats: WorldStats,
+    last: StepStats,
+}
+
+impl std::fmt::Debug for World {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("World")
+            .field("scene", &self.scene.name)
+            .field("config", &self.config)
+            .field("time", &self.time)
+            .finish_non_exhaustive()
+    }
+}
+
+impl World {
+    /// Builds the world simulating exactly the scene's declared effects.
+    pub fn new(scene: &Scene) -> World {
+        World::with_effects(scene, scene.effects)
+    }
+
+    /// Builds the world with an explicit effect set: the scene's declaration
+    /// plus whatever a technique requires, or [`EffectSet::all`] for the
+    /// benchmark that measures what ignoring the declaration costs.
+    pub fn with_effects(scene: &Scene, effects: EffectSet) -> World {
+        let config = WorldConfig::new(scene, effects);
+        let mut physics = PhysicsWorld::new();
+        physics.gravity = config.gravity;
+        let ip = &mut physics.integration_parameters;
+        ip.dt = config.dt;
+        ip.num_solver_iterations = config.solver_iterations;
+        ip.num_internal_pgs_iterations = config.pgs_iterations;
+        ip.length_unit = config.length_unit;
+        ip.max_ccd_substeps = config.ccd_substeps;
+        ip.contact_softness.natural_frequency = config.contact_hz;
+
+        let friction = |mu: f32| if config.friction { mu } else { 0.0 };
+
+        // The table: a slab whose top face is z = 0, a little larger than the
+        // display so objects at the rim still rest on something.
+        let t = scene.table;
+        let table = ColliderBuilder::cuboid(t.width / 2.0 + 0.05, t.depth / 2.0 + 0.05, 0.025)
+            .translation(Vec3::new(0.0, 0.0, -0.025))
+            .friction(friction(t.friction))
+            .restitution(t.restitution)
+            .collision_groups(Layer::Environment.groups())
+            .user_data(ENV_TAG)
+            .build();
+        let mut env = vec![physics.colliders.insert(table)];
+        if t.walls {
+            // Invisible rim walls: the display's edge keeps objects in view.
+            let h = 0.2;
+            let th = 0.02;
+            let walls = [
+                (Vec3::new(0.0, t.depth / 2.0 + th, h / 2.0), Vec3::new(t.width / 2.0 + 2.0 * th, th, h / 2.0)),
+                (Vec3::new(0.0, -t.depth / 2.0 - th, h / 2.0), Vec3::new(t.width / 2.0 + 2.0 * th, th, h / 2.0)),
+                (Vec3::new(t.width / 2.0 + th, 0.0, h / 2.0), Vec3::new(th, t.depth / 2.0 + 2.0 * th, h / 2.0)),
+                (Vec3::new(-t.width / 2.0 - th, 0.0, h / 2.0), Vec3::new(th, t.depth / 2.0 + 2.0 * th, h / 2.0)),
+            ];
+            for (c, half) in walls {
+                let wall = ColliderBuilder::cuboid(half.x, half.y, half.z)
+                    .translation(c)
+                    .friction(friction(0.2))
+                    .collision_groups(Layer::Environment.groups())
+                    .user_data(ENV_TAG)
+                    .build();
+                env.push(physics.colliders.insert(wall));
+            }
+        }
+
+        let mut objects = Vec::with_capacity(scene.objects.len());
+        for (i, o) in scene.objects.iter().enumerate() {
+            let builder = match o.body {
+                BodyKind::Dynamic => RigidBodyBuilder::dynamic()
+                    .linear_damping(o.linear_damping)
+                    .angular_damping(o.angular_damping)
+                    .can_sleep(config.sleeping)
+                    .ccd_enabled(config.ccd_substeps > 0),
+                BodyKind::Fixed => RigidBodyBuilder::fixed(),
+            };
+            let body = builder.pose(Pose::from_parts(o.position, o.rotation)).user_data(i as u128).build();
+            let body = physics.bodies.insert(body);
+            let layer = if o.body == BodyKind::Dynamic { Layer::Object } else { Layer::Environment };
+            let mut cb = collider_for(o.shape)
+                .friction(friction(o.friction))
+                .restitution(o.restitution)
+                .collision_groups(layer.groups())
+                .user_data(i as u128);
+            if o.body == BodyKind::Dynamic {
+                cb = cb.mass(o.mass);
+            }
+            let collider = physics.colliders.insert_with_parent(cb.build(), body, &mut physics.bodies);
+            objects.push(ObjectSlot { body, collider, active: true });
+        }
+
+        let scene_colliders = env
+            .into_iter()
+            .map(|h| (h, None))
+            .chain(objects.iter().enumerate().map(|(i, s)| (s.collider, Some(i))))
+            .map(|(h, o)| (h, o, physics.colliders[h].compute_aabb()))
+            .collect();
+        let mut world = World {
+            physics,
+            config,
+            scene: scene.clone(),
+            objects,
+            soft: SoftBodies::default(),
+            scene_colliders,
+            time: 0.0,
+            stats: WorldStats::default(),
+            last: StepStats::default(),
+        };
+        world.soft = SoftBodies::spawn(&world.scene.soft_bodies, &world.config, &mut world.physics);
+        // Build the query structures now: a contact on the very first frame
+        // must be able to ray-cast onto the scene before anything has stepped.
+        world.physics.detect_collisions(&(), &());
+        world
+    }
+
+    pub fn config(&self) -> &WorldConfig {
+        &self.config
+    }
+
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// Simulated seconds since the world was built.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    pub fn dt(&self) -> f32 {
+        self.config.dt
+    }
+
+    pub fn stats(&self) -> &WorldStats {
+        &self.stats
+    }
+
+    pub fn last_step(&self) -> StepStats {
+        self.last
+    }
+
+    /// The underlying rapier world, for techniques that add and drive their
+    /// own bodies. Scene objects must not be removed through it (use
+    /// [`World::remove_object`]).
+    pub fn physics(&self) -> &PhysicsWorld {
+        &self.physics
+    }
+
+    /// The declared soft bodies (read through `soft_access.rs`).
+    pub(super) fn soft(&self) -> &SoftBodies {
+        &self.soft
+    }
+
+    /// The soft bodies and the physics they live in, both mutable.
+    pub(super) fn soft_and_physics_mut(&mut self) -> (&mut SoftBodies, &mut PhysicsWorld) {
+        (&mut self.soft, &mut self.physics)
+    }
+
+    pub fn physics_mut(&mut self) -> &mut PhysicsWorld {
+        &mut self.physics
+    }
+
+    /// Fails unless the joints effect is on: a scene that declares no joints
+    /// does no joint work.
+    pub fn require_joints(&self, what: &str) -> Result<(), WorldError> {
+        if self.config.joints {
+            Ok(())
+        } else {
+            Err(WorldError::EffectNotDeclared {
+                scene: self.scene.name.clone(),
+                effect: "joints",
+                what: what.to_string(),
+            })
+        }
+    }
+
+    /// Advances one fixed step, then caps speeds and records health figures.
+    pub fn step(&mut self) {
+        let t0 = Instant::now();
+        if self.config.sleeping && !self.physics.soft_bodies.is_empty() {
+            soft::wake_touched(&mut self.physics);
+        }
+        self.physics.step();
+        let us = t0.elapsed().as_secs_f64() * 1e6;
+        self.time += f64::from(self.config.dt);
+        self.last = StepStats { step_us: us };
+        self.stats.steps += 1;
+        self.stats.total_step_us += us;
+
+        let cap = self.config.max_speed;
+        let mut nan = false;
+        for slot in &self.objects {
+            let Some(b) = self.physics.bodies.get_mut(slot.body) else { continue };
+            if !b.is_dynamic() || !slot.active {
+                continue;
+            }
+            let v = b.linvel();
+            let p = b.translation();
+            if !v.is_finite() || !p.is_finite() {
+                nan = true;
+                continue;
+            }
+            let s = v.length();
+            self.stats.max_speed_seen = self.stats.max_speed_seen.max(s);
+            if s > cap {
+                b.set_linvel(v * (cap / s), false);
+                self.stats.speed_caps += 1;
+            }
+        }
+        if nan || !self.physics.quarantine().is_empty() {
+            self.stats.nan_count += 1;
+        }
+        self.refresh_scene_aabbs();
+    }
+
+    /// Recomputes the cached AABBs of the rigid scene colliders.
+    fn refresh_scene_aabbs(&mut self) {
+        for (h, _, aabb) in &mut self.scene_colliders {
+            if let Some(c) = self.physics.colliders.get(*h) {
+                *aabb = c.compute_aabb();
+            }
+        }
+    }
+
+    /// Deepest current contact penetration between scene objects and the
+    /// environment or each other (m, ≥ 0). Reads the narrow phase; call it
+    /// after a step when a report needs it (it is not free).
+    pub fn measure_penetration(&mut self) -> f32 {
+        let mut deepest = 0.0f32;
+        for pair in self.physics.narrow_phase.contact_pairs() {
+            let (Some(c1), Some(c2)) =
+                (self.physics.colliders.get(pair.collider1), self.physics.colliders.get(pair.collider2))
+            else {
+                continue;
+            };
+            let scene_pair =
+                |c: &Collider| matches!(super::groups::collider_layer(c), Layer::Object | Layer::Environment);
+            if !(scene_pair(c1) && scene_pair(c2)) {
+                continue;
+            }
+            for m in pair.manifolds() {
+                for p in &m.points {
+                    deepest = deepest.max(-p.dist);
+                }
+            }
+        }
+        self.stats.max_penetration_seen = self.stats.max_penetration_seen.max(deepest);
+        deepest
+    }
+
+    pub fn object_count(&self) -> usize {
+        self.objects.len()
+    }
+
+    /// The rapier body of scene object `i`.
+    pub fn object_body(&self, i: usize) -> RigidBodyHandle {
+        self.objects[i].body
+    }
+
+    /// The rapier collider of scene object `i`.
+    pub fn object_collider(&self, i: usize) -> ColliderHandle {
+        self.objects[i].collider
+    }
+
+    /// The scene object a rapier body belongs to.
+    pub fn object_of_body(&self, h: RigidBodyHandle) -> Option<usize> {
+        self.objects.iter().position(|s| s.body == h)
+    }
+
+    pub fn object_pose(&self, i: usize) -> ObjectPose {
+        let slot = self.objects[i];
+        let b = &self.physics.bodies[slot.body];
+        ObjectPose {
+            position: b.translation(),
+            rotation: *b.rotation(),
+            linvel: b.linvel(),
+            angvel: b.angvel(),
+            active: slot.active,
+        }
+    }
+
+    pub fn object_poses(&self) -> Vec<ObjectPose> {
+        (0..self.objects.len()).map(|i| self.object_pose(i)).collect()
+    }
+
+    pub fn is_active(&self, i: usize) -> bool {
+        self.objects[i].active
+    }
+
+    /// Removes a scene object from the simulation (a placed positioning
+    /// object vanishes). Its index stays valid; its body is disabled.
+    pub fn remove_object(&mut self, i: usize) {
+        let slot = &mut self.objects[i];
+        slot.active = false;
+        if let Some(b) = self.physics.bodies.get_mut(slot.body) {
+            b.set_enabled(false);
+        }
+    }
+
+    /// Puts every scene object back at its initial pose, at rest (soft
+    /// bodies whole again).
+    pub fn reset_objects(&mut self) {
+        for (i, o) in self.scene.objects.iter().enumerate() {
+            let slot = &mut self.objects[i];
+            slot.active = true;
+            if let Some(b) = self.physics.bodies.get_mut(slot.body) {
+                b.set_enabled(true);
+                b.set_position(Pose::from_parts(o.position, o.rotation), true);
+                b.set_linvel(Vec3::ZERO, true);
+                b.set_angvel(Vec3::ZERO, true);
+            }
+        }
+        self.soft.reset(&self.config, &mut self.physics);
+        self.physics.detect_collisions(&(), &());
+        self.refresh_scene_aabbs();
+    }
+
+    /// Puts one object at a pose, at rest (a steering restart).
+    pub fn place_object(&mut self, i: usize, position: Vec3, rotation: Quat) {
+        if let Some(b) = self.physics.bodies.get_mut(self.objects[i].body) {
+            b.set_position(Pose::from_parts(position, rotation), true);
+            b.set_linvel(Vec3::ZERO, true);
+            b.set_angvel(Vec3::ZERO, true);
+        }
+    }
+
+    /// The eye of the camera: every contact ray starts here.
+    pub fn eye(&self) -> Vec3 {
+        self.scene.camera.eye()
+    }
+
+    /// The camera ray through a table-plane point (= a contact-image or
+    /// screen point): from the eye towards (x, y, 0). Returns origin and unit direction.
+    pub fn camera_ray(&self, table_point: Vec2) -> (Vec3, Vec3) {
+        let eye = self.eye();
+        let dir = (table_point.extend(0.0) - eye).normalize_or(Vec3::NEG_Z);
+        (eye, dir)
+    }
+
+    /// Where a world point appears on the display (= the table plane, =
+    /// the contact image): the camera ray through it meets z = 0 there.
+    /// The top of a tall object far from the centre appears displaced
+    /// outward, and that is where a user touches to press on it.
+    pub fn screen_point(&self, p: Vec3) -> Vec2 {
+        let eye = self.eye();
+        let t = eye.z / (eye.z - p.z).max(1e-4);
+        (eye + (p - eye) * t).truncate()
+    }
+
+    /// Casts a ray against the scene only (table, walls, objects, soft
+    /// bodies; never proxies or particles).
+    pub fn cast_ray(&self, origin: Vec3, dir: Vec3, max_toi: f32) -> Option<RayHit> {
+        let ray = Ray::new(origin, dir);
+        // Rigid scene colliders, directly (see `scene_colliders`).
+        let mut best: Option<(ColliderHandle, RayIntersection)> = None;
+        for (h, object, aabb) in &self.scene_colliders {
+            if object.is_some_and(|i| !self.objects[i].active) {
+                continue;
+            }
+            let limit = best.as_ref().map_or(max_toi, |b| b.1.time_of_impact);
+            if aabb.cast_local_ray(&ray, limit, true).is_none() {
+                continue;
+            }
+            let Some(c) = self.physics.colliders.get(*h) else { continue };
+            if let Some(hit) = c.shape().cast_ray_and_get_normal(c.position(), &ray, limit, true) {
+                best = Some((*h, hit));
+            }
+        }
+        // Soft bodies (their pieces come and go as they tear) through the
+        // broad phase, only when the scene has any.
+        if !self.soft.is_empty() {
+            let limit = best.as_ref().map_or(max_toi, |b| b.1.time_of_impact);
+            let groups = InteractionGroups::new(Group::ALL, Group::GROUP_5, InteractionTestMode::And);
+            let filter = QueryFilter { groups: Some(groups), ..QueryFilter::default() };
+            if let Some(soft) = self.physics.cast_ray_and_get_normal(&ray, limit, true, filter) {
+                best = Some(soft);
+            }
+        }
+        let (h, hit) = best?;
+        let c = &self.physics.colliders[h];
+        let point = ray.point_at(hit.time_of_impact);
+        if c.user_data == SOFT_TAG {
+            // A cloth is two-sided: its normal faces the ray.
+            let normal = if hit.normal.dot(dir) > 0.0 { -hit.normal } else { hit.normal };
+            // The ray meets the mesh through the particles' centres, but
+            // bodies touch it at its contact skin (the particles' radius):
+            // report that surface, or whatever is placed "on" the cloth
+            // starts half its thickness inside it and is thrown off.
+            let skin = c.contact_skin();
+            let toi = (hit.time_of_impact - skin / normal.dot(-dir).max(0.2)).max(0.0);
+            return Some(RayHit {
+                object: None,
+                point: ray.point_at(toi),
+                normal,
+                toi,
+                soft: soft::hit(&self.physics, c, point),
+            });
+        }
+        let object = if c.user_data == ENV_TAG { None } else { Some(c.user_data as usize) };
+        let mut out = RayHit { object, point, normal: hit.normal, toi: hit.time_of_impact, soft: None };
+        if let Some(i) = object
+            && let Shape::Cylinder { radius, half_height } = self.scene.objects[i].shape
+        {
+            // parry casts rays at cylinders by GJK, whose normals tilt by up
+            // to ~30° near a cap's rim; the particles' flow projection needs
+            // the true tangent plane, so compute it from the known shape.
+            let pose = *c.position();
+            let local = pose.inverse_transform_point(out.point);
+            // The collider is a y-axis cylinder rotated onto z; in its local
+            // frame the axis is y.
+            let n_local = if local.y.abs() >= half_height - 1e-3 * radius.max(half_height) {
+                Vec3::new(0.0, local.y.signum(), 0.0)
+            } else {
+                Vec3::new(local.x, 0.0, local.z).normalize_or(Vec3::X)
+            };
+            out.normal = pose.rotation * n_local;
+            if n_local.y != 0.0 {
+                let snapped = Vec3::new(local.x, half_height * local.y.signum(), local.z);
+                out.point = pose.transform_point(snapped);
+            }
+        }
+        Some(out)
+    }
+
+    /// The paper's ray cast for a contact: the camera ray through the table point.
+    pub fn cast_contact_ray(&self, table_point: Vec2) -> Option<RayHit> {
+        let (o, d) = self.camera_ray(table_point);
+        self.cast_ray(o, d, 100.0)
+    }
+
+    /// Every body's pose and velocity (and every soft particle's) as raw
+    /// bits, for determinism checks.
+    pub fn state_bits(&self) -> Vec<u32> {
+        let mut out = Vec::new();
+        let mut bodies: Vec<_> = self.physics.bodies.iter().collect();
+        bodies.sort_by_key(|(h, _)| h.into_raw_parts());
+        for (_, b) in bodies {
+            let p = b.position();
+            out.extend(p.translation.to_array().map(f32::to_bits));
+            out.extend(p.rotation.to_array().map(f32::to_bits));
+            out.extend(b.linvel().to_array().map(f32::to_bits));
+            out.extend(b.angvel().to_array().map(f32::to_bits));
+        }
+        let mut soft: Vec<_> = self.physics.soft_bodies.iter().collect();
+        soft.sort_by_key(|(h, _)| h.0.into_raw_parts());
+        for (_, b) in soft {
+            for (p, v) in b.particle_positions().zip(b.particle_velocities()) {
+                out.extend(p.to_array().map(f32::to_bits));
+                out.extend(v.to_array().map(f32::to_bits));
+            }
+        }
+        out
+    }
+}
+
+/// The rapier collider for a scene shape (cylinders and capsules stand on z).
+pub fn collider_for(shape: Shape) -> ColliderBuilder {
+    match shape {
+        Shape::Box { half_extents: h } => ColliderBuilder::cuboid(h.x, h.y, h.z),
+        Shape::Sphere { radius } => ColliderBuilder::ball(radius),
+        Shape::Cylinder { radius, half_height } => {
+            ColliderBuilder::cylinder(half_height, radius).rotation(Vec3::new(std::f32::consts::FRAC_PI_2, 0.0, 0.0))
+        }
+        Shape::Capsule { radius, half_height } => ColliderBuilder::capsule_z(half_height, radius),
+    }
+}
