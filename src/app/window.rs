@@ -9,7 +9,7 @@ use super::lab::Lab;
 use super::panel::{self, Action, HAND_MODES, PanelState};
 use super::view::{self, ViewFrame};
 use super::{DemoOptions, Screenshot};
-use crate::input::{Button, Modifiers, MouseEvent};
+use crate::input::{Button, Modifiers, MouseEvent, SourceEvent};
 use crate::render::{
     GpuContext, Renderer, RendererOptions, preferred_surface_format, request_adapter, request_device, save_png,
 };
@@ -178,7 +178,13 @@ impl App {
     }
 
     fn mouse(&mut self, e: MouseEvent) {
-        self.lab.input.mouse.handle(e);
+        let at = self.wall_now();
+        self.lab.input.push(at, SourceEvent::Mouse(e));
+    }
+
+    /// Seconds since the demo opened, to stamp input as it arrives.
+    fn wall_now(&self) -> f64 {
+        self.started.elapsed().as_secs_f64()
     }
 
     fn pointer_event(&mut self, event: &WindowEvent) {
@@ -241,10 +247,14 @@ impl App {
                         if down || (t.phase == TouchPhase::Started && self.on_view(t.location)) =>
                     {
                         if let Some(p) = self.table_point(t.location) {
-                            self.lab.input.touch_at(t.id, p);
+                            let at = self.wall_now();
+                            self.lab.input.push(at, SourceEvent::TouchAt(t.id, p));
                         }
                     }
-                    TouchPhase::Ended | TouchPhase::Cancelled => self.lab.input.touch_up(t.id),
+                    TouchPhase::Ended | TouchPhase::Cancelled => {
+                        let at = self.wall_now();
+                        self.lab.input.push(at, SourceEvent::TouchUp(t.id));
+                    }
                     _ => {}
                 }
             }

@@ -126,15 +126,51 @@ impl Track {
             Some(next) => interpolate(&self.keys[i], next, t),
             None => self.keys[i],
         };
-        Some(Hand {
-            id: self.id,
-            kind: self.kind,
-            pose: Pose { x: key.pos[0] as f32, y: key.pos[1] as f32, angle: key.angle_deg.to_radians() as f32 },
-            spread: key.spread as f32,
-            scale: key.scale as f32,
-            pressure: key.pressure as f32,
-        })
+        Some(key.hand(self.id, self.kind))
     }
+}
+
+impl Key {
+    /// The hand this key describes: the one conversion from a file's
+    /// numbers to a hand, shared by replays and [`quantized`] live input.
+    fn hand(&self, id: u32, kind: HandKind) -> Hand {
+        Hand {
+            id,
+            kind,
+            pose: Pose { x: self.pos[0] as f32, y: self.pos[1] as f32, angle: self.angle_deg.to_radians() as f32 },
+            spread: self.spread as f32,
+            scale: self.scale as f32,
+            pressure: self.pressure as f32,
+        }
+    }
+
+    /// A hand's values at time `t` as a file stores them: rounded to 1 µm,
+    /// 1e-4 degree and 1e-4 of spread, scale and pressure (far below a
+    /// pixel), out-of-range values clamped.
+    fn of_hand(t: f64, hand: &Hand) -> Key {
+        Key {
+            t,
+            pos: [round_to(f64::from(hand.pose.x), 1e-6), round_to(f64::from(hand.pose.y), 1e-6)],
+            angle_deg: round_to(f64::from(hand.pose.angle).to_degrees(), 1e-4),
+            spread: round_to(f64::from(hand.spread).max(0.0), 1e-4),
+            scale: round_to(f64::from(hand.scale), 1e-4).max(1e-4),
+            pressure: round_to(f64::from(hand.pressure).clamp(0.0, 1.0), 1e-4),
+        }
+    }
+}
+
+/// A hand exactly as a recording of it replays: live input that goes
+/// through this steps the physics with the very numbers a gesture file
+/// holds, so a replay reproduces the live run bit for bit (rounding only
+/// the file, as before, let a 25 s sorting recording drift: one sphere
+/// ended 30 cm from where the live run left it). Idempotent for tables
+/// smaller than a few metres (f32 keeps 1 µm there).
+pub fn quantized(hand: &Hand) -> Hand {
+    let kind = match hand.kind {
+        HandKind::Fingertips(n) => HandKind::Fingertips(n.clamp(1, 5)),
+        k => k,
+    };
+    Key::of_hand(0.0, hand).hand(hand.id, kind)
 }
 
 fn interpolate(a: &Key, b: &Key, t: f64) -> Key {
@@ -462,9 +498,9 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
 /// that is missing from a sample has been lifted: its entry ends at its last
 /// key, and if the same id comes back it starts a new entry (as does a
 /// change of kind). Times are stored relative to the first sample.
-/// Values are rounded to 1 µm, 1e-4 degree and 1e-4 of spread, scale and
-/// pressure, far below a pixel, so the written file stays readable; the
-/// recorded gesture, not the raw input, is what round-trips exactly.
+/// Values are rounded as [`quantized`] rounds them, far below a pixel, so
+/// the written file stays readable; live input that went through
+/// [`quantized`] replays exactly.
 #[derive(Debug, Clone, Default)]
 pub struct GestureRecorder {
     tracks: Vec<Track>,
@@ -504,14 +540,7 @@ impl GestureRecorder {
                 HandKind::Fingertips(n) => HandKind::Fingertips(n.clamp(1, 5)),
                 k => k,
             };
-            let key = Key {
-                t,
-                pos: [round_to(f64::from(hand.pose.x), 1e-6), round_to(f64::from(hand.pose.y), 1e-6)],
-                angle_deg: round_to(f64::from(hand.pose.angle).to_degrees(), 1e-4),
-                spread: round_to(f64::from(hand.spread).max(0.0), 1e-4),
-                scale: round_to(f64::from(hand.scale), 1e-4).max(1e-4),
-                pressure: round_to(f64::from(hand.pressure).clamp(0.0, 1.0), 1e-4),
-            };
+            let key = Key::of_hand(t, hand);
             let existing =
                 self.open.iter().find(|&&(id, i)| id == hand.id && self.tracks[i].kind == kind).map(|&(_, i)| i);
             let index = if let Some(i) = existing {

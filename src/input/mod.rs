@@ -13,6 +13,6 @@ mod mouse;
 mod sources;
 pub mod tuio;
 
-pub use gesture::{FORMAT, Gesture, GestureError, GestureRecorder, Key, Track, VERSION};
+pub use gesture::{FORMAT, Gesture, GestureError, GestureRecorder, Key, Track, VERSION, quantized};
 pub use mouse::{Button, DEGREES_PER_NOTCH, MAX_SPREAD, Modifiers, Mouse, MouseEvent, SPREAD_PER_NOTCH};
-pub use sources::{Input, SCRIPT_ID_BASE, TOUCH_ID_BASE};
+pub use sources::{Input, SCRIPT_ID_BASE, SourceEvent, TOUCH_ID_BASE};
