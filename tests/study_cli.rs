@@ -115,3 +115,43 @@ fn seeds_run_independent_studies_and_count_findings() {
     let again = tiny(&out).args(["--seed", "7", "--seeds", "2"]).output().expect("runs");
     assert_eq!(again.status.code(), Some(2), "{}", text(&again));
 }
+
+/// Issue 17: a resume started while the run is still writing is refused
+/// (exit 2, naming the process), and after the run is killed with SIGKILL
+/// the lock it left is taken over and the run completes with one row per
+/// trial.
+#[test]
+fn a_running_study_locks_its_folder_and_a_killed_one_does_not() {
+    let out = tmp("lock").join("run");
+    let mut running = bin()
+        .args(["study", "--participants", "2", "--reps", "2", "--no-progress", "--jobs", "1", "--out"])
+        .arg(&out)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("starts");
+    let trials = out.join("trials.csv");
+    let started = std::time::Instant::now();
+    while !trials.exists() {
+        assert!(started.elapsed().as_secs() < 120, "the study never wrote trials.csv");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    let o = bin().args(["study", "--no-progress", "--resume"]).arg(&out).output().expect("runs");
+    let still_running = running.try_wait().expect("wait").is_none();
+    assert!(still_running, "the study finished before the resume could race it; make it longer");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains(&format!("pid {}", running.id())), "names the holder: {}", text(&o));
+    running.kill().expect("SIGKILL");
+    running.wait().expect("reaped");
+
+    let o = bin().args(["study", "--no-progress", "--resume"]).arg(&out).output().expect("runs");
+    assert!(o.status.success(), "the dead run's lock is taken over: {}", text(&o));
+    let keys: Vec<(String, String)> =
+        column(&trials, "participant").into_iter().zip(column(&trials, "order_index")).collect();
+    let mut unique = keys.clone();
+    unique.sort();
+    unique.dedup();
+    assert_eq!(unique.len(), keys.len(), "one row per trial");
+    // 2 participants x 3 tasks x 3 techniques x 2 feedback x (2 reps + 1 practice).
+    assert_eq!(keys.len(), 108);
+}

@@ -7,6 +7,7 @@ pub mod design;
 pub mod error;
 pub mod figure;
 pub mod findings;
+pub mod lock;
 pub mod output;
 pub mod pairwise;
 pub mod report;

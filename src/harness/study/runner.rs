@@ -25,6 +25,7 @@ use super::analysis::{ANOVA_CSV, PAIRWISE_CSV, analyze, write_anova, write_pairw
 use super::design::{Shard, StudyDesign};
 use super::error::StudyError;
 use super::figure::write_figure;
+use super::lock::RunLock;
 use super::output::{
     FIGURE_PNG, FIGURE_SVG, RUN_TOML, RunFile, STRATEGIES_CSV, SUMMARY_CSV, TRIALS_CSV, TrialRow, TrialsWriter,
     log_error, read_trials, recover_trials, write_trials,
@@ -99,10 +100,13 @@ pub fn run_study(
     options: &RunOptions,
 ) -> Result<RunOutcome, StudyError> {
     design.validate()?;
+    std::fs::create_dir_all(out_dir).map_err(StudyError::io(out_dir))?;
+    // Locked before looking: of two runs started at once on one folder, the
+    // second is told the folder is in use, not that a file is missing.
+    let _lock = RunLock::acquire(out_dir)?;
     if out_dir.join(RUN_TOML).exists() || out_dir.join(TRIALS_CSV).exists() {
         return Err(StudyError::AlreadyExists { path: out_dir.to_owned() });
     }
-    std::fs::create_dir_all(out_dir).map_err(StudyError::io(out_dir))?;
     let run = RunFile::new(design.clone(), options.shard);
     run.save(&out_dir.join(RUN_TOML))?;
     execute(out_dir, &run, runner, options)
@@ -111,6 +115,7 @@ pub fn run_study(
 /// Continues the run in `dir` from its `run.toml` and `trials.csv`: drops a
 /// row cut short by a crash, then runs exactly the trials without a row.
 pub fn resume_study(dir: &Path, runner: &dyn TrialRunner, options: &RunOptions) -> Result<RunOutcome, StudyError> {
+    let _lock = if dir.is_dir() { Some(RunLock::acquire(dir)?) } else { None };
     let run = RunFile::load(&dir.join(RUN_TOML))?;
     if let Some(shard) = options.shard
         && Some(shard) != run.shard
@@ -180,6 +185,7 @@ pub fn merge(out_dir: &Path, shard_dirs: &[PathBuf]) -> Result<MergeOutcome, Stu
     let rows: Vec<TrialRow> = placed.into_iter().flatten().collect();
 
     std::fs::create_dir_all(out_dir).map_err(StudyError::io(out_dir))?;
+    let _lock = RunLock::acquire(out_dir)?;
     let out_run = out_dir.join(RUN_TOML);
     if out_run.exists() {
         if RunFile::load(&out_run)?.design != design {
