@@ -324,3 +324,40 @@ fn behaviours_prints_the_table_and_checks_it() {
     assert_eq!(o.status.code(), Some(2), "{}", text(&o));
     assert!(text(&o).contains("--case"), "{}", text(&o));
 }
+
+/// Issue 17: the built-in scenes and gestures are in the binary, so it runs
+/// from any folder; a file on disk with the same path still wins.
+#[test]
+fn built_in_scenes_and_gestures_work_from_any_folder() {
+    let dir = tmp("anywhere");
+    let report = dir.join("r.json");
+    let run = |task: &str| {
+        let mut c = bin();
+        c.current_dir(&dir)
+            .args(["run", "--technique", "joint", "--gesture", "assets/gestures/fingertip_drag.toml", "--task", task])
+            .arg("--report")
+            .arg(&report)
+            .output()
+            .expect("runs")
+    };
+    for task in ["positioning", "tasks/cases/one_box.toml"] {
+        let o = run(task);
+        assert!(o.status.success(), "{task}: {}", text(&o));
+        let json = std::fs::read_to_string(&report).expect("report");
+        assert!(json.contains("\"steps\": 150"), "{task}: the whole gesture ran: {json}");
+    }
+    let o = run("no_such_task");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("the built-in scenes (") && text(&o).contains("positioning"), "{}", text(&o));
+    // An edited copy on disk is read instead of the built-in one.
+    std::fs::create_dir_all(dir.join("tasks")).expect("mkdir");
+    let edited = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("tasks/positioning.toml"))
+        .expect("scene")
+        .replace("name = \"positioning\"", "name = \"my_positioning\"");
+    std::fs::write(dir.join("tasks/positioning.toml"), edited).expect("write");
+    let o = run("positioning");
+    assert!(o.status.success(), "{}", text(&o));
+    let json = std::fs::read_to_string(&report).expect("report");
+    assert!(json.contains("\"scene\": \"my_positioning\""), "the file on disk wins: {json}");
+    let _ = std::fs::remove_dir_all(dir);
+}

@@ -200,13 +200,20 @@ impl Gesture {
         parse(text, origin)
     }
 
-    /// Reads and parses a gesture file.
+    /// Reads and parses a gesture file; a repository path that is not on
+    /// disk (`assets/gestures/flick.toml` outside a checkout) falls back to
+    /// the built-in copy.
     pub fn load(path: impl AsRef<Path>) -> Result<Self, GestureError> {
         let path = path.as_ref();
         let origin = path.display().to_string();
-        let text =
-            std::fs::read_to_string(path).map_err(|source| GestureError::Io { origin: origin.clone(), source })?;
-        parse(&text, &origin)
+        match std::fs::read_to_string(path) {
+            Ok(text) => parse(&text, &origin),
+            Err(source) if source.kind() == std::io::ErrorKind::NotFound => match crate::scene::builtin::file(path) {
+                Some(text) => parse(text, &format!("{origin} (built in)")),
+                None => Err(GestureError::Io { origin, source }),
+            },
+            Err(source) => Err(GestureError::Io { origin, source }),
+        }
     }
 
     /// Writes the gesture in the version-1 format.

@@ -14,39 +14,56 @@ use std::path::{Path, PathBuf};
 use toml::Spanned;
 
 /// Finds a scene: an existing path, else `tasks/NAME.toml` under the current
-/// directory, else under the crate's own `tasks/` folder (so the binary works
-/// from any directory of a checkout).
+/// directory. `None` from both means: look for it among the built-in scenes
+/// ([`super::builtin`]); the error then lists everything tried.
 pub fn resolve_path(name_or_path: &str) -> Result<PathBuf, SceneError> {
     let direct = PathBuf::from(name_or_path);
     if direct.is_file() {
         return Ok(direct);
     }
-    let file = if Path::new(name_or_path).extension().is_some_and(|e| e.eq_ignore_ascii_case("toml")) {
-        name_or_path.to_string()
-    } else {
-        format!("{name_or_path}.toml")
-    };
-    let candidates =
-        [PathBuf::from("tasks").join(&file), Path::new(env!("CARGO_MANIFEST_DIR")).join("tasks").join(&file)];
-    for c in &candidates {
-        if c.is_file() {
-            return Ok(c.clone());
-        }
+    let local = PathBuf::from("tasks").join(scene_file(name_or_path));
+    if local.is_file() {
+        return Ok(local);
     }
     Err(SceneError::NotFound {
         name: name_or_path.to_string(),
-        tried: std::iter::once(direct.display().to_string())
-            .chain(candidates.iter().map(|c| c.display().to_string()))
-            .collect::<Vec<_>>()
-            .join(", "),
+        tried: format!(
+            "{}, {}, the built-in scenes ({})",
+            direct.display(),
+            local.display(),
+            super::builtin::scene_names().collect::<Vec<_>>().join(", ")
+        ),
     })
 }
 
-/// Resolves and loads a scene by name (`positioning`) or path.
+/// `NAME.toml` for a bare name, the name itself when it ends in `.toml`.
+fn scene_file(name_or_path: &str) -> String {
+    if Path::new(name_or_path).extension().is_some_and(|e| e.eq_ignore_ascii_case("toml")) {
+        name_or_path.to_string()
+    } else {
+        format!("{name_or_path}.toml")
+    }
+}
+
+/// Resolves and loads a scene by name (`positioning`) or path: a file on
+/// disk first, else the built-in copy of the same path or name.
 pub fn load(name_or_path: &str) -> Result<Scene, SceneError> {
-    let path = resolve_path(name_or_path)?;
-    let text = std::fs::read_to_string(&path).map_err(|source| SceneError::Io { path: path.clone(), source })?;
-    parse(&text, &path.display().to_string())
+    match resolve_path(name_or_path) {
+        Ok(path) => {
+            let text =
+                std::fs::read_to_string(&path).map_err(|source| SceneError::Io { path: path.clone(), source })?;
+            parse(&text, &path.display().to_string())
+        }
+        Err(not_found) => {
+            let file = scene_file(name_or_path);
+            let tasks = Path::new("tasks").join(&file);
+            let rel = if Path::new(&file).components().count() > 1 { PathBuf::from(&file) } else { tasks };
+            match super::builtin::file(&rel) {
+                Some(text) => parse(text, &format!("{} (built in)", rel.display())),
+                None => Err(not_found),
+            }
+        }
+    }
 }
 
 /// Parses and validates scene TOML. `origin` names the file in errors.
