@@ -29,3 +29,39 @@ fn help_lists_the_contract() {
         assert!(stdout.contains(cmd), "--help lists {cmd}:\n{stdout}");
     }
 }
+
+fn doctor_display(display: &str) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_surfacelab"))
+        .arg("doctor")
+        .env("DISPLAY", display)
+        .env_remove("WAYLAND_DISPLAY")
+        .output()
+        .expect("runs");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    stdout.lines().find(|l| l.starts_with("display: ")).expect("a display line").to_owned()
+}
+
+/// Issue 17: a `DISPLAY` with no server behind it is no display; one with a
+/// live Xvfb is. (Xvfb comes from `.ci/setup`.)
+#[test]
+fn doctor_connects_to_the_display_instead_of_trusting_the_variable() {
+    let line = doctor_display(":6553");
+    assert!(line.starts_with("display: none (X11 :6553: nothing answers at /tmp/.X11-unix/X6553"), "{line}");
+
+    let number = 6100 + std::process::id() % 400;
+    let mut xvfb = Command::new("Xvfb")
+        .args([format!(":{number}"), "-nolisten".into(), "tcp".into()])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("Xvfb is installed (bash .ci/setup)");
+    let socket = format!("/tmp/.X11-unix/X{number}");
+    let started = std::time::Instant::now();
+    while !std::path::Path::new(&socket).exists() && started.elapsed().as_secs() < 20 {
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    let line = doctor_display(&format!(":{number}"));
+    let _ = xvfb.kill();
+    let _ = xvfb.wait();
+    assert_eq!(line, format!("display: yes (X11 :{number})"));
+}

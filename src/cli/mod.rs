@@ -5,6 +5,7 @@
 mod behaviours;
 mod contact;
 mod demo;
+mod display;
 mod doctor;
 mod run;
 mod screenshot;
