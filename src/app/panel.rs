@@ -307,7 +307,11 @@ fn statistics(ui: &mut egui::Ui, lab: &Lab) {
             let (cursors, blobs) = tuio.live_counts();
             row("TUIO", format!("{}", tuio.local_addr()));
             row("  live", format!("{cursors} cursors, {blobs} blobs"));
-            row("  packets", format!("{} ({} malformed)", t.packets, t.malformed));
+            row(
+                "  packets",
+                format!("{} ({} malformed, {} other profiles)", t.packets, t.malformed, t.unknown_profile),
+            );
+            row("  frames", format!("{} late, {} restarts", t.late_frames, t.restarts));
         }
     });
 }

@@ -51,6 +51,13 @@ const MAX_ARRAY_DEPTH: usize = 4;
 /// Late-frame window of the reference client: a frame id this far below
 /// the last one means the tracker restarted, not a late packet.
 const LATE_WINDOW: i64 = 100;
+/// A frame id below the last one, arriving after the source was silent
+/// this long (seconds), is a restarted tracker counting from 1 again, not a
+/// late packet: UDP reordering happens within a steady stream (trackers
+/// send 30-60 frames a second), a restart takes a pause. Without this, a
+/// tracker that restarted within 100 frames had its new frames dropped as
+/// late while its old cursors stayed on the table as ghosts.
+const RESTART_GAP_S: f64 = 0.25;
 /// Normalized coordinates beyond this margin around 0..1 are rejected.
 const COORD_MARGIN: f32 = 1.0;
 
@@ -101,6 +108,22 @@ pub struct TuioStats {
     pub late_frames: u64,
     /// Messages of other profiles or commands, skipped.
     pub ignored_messages: u64,
+    /// Packets that held only messages of other profiles (`/tuio/2Dobj`,
+    /// TUIO 2.0's `/tuio2/*`, custom ones): well-formed but of no use here.
+    pub unknown_profile: u64,
+    /// Times a source's state was thrown away because its tracker
+    /// restarted or came back after [`STALE_AFTER_S`] of silence.
+    pub restarts: u64,
+}
+
+/// What ending a frame did.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Commit {
+    Applied,
+    /// Dropped: it came after a later frame.
+    Late,
+    /// The tracker restarted: its old sessions were dropped, then the frame applied.
+    Restarted,
 }
 
 /// Sessions of one profile of one source.
@@ -135,11 +158,22 @@ impl Session for Blob {
 }
 
 impl<T: Session> Profile<T> {
-    /// Ends a frame: returns false when it came late and was dropped.
-    fn commit(&mut self, frame: i32) -> bool {
+    /// Ends a frame that arrived `gap` seconds after the source's previous
+    /// packet.
+    fn commit(&mut self, frame: i32, gap: f64) -> Commit {
         let frame = i64::from(frame);
-        let on_time = frame <= 0 || frame >= self.last_frame || self.last_frame - frame > LATE_WINDOW;
-        if on_time {
+        let backwards = frame > 0 && frame < self.last_frame;
+        let restarted = backwards && (self.last_frame - frame > LATE_WINDOW || gap >= RESTART_GAP_S);
+        let outcome = if restarted {
+            self.live.clear();
+            self.last_frame = 0;
+            Commit::Restarted
+        } else if backwards {
+            Commit::Late
+        } else {
+            Commit::Applied
+        };
+        if outcome != Commit::Late {
             if frame > 0 {
                 self.last_frame = frame;
             }
@@ -155,7 +189,15 @@ impl<T: Session> Profile<T> {
         }
         self.pending_set.clear();
         self.pending_alive = None;
-        on_time
+        outcome
+    }
+
+    /// Forgets everything (a source that came back after silence).
+    fn reset(&mut self) {
+        self.live.clear();
+        self.pending_alive = None;
+        self.pending_set.clear();
+        self.last_frame = 0;
     }
 }
 
@@ -263,12 +305,34 @@ impl TuioState {
     }
 
     fn apply(&mut self, ops: &[Op], now: f64) {
+        if !ops.is_empty() && ops.iter().all(|op| *op == Op::Ignored) {
+            self.stats.unknown_profile += 1;
+            self.stats.ignored_messages += ops.len() as u64;
+            return;
+        }
         // Messages before any `source` message belong to the unnamed source.
         let mut current = String::new();
+        // Seconds since each source touched in this packet last spoke.
+        let mut gaps: Vec<(String, f64)> = Vec::new();
         for op in ops {
             if let Op::Source(name) = op {
                 current.clone_from(name);
             }
+            let source = self.source_mut(&current);
+            let gap = if let Some(g) = gaps.iter().find(|g| g.0 == current) {
+                g.1
+            } else {
+                let gap = now - source.last_seen;
+                if source.last_seen.is_finite() && gap > STALE_AFTER_S {
+                    // Back after silence: what it said before is stale.
+                    tracing::info!("TUIO source '{current}' is back after {gap:.1} s: its old touches are dropped");
+                    source.cursors.reset();
+                    source.blobs.reset();
+                    self.stats.restarts += 1;
+                }
+                gaps.push((current.clone(), gap));
+                gap
+            };
             let source = self.source_mut(&current);
             source.last_seen = now;
             match op {
@@ -278,12 +342,22 @@ impl TuioState {
                 Op::SetCursor(c) => source.cursors.pending_set.push(*c),
                 Op::SetBlob(b) => source.blobs.pending_set.push(*b),
                 Op::Fseq(kind, frame) => {
-                    let on_time = match kind {
-                        Kind::Cursor => source.cursors.commit(*frame),
-                        Kind::Blob => source.blobs.commit(*frame),
+                    let outcome = match kind {
+                        Kind::Cursor => source.cursors.commit(*frame, gap),
+                        Kind::Blob => source.blobs.commit(*frame, gap),
                     };
-                    if !on_time {
-                        self.stats.late_frames += 1;
+                    match outcome {
+                        Commit::Applied => {}
+                        Commit::Late => {
+                            self.stats.late_frames += 1;
+                            tracing::debug!("TUIO source '{current}': frame {frame} came late and was dropped");
+                        }
+                        Commit::Restarted => {
+                            self.stats.restarts += 1;
+                            tracing::info!(
+                                "TUIO source '{current}' restarted (frame {frame}): its old touches are dropped"
+                            );
+                        }
                     }
                 }
                 Op::Ignored => self.stats.ignored_messages += 1,
@@ -407,10 +481,20 @@ fn check_nesting(bytes: &[u8], depth: usize) -> Result<(), TuioError> {
         }
         // "#bundle\0", an 8-byte time tag, then (size, element) pairs.
         let mut rest = bytes.get(16..).unwrap_or_default();
-        while rest.len() >= 4 {
-            let size = u32::from_be_bytes([rest[0], rest[1], rest[2], rest[3]]) as usize;
-            let Some(element) = rest.get(4..4 + size) else {
-                break;
+        while !rest.is_empty() {
+            let size = match rest.get(..4) {
+                Some(b) => u32::from_be_bytes([b[0], b[1], b[2], b[3]]) as usize,
+                None => {
+                    return Err(TuioError::Osc(format!("{} stray bytes after the last bundle element", rest.len())));
+                }
+            };
+            // OSC elements are whole 32-bit words; a size past the end or
+            // off the word grid is a damaged packet, not one to half-apply.
+            let Some(element) = rest.get(4..4 + size).filter(|_| size % 4 == 0) else {
+                return Err(TuioError::Osc(format!(
+                    "bundle element of {size} bytes with {} left in the packet",
+                    rest.len() - 4
+                )));
             };
             check_nesting(element, depth + 1)?;
             rest = &rest[4 + size..];
@@ -609,6 +693,59 @@ mod tests {
         // -1 is always applied.
         t.receive(&cursor_frame(-1, &[(1, 0.5, 0.5)]), 0.0).expect("valid");
         assert_eq!(t.hands(TABLE, 0.0)[0].pose.x, 0.0);
+    }
+
+    #[test]
+    fn a_tracker_restarting_within_the_late_window_is_not_late() {
+        let mut t = TuioState::new();
+        for f in 1..=40 {
+            t.receive(&cursor_frame(f, &[(7, 0.2, 0.5)]), f64::from(f) / 60.0).expect("valid");
+        }
+        // A late packet within the stream is still late.
+        t.receive(&cursor_frame(38, &[(7, 0.9, 0.9)]), 41.0 / 60.0).expect("valid");
+        assert_eq!(t.stats().late_frames, 1);
+        // Restarted after a pause of a second: counting from 1, a new
+        // session; the old cursor 7 must not come back as a ghost.
+        t.receive(&cursor_frame(1, &[(1, 0.8, 0.5)]), 1.7).expect("valid");
+        let hands = t.hands(TABLE, 1.7);
+        assert_eq!(hands.len(), 1, "{hands:?}");
+        assert!((hands[0].pose.x - 0.3).abs() < 1e-6);
+        assert_eq!(t.stats().late_frames, 1);
+        assert_eq!(t.stats().restarts, 1);
+    }
+
+    #[test]
+    fn a_source_back_after_silence_starts_afresh() {
+        let mut t = TuioState::new();
+        t.receive(&cursor_frame(900, &[(1, 0.2, 0.5), (2, 0.4, 0.5)]), 0.0).expect("valid");
+        // Five seconds later, frame 901 with only a `set` for session 3 and
+        // no alive list: sessions 1 and 2 are from before the silence.
+        let set_only = bundle(vec![
+            msg("/tuio/2Dcur", vec![s("set"), OscType::Int(3), OscType::Float(0.6), OscType::Float(0.5)]),
+            msg("/tuio/2Dcur", vec![s("fseq"), OscType::Int(901)]),
+        ]);
+        t.receive(&set_only, 5.0).expect("valid");
+        assert_eq!(t.hands(TABLE, 5.0).len(), 1);
+        assert_eq!(t.stats().restarts, 1);
+    }
+
+    #[test]
+    fn other_profiles_and_damaged_bundles_are_counted() {
+        let mut t = TuioState::new();
+        t.receive(&bundle(vec![msg("/tuio/2Dobj", vec![s("fseq"), OscType::Int(1)])]), 0.0).expect("valid");
+        t.receive(&bundle(vec![msg("/tuio2/frm", vec![OscType::Int(1)])]), 0.0).expect("valid");
+        assert_eq!(t.stats().unknown_profile, 2);
+        let mut packet = cursor_frame(5, &[(1, 0.5, 0.5)]);
+        // The first element (its size at byte 16) claims a word more than
+        // the packet holds after it.
+        let claimed = (packet.len() - 20 + 4) as u32;
+        packet[16..20].copy_from_slice(&claimed.to_be_bytes());
+        assert!(t.receive(&packet, 0.1).is_err());
+        let mut packet = cursor_frame(5, &[(1, 0.5, 0.5)]);
+        packet.extend_from_slice(&[0, 0]);
+        assert!(t.receive(&packet, 0.1).is_err(), "stray bytes after the last element");
+        assert_eq!(t.stats().malformed, 2);
+        assert!(t.hands(TABLE, 0.1).is_empty(), "nothing of them applied");
     }
 
     #[test]
