@@ -1,5 +1,6 @@
 // Pipeline "overlay": the sensed contact image as a translucent dark "hand
-// shadow" lying on the table top (above decals, under objects). Row 0 of the
+// shadow" where the hands touch the glass: drawn after the objects without a
+// depth test, so a fingertip on a box stays visible over the box. Row 0 of the
 // image is the far edge (+y), column 0 the left edge (-x). Only the part of
 // the table where the image is non-zero is drawn. Prepended by frame.wgsl.
 

@@ -153,3 +153,40 @@ fn the_contact_overlay_shadows_where_the_hands_are() {
     assert!(sensed > 100 && darker * 100 >= sensed * 60, "{darker} of {sensed} sensed pixels darker");
     snapshots().check("contact_overlay", &shadow, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
 }
+
+/// Issue 18: the hands are on the glass, so a fingertip pressing on a box
+/// is drawn over the box (it used to vanish under the box's top).
+#[test]
+fn a_fingertip_on_a_box_is_drawn_over_the_box() {
+    let gpu = gpu();
+    let s =
+        session_at("tasks/cases/one_box.toml", TechniqueKind::Joint, Some("assets/gestures/fingertip_drag.toml"), 0.5);
+    let draw = |overlay: bool| {
+        render::render_to_image(
+            &gpu,
+            &scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: overlay }),
+            SIZE.0,
+            SIZE.1,
+        )
+        .expect("render")
+    };
+    let (plain, shadow) = (draw(false), draw(true));
+    let img = s.image();
+    let lum = |v: &image::Rgba<u8>| u32::from(v.0[0]) + u32::from(v.0[1]) + u32::from(v.0[2]);
+    let box_pose = s.world().object_pose(0).position;
+    let (mut sensed_on_box, mut darker) = (0, 0);
+    for (x, y, p) in shadow.enumerate_pixels() {
+        let c = (x as usize * img.width / SIZE.0 as usize, y as usize * img.height / SIZE.1 as usize);
+        // Table point of this pixel (the view spans the 1 m x 0.75 m table, as the contact image does).
+        let table = [(x as f32 + 0.5) / SIZE.0 as f32 - 0.5, 0.5 - (y as f32 + 0.5) / SIZE.1 as f32];
+        let on_box = (table[0] - box_pose.x).abs() < 0.065 && (table[1] * 0.75 - box_pose.y).abs() < 0.065;
+        if img.pixels[c.1 * img.width + c.0] > 200 && on_box {
+            sensed_on_box += 1;
+            if lum(p) + 30 < lum(plain.get_pixel(x, y)) {
+                darker += 1;
+            }
+        }
+    }
+    assert!(sensed_on_box > 20, "the fingertip is on the box: {sensed_on_box} pixels");
+    assert!(darker * 100 >= sensed_on_box * 80, "{darker} of {sensed_on_box} fingertip pixels over the box darker");
+}

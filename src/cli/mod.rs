@@ -198,9 +198,13 @@ pub struct ScreenshotArgs {
     /// Draw the technique's feedback (red joint lines, proxy cubes, particles).
     #[arg(long)]
     pub feedback: bool,
-    /// Draw the sensed contact image as a translucent hand shadow.
-    #[arg(long)]
+    /// Draw the sensed contact image as a translucent hand shadow over
+    /// everything (the default; kept for scripts that ask for it).
+    #[arg(long, overrides_with = "no_contact_overlay")]
     pub contact_overlay: bool,
+    /// Leave the hands out of the picture.
+    #[arg(long)]
+    pub no_contact_overlay: bool,
     /// Gesture file to replay before capturing.
     #[arg(long)]
     pub gesture: Option<PathBuf>,

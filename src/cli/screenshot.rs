@@ -28,8 +28,10 @@ pub fn run(args: &ScreenshotArgs) -> anyhow::Result<ExitCode> {
             }
         }
     }
-    let list =
-        scene_view::draw_list(&session, ViewOptions { feedback: args.feedback, contact_overlay: args.contact_overlay });
+    let list = scene_view::draw_list(
+        &session,
+        ViewOptions { feedback: args.feedback, contact_overlay: !args.no_contact_overlay },
+    );
     let gpu = GpuContext::new_headless()?;
     let image = render::render_to_image(&gpu, &list, w, h)?;
     if let Some(dir) = args.out.parent().filter(|d| !d.as_os_str().is_empty()) {

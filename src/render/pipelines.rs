@@ -158,7 +158,7 @@ fn uniform_entry() -> wgpu::BindGroupLayoutEntry {
 
 impl Pipelines {
     pub fn new(device: &wgpu::Device, config: PipelineConfig) -> Self {
-        use wgpu::CompareFunction::{Greater, LessEqual};
+        use wgpu::CompareFunction::{Always, Greater, LessEqual};
         let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("frame bind group layout"),
             entries: &[
@@ -359,7 +359,9 @@ impl Pipelines {
                     fs: Some("fs_main"),
                     buffers: &[Some(OverlayRegion::layout())],
                     cull: None,
-                    depth: Depth::test_only(LessEqual),
+                    // The hands are on the glass, above everything the table shows:
+                    // drawn over objects (no depth test), never hidden by them.
+                    depth: Depth::test_only(Always),
                     blend: alpha,
                     sample_count: samples,
                 },
