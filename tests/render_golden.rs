@@ -16,7 +16,8 @@ use glam::{Vec2, Vec3};
 use image::RgbaImage;
 use surfacelab::render::snapshot::{SnapshotDir, Tolerance};
 use surfacelab::render::{
-    CameraMatrices, Capture, DrawList, FeedbackDraw, GpuContext, RenderError, RendererOptions, render_to_image, samples,
+    CameraMatrices, Capture, DOT_PER_LINE_WIDTH, DrawList, FeedbackDraw, GpuContext, RenderError, RendererOptions,
+    render_to_image, samples,
 };
 
 const WIDTH: u32 = 640;
@@ -92,7 +93,13 @@ fn on_feedback(camera: &CameraMatrices, feedback: &[FeedbackDraw], p: Vec2, line
     let size = [WIDTH, HEIGHT];
     let project = |q: Vec3| camera.world_to_pixel(size, q).expect("feedback is in front of the camera");
     feedback.iter().any(|f| match *f {
-        FeedbackDraw::Line { a, b, .. } => distance_to_segment(p, project(a), project(b)) <= 0.5 * line_px + margin,
+        FeedbackDraw::Line { a, b, .. } => {
+            // The line, or the square dot at either end (half its side times
+            // sqrt 2 reaches the dot's corners).
+            let dot = 0.5 * DOT_PER_LINE_WIDTH * line_px * std::f32::consts::SQRT_2;
+            distance_to_segment(p, project(a), project(b)) <= 0.5 * line_px + margin
+                || [a, b].iter().any(|&e| p.distance(project(e)) <= dot + margin)
+        }
         FeedbackDraw::Cube { center, half, .. } => {
             let (mut lo, mut hi) = (Vec2::splat(f32::MAX), Vec2::splat(f32::MIN));
             for corner in [-1.0f32, 1.0]

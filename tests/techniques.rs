@@ -316,3 +316,27 @@ fn every_technique_runs_every_study_task_without_nan() {
         }
     }
 }
+
+/// Issue 18: with feedback on, Joint shows its side-collision prism (the
+/// body a sweep pushes with) as a wireframe where the hand is: a flat hand
+/// on the bare table away from the box.
+#[test]
+fn joint_feedback_outlines_its_side_collision_prism() {
+    use surfacelab::pipeline::surface::{Hand, HandKind};
+    let mut s = session("tasks/cases/one_box.toml", TechniqueKind::Joint);
+    let hand = Hand::new(1, HandKind::FlatHand, -0.3, 0.0);
+    for _ in 0..5 {
+        s.step(&[hand]).expect("steps");
+    }
+    let lines = s.feedback().lines;
+    assert!(lines.len() >= 12, "a prism has at least 12 edges: {}", lines.len());
+    for (a, b) in &lines {
+        for p in [a, b] {
+            assert!((p.x + 0.3).abs() < 0.15 && p.y.abs() < 0.15, "an edge end far from the hand: {p}");
+            assert!(p.z > -0.01 && p.z < 0.3, "prisms stand on the table, 25 cm tall: {p}");
+        }
+    }
+    assert!(lines.iter().any(|(a, b)| (a.z - b.z).abs() > 0.2), "vertical edges of a 25 cm prism");
+    s.step(&[]).expect("steps");
+    assert!(s.feedback().lines.is_empty(), "gone when the hand lifts");
+}

@@ -228,6 +228,9 @@ impl CubeInstance {
 }
 
 /// Splits feedback into line and cube instances; lines get `line_px` width.
+/// Width of an end dot, in line widths.
+pub const DOT_PER_LINE_WIDTH: f32 = 2.5;
+
 pub fn feedback_instances(feedback: &[FeedbackDraw], line_px: f32) -> (Vec<LineInstance>, Vec<CubeInstance>) {
     let mut lines = Vec::new();
     let mut cubes = Vec::new();
@@ -235,6 +238,12 @@ pub fn feedback_instances(feedback: &[FeedbackDraw], line_px: f32) -> (Vec<LineI
         match *item {
             FeedbackDraw::Line { a, b, color } => {
                 lines.push(LineInstance { a: [a.x, a.y, a.z, line_px], b: [b.x, b.y, b.z, line_px], color });
+                // A square dot at each end (a zero-length line is a square
+                // of its width), so a short joint line still reads as one.
+                let dot = DOT_PER_LINE_WIDTH * line_px;
+                for p in [a, b] {
+                    lines.push(LineInstance { a: [p.x, p.y, p.z, dot], b: [p.x, p.y, p.z, dot], color });
+                }
             }
             FeedbackDraw::Cube { center, half, color } => {
                 cubes.push(CubeInstance { center_half: [center.x, center.y, center.z, half], color });

@@ -39,4 +39,5 @@ pub use gpu::{
     AdapterSummary, GpuContext, GpuError, INSTALL_HINT, preferred_surface_format, probe_adapter, request_adapter,
     request_device,
 };
+pub use instances::DOT_PER_LINE_WIDTH;
 pub use renderer::{Renderer, RendererOptions};

@@ -207,7 +207,10 @@ impl Renderer {
         self.camera = Some(camera);
         self.clear = clear_color(list.clear_color, encode_srgb);
 
-        self.frame.upload(&self.device, &self.queue, &mut self.meshes, list, self.options.feedback_line_px);
+        // Lines keep their look at any size: the width is for a 768-pixel-high
+        // view and grows with it (never below the option's width).
+        let line_px = self.options.feedback_line_px * (size[1] as f32 / 768.0).max(1.0);
+        self.frame.upload(&self.device, &self.queue, &mut self.meshes, list, line_px);
 
         if let Some(overlay) = &list.contact_overlay {
             let size = [overlay.width, overlay.height];

@@ -5,7 +5,8 @@ use glam::Vec3;
 /// Feedback geometry in world coordinates.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Feedback {
-    /// Joint: a line from each contact to its anchor (gone when the joint breaks).
+    /// Joint: a line from each contact to its anchor (gone when the joint
+    /// breaks), and the edges of its side-collision prisms.
     pub lines: Vec<(Vec3, Vec3)>,
     /// Proxy: a cube at each contact centre; Particle: a small cube per particle.
     pub cubes: Vec<(Vec3, f32)>,

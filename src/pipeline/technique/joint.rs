@@ -230,6 +230,34 @@ impl JointTechnique {
     }
 }
 
+/// The edges of a pusher prism where its collider is now.
+fn prism_edges(col: &rapier3d::prelude::Collider) -> Vec<(Vec3, Vec3)> {
+    let pose = col.position();
+    let at = |p: Vec3| pose.transform_point(p);
+    let shape = col.shape();
+    if let Some(poly) = shape.as_convex_polyhedron() {
+        let points = poly.points();
+        return poly
+            .edges()
+            .iter()
+            .map(|e| (at(points[e.vertices[0] as usize]), at(points[e.vertices[1] as usize])))
+            .collect();
+    }
+    let h = shape.compute_local_aabb().half_extents();
+    let corner = |i: usize| {
+        Vec3::new(
+            if i & 1 == 0 { -h.x } else { h.x },
+            if i & 2 == 0 { -h.y } else { h.y },
+            if i & 4 == 0 { -h.z } else { h.z },
+        )
+    };
+    // The 12 edges of a box: corners differing in exactly one axis bit.
+    (0..8)
+        .flat_map(|i| [1, 2, 4].into_iter().filter(move |b| i & b == 0).map(move |b| (i, i | b)))
+        .map(|(i, j)| (at(corner(i)), at(corner(j))))
+        .collect()
+}
+
 /// Where a pusher standing at `base_z` goes and its shape: the contact's
 /// hull where it appears at touch height (perspective), relative to the
 /// contact's own point there, scaled by `scale` about that point.
@@ -389,6 +417,13 @@ impl Technique for JointTechnique {
             let (p, _) = Self::soft_held(world, g.anchor, world.dt())?;
             Some((a, p))
         }));
+        // The side-collision prisms are what a sweep pushes with: without
+        // their outline a Joint sweep looks like an invisible wall.
+        for p in self.pushers.values() {
+            if let Some(col) = physics.colliders.get(p.collider) {
+                lines.extend(prism_edges(col));
+            }
+        }
         Feedback { lines, cubes: Vec::new() }
     }
 
