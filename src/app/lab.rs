@@ -26,8 +26,6 @@ const MAX_STEPS_PER_FRAME: u32 = 6;
 const HINT_SECONDS: f64 = 10.0;
 /// Seconds a participant sees a trial's result before the next one.
 pub const BETWEEN_TRIALS_S: f64 = 3.0;
-/// Room around the table in the view, as a factor on its half size.
-const VIEW_MARGIN: f32 = 1.03;
 /// Seconds a status message stays in the panel.
 const STATUS_SECONDS: f64 = 8.0;
 
@@ -263,19 +261,11 @@ impl Lab {
         self.participant.as_ref().is_some_and(|t| t.phase == Phase::Done)
     }
 
-    /// What to draw into a view of `size` pixels: the session's draw list
-    /// with the field of view fitted so the whole table shows, with a small
-    /// margin, whatever the view's shape.
+    /// What to draw into a view of `size` pixels: the whole table and
+    /// everything on it, whatever the view's shape
+    /// ([`scene_view::fitted_draw_list`]).
     pub fn draw_list(&self, size: [u32; 2]) -> DrawList {
-        let mut list = scene_view::draw_list(&self.session, self.view);
-        let [w, d] = self.table();
-        let aspect = size[0].max(1) as f32 / size[1].max(1) as f32;
-        let height = list.camera.eye.z;
-        if height > 0.0 {
-            let half = (0.5 * d).max(0.5 * w / aspect) * VIEW_MARGIN;
-            list.camera.fov_y_deg = (2.0 * (half / height).atan()).to_degrees();
-        }
-        list
+        scene_view::fitted_draw_list(&self.session, self.view, size)
     }
 
     pub fn recording(&self) -> Option<&Recording> {

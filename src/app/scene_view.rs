@@ -77,6 +77,54 @@ pub fn draw_list(session: &Session, options: ViewOptions) -> DrawList {
     }
 }
 
+/// Room around what must show, as a factor on the view's half size.
+const VIEW_MARGIN: f32 = 1.03;
+
+/// Everything the session shows now, seen by a view of `size` pixels: the
+/// field of view is widened (letterboxed) until the whole table and every
+/// object on it show at the view's aspect ratio. Tall objects near an edge
+/// appear pushed outward in perspective, so each object counts by the top
+/// of its bounding sphere: an 800x800 view no longer cuts off the sides of
+/// the table, nor a cylinder pushed against a wall.
+pub fn fitted_draw_list(session: &Session, options: ViewOptions, size: [u32; 2]) -> DrawList {
+    let mut list = draw_list(session, options);
+    let scene = session.scene();
+    let world = session.world();
+    let height = list.camera.eye.z;
+    if height <= 0.0 {
+        return list;
+    }
+    let aspect = size[0].max(1) as f32 / size[1].max(1) as f32;
+    // Half extents [x, y] on the table plane's projection that must show.
+    let mut need = [0.5 * scene.table.width, 0.5 * scene.table.depth];
+    for i in (0..scene.objects.len()).filter(|&i| world.is_active(i)) {
+        let half = local_half_extents(scene.objects[i].shape);
+        let pose = world.object_pose(i);
+        // The corners of the object's own bounding box, where it is now.
+        for k in 0..8 {
+            let sign = |bit: usize| if k & bit == 0 { -1.0 } else { 1.0 };
+            let local = Vec3::new(sign(1) * half.x, sign(2) * half.y, sign(4) * half.z);
+            let q = pose.position + pose.rotation * local;
+            let outward = height / (height - q.z.min(0.9 * height));
+            need[0] = need[0].max(q.x.abs() * outward);
+            need[1] = need[1].max(q.y.abs() * outward);
+        }
+    }
+    let half = need[1].max(need[0] / aspect) * VIEW_MARGIN;
+    list.camera.fov_y_deg = (2.0 * (half / height).atan()).to_degrees();
+    list
+}
+
+/// Half extents of the box around a shape in its own frame (a capsule's
+/// axis is its z).
+fn local_half_extents(shape: Shape) -> Vec3 {
+    let r = shape.footprint_radius();
+    match shape {
+        Shape::Box { half_extents } => half_extents,
+        Shape::Sphere { .. } | Shape::Cylinder { .. } | Shape::Capsule { .. } => Vec3::new(r, r, shape.half_z()),
+    }
+}
+
 /// Soft bodies as the simulation has them now: every piece a tear left,
 /// in its body's colour, straight from rapier's particles and surface.
 fn deformables(session: &Session) -> Vec<DeformableDraw> {
@@ -192,4 +240,52 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipeline::technique::TechniqueKind;
+    use crate::render::CameraMatrices;
+    use crate::session::SessionOptions;
+
+    /// A 30 cm column in the table's far right corner, the table's corners,
+    /// and the column's top all show in views of any shape.
+    #[test]
+    fn the_fitted_view_shows_the_table_and_a_tall_object_at_its_corner() {
+        let text = r#"
+name = "corner_column"
+effects = ["gravity"]
+[table]
+size = [1.0, 0.75]
+[[objects]]
+name = "column"
+shape = "cylinder"
+radius = 0.03
+height = 0.3
+color = "yellow"
+position = [0.46, 0.33]
+body = "fixed"
+"#;
+        let scene = crate::scene::parse(text, "test").expect("scene");
+        let session = Session::new(&scene, TechniqueKind::Joint, SessionOptions::default()).expect("session");
+        for size in [[800, 800], [960, 800], [1280, 800], [400, 900], [1600, 400]] {
+            let list = fitted_draw_list(&session, ViewOptions::default(), size);
+            let camera = CameraMatrices::for_draw_list(&list, size);
+            let inside = |p: Vec3| {
+                let q = camera.world_to_pixel(size, p).expect("in front of the camera");
+                q.x >= 0.0 && q.y >= 0.0 && q.x <= size[0] as f32 && q.y <= size[1] as f32
+            };
+            for corner in [[-0.5, -0.375], [0.5, 0.375], [-0.5, 0.375], [0.5, -0.375]] {
+                assert!(inside(Vec3::new(corner[0], corner[1], 0.0)), "{size:?}: table corner {corner:?}");
+            }
+            for top in [Vec3::new(0.49, 0.36, 0.3), Vec3::new(0.49, 0.30, 0.3), Vec3::new(0.43, 0.36, 0.3)] {
+                assert!(inside(top), "{size:?}: the column's top at {top}");
+            }
+            // Letterboxed, not a fixed wide margin: the table fills one axis.
+            let table_corner = camera.world_to_pixel(size, Vec3::new(0.5, 0.375, 0.0)).expect("in front");
+            let fill = (table_corner.x / size[0] as f32).max(1.0 - table_corner.y / size[1] as f32);
+            assert!(fill > 0.85, "{size:?}: the table fills {fill} of the view");
+        }
+    }
 }

@@ -28,9 +28,10 @@ pub fn run(args: &ScreenshotArgs) -> anyhow::Result<ExitCode> {
             }
         }
     }
-    let list = scene_view::draw_list(
+    let list = scene_view::fitted_draw_list(
         &session,
         ViewOptions { feedback: args.feedback, contact_overlay: !args.no_contact_overlay },
+        [w, h],
     );
     let gpu = GpuContext::new_headless()?;
     let image = render::render_to_image(&gpu, &list, w, h)?;
