@@ -8,7 +8,7 @@ use super::clock::Clock;
 use super::participant_mode::{Phase, Trials};
 use super::record::{Recording, timestamped};
 use super::scene_view::{self, ViewOptions};
-use super::stats::Stats;
+use super::stats::FrameStats;
 use crate::harness::study::TrialResult;
 use crate::input::Input;
 use crate::input::tuio::TuioListener;
@@ -45,7 +45,7 @@ pub struct Lab {
     recording: Option<Recording>,
     /// Folder under which gestures/ and screenshots/ are written.
     pub out_dir: PathBuf,
-    pub stats: Stats,
+    pub stats: FrameStats,
     status: Option<(String, f64)>,
     pub participant: Option<Trials>,
     /// Wall-clock seconds since the demo opened (set by the window).
@@ -72,7 +72,7 @@ impl Lab {
             input: Input::new(options.script.clone(), tuio),
             recording: None,
             out_dir: options.out_dir.clone(),
-            stats: Stats::default(),
+            stats: FrameStats::default(),
             status: None,
             participant,
             wall: 0.0,

@@ -23,5 +23,5 @@ pub use error::StudyError;
 pub use output::{COLUMNS, RunFile, TrialRow};
 pub use runner::{MergeOutcome, RunOptions, RunOutcome, merge, resume_study, run_study, write_report};
 pub use strategies::{STRATEGY_COLUMNS, StrategyRow, read_strategies, strategies};
-pub use summary::{Stats, SummaryRow, describe, summarize, t_quantile_975};
+pub use summary::{CellStats, SummaryRow, describe, summarize, t_quantile_975};
 pub use trial::{ParticipantRun, Technique, TrialResult, TrialRunner, TrialSpec, UnknownTechnique};
