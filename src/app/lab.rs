@@ -220,15 +220,8 @@ impl Lab {
         if !p.complete && self.session.time() < limit {
             return false;
         }
-        let result = TrialResult {
-            // Failed at the limit, recorded at the limit (as the study's runners do).
-            completion_time_s: p.completed_at.filter(|_| p.complete).unwrap_or(limit),
-            completed: p.complete,
-            restarts: p.restarts,
-            objects_placed: p.placed as u32,
-            steps: self.session.frames(),
-            ..TrialResult::default()
-        };
+        // Failed at the limit, recorded at the limit (as the study's runners do).
+        let result = TrialResult::from_progress(&p, self.session.frames(), limit);
         self.stop_recording();
         let wall = self.wall;
         if let Some(trials) = &mut self.participant

@@ -30,7 +30,7 @@ pub fn want(scene: &Scene, tracker: &GoalTracker, i: usize, observed: &[Vec2]) -
         Goal::Sorting { zones, .. } => {
             let o = &scene.objects[i];
             let p = *observed.get(i)?;
-            let mine = || zones.iter().enumerate().filter(|(_, z)| z.color_name == o.color_name);
+            let mine = || zones.iter().enumerate().filter(|(_, z)| z.color == o.color);
             if mine().any(|(_, z)| {
                 z.contains(p) && inset(z.min, z.max, 0.03).is_some_and(|(a, b)| p.cmpge(a).all() && p.cmple(b).all())
             }) {

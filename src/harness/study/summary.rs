@@ -22,8 +22,8 @@ use super::cells::task_cells;
 use super::design::StudyDesign;
 use super::error::StudyError;
 use super::output::TrialRow;
-use super::trial::Technique;
 use super::within_ci::cousineau_morey_half_widths;
+use crate::pipeline::technique::TechniqueKind;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -33,7 +33,7 @@ use std::path::Path;
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SummaryRow {
     pub task: String,
-    pub technique: Technique,
+    pub technique: TechniqueKind,
     pub feedback: bool,
     /// Participants with at least one timed measured trial in this condition.
     pub participants: u32,

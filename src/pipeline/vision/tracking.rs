@@ -37,7 +37,7 @@ use std::collections::HashSet;
 use super::components::{BBox, Blob, Run};
 use super::grid::BoxGrid;
 
-/// BlobTracker settings.
+/// [`BlobTracker`] settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct BlobTrackerParams {
     /// Furthest a contact may be from its predicted place and keep its id

@@ -59,7 +59,7 @@ impl GoalTracker {
             Goal::None => 0,
             Goal::Positioning { targets, .. } => targets.len(),
             Goal::Sorting { zones, .. } => {
-                scene.objects.iter().filter(|o| zones.iter().any(|z| z.color_name == o.color_name)).count()
+                scene.objects.iter().filter(|o| zones.iter().any(|z| z.color == o.color)).count()
             }
             Goal::Steering(g) => g.waypoints.len() + 1,
             Goal::Gather { .. } => scene.objects.iter().filter(|o| o.body == crate::scene::BodyKind::Dynamic).count(),
@@ -118,7 +118,7 @@ impl GoalTracker {
                 let mut all = true;
                 let mut oks = Vec::new();
                 for (i, o) in scene.objects.iter().enumerate() {
-                    let mine: Vec<_> = zones.iter().filter(|z| z.color_name == o.color_name).collect();
+                    let mine: Vec<_> = zones.iter().filter(|z| z.color == o.color).collect();
                     if mine.is_empty() {
                         continue;
                     }
