@@ -119,6 +119,13 @@ fn parse_technique(s: &str) -> Result<TechniqueKind, String> {
     s.parse().map_err(|e: crate::pipeline::technique::UnknownTechnique| e.to_string())
 }
 
+/// A task name or path from a comma-separated list, spaces around it
+/// dropped; whether the scene loads is checked where it is loaded.
+fn parse_task_name(s: &str) -> Result<String, String> {
+    let t = s.trim();
+    if t.is_empty() { Err("empty task name".into()) } else { Ok(t.to_owned()) }
+}
+
 /// A finite, non-negative number of seconds.
 fn parse_seconds(s: &str) -> Result<f32, String> {
     let v: f32 = s.parse().map_err(|_| format!("`{s}` is not a number of seconds"))?;
@@ -146,8 +153,8 @@ pub struct StudyArgs {
     #[arg(long, value_delimiter = ',', value_parser = parse_technique)]
     pub techniques: Option<Vec<TechniqueKind>>,
     /// Comma-separated tasks, in the fixed order they run (default positioning,sorting,steering).
-    #[arg(long)]
-    pub tasks: Option<String>,
+    #[arg(long, value_delimiter = ',', value_parser = parse_task_name)]
+    pub tasks: Option<Vec<String>>,
     /// Skip the unmeasured practice trial before each condition.
     #[arg(long)]
     pub no_practice: bool,

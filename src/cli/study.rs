@@ -152,7 +152,7 @@ fn design_from(args: &StudyArgs) -> anyhow::Result<StudyDesign> {
         d.techniques.clone_from(ts);
     }
     if let Some(ts) = &args.tasks {
-        d.tasks = ts.split(',').map(|t| t.trim().to_string()).collect();
+        d.tasks.clone_from(ts);
         for t in &d.tasks {
             crate::scene::load(t).with_context(|| format!("--tasks: task `{t}`"))?;
         }
