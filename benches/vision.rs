@@ -10,8 +10,8 @@ use std::hint::black_box;
 use criterion::{BatchSize, Criterion, criterion_group, criterion_main};
 use surfacelab::pipeline::surface::{ContactImage, Hand, HandKind, RasterParams, Sensor, rasterize, rasterize_into};
 use surfacelab::pipeline::vision::{
-    BlockMatcher, Mask, Pipeline, Tracker, TrackerParams, VisionParams, find_blobs, find_edges, gradient_magnitude,
-    rigid_guess, threshold_into,
+    BlobTracker, BlobTrackerParams, BlockMatcher, Mask, Pipeline, VisionParams, find_blobs, find_edges,
+    gradient_magnitude, rigid_guess, threshold_into,
 };
 
 /// A scene at frame `k` of a 60 Hz motion: each hand moves ~1 cm/frame and
@@ -57,7 +57,7 @@ fn bench_scene(c: &mut Criterion, name: &str) {
     let blobs = find_blobs(&cur, &mask, params.min_area);
     let prev_blobs = find_blobs(&prev, &prev_mask, params.min_area);
 
-    let mut primed = Tracker::new(TrackerParams::default());
+    let mut primed = BlobTracker::new(BlobTrackerParams::default());
     primed.update(&prev_blobs);
     group.bench_function("tracking", |b| {
         b.iter_batched(|| primed.clone(), |mut t| t.update(black_box(&blobs)), BatchSize::SmallInput);

@@ -361,3 +361,33 @@ fn built_in_scenes_and_gestures_work_from_any_folder() {
     assert!(json.contains("\"scene\": \"my_positioning\""), "the file on disk wins: {json}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// Flag values are checked when the command line is parsed: a bad one exits
+/// 2 before any work starts, and the message names the flag and the value.
+#[test]
+fn bad_flag_values_exit_2_and_name_the_flag() {
+    let out = tmp("bad_flags");
+    let study = |flag: &str, value: &str| {
+        bin()
+            .args(["study", "--no-progress", "--out"])
+            .arg(out.join("never"))
+            .args([flag, value])
+            .output()
+            .expect("runs")
+    };
+    for (flag, value) in [("--shard", "4/4"), ("--shard", "one"), ("--techniques", "joint,spring")] {
+        let o = study(flag, value);
+        assert_eq!(o.status.code(), Some(2), "{flag} {value}: {}", text(&o));
+        assert!(
+            text(&o).contains(flag) && text(&o).contains(value.rsplit(',').next().unwrap_or(value)),
+            "{}",
+            text(&o)
+        );
+    }
+    assert!(!out.join("never").exists(), "nothing was run");
+    for (flag, value) in [("--condition", "rope:on"), ("--condition", "proxy:maybe"), ("--participant", "0")] {
+        let o = bin().args(["demo", flag, value]).output().expect("runs");
+        assert_eq!(o.status.code(), Some(2), "{flag} {value}: {}", text(&o));
+        assert!(text(&o).contains(flag), "{}", text(&o));
+    }
+}

@@ -6,7 +6,7 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use surfacelab::harness::participant::{Learner, Manner, PlannerOptions, ScriptedRunner, Skill, run_scripted_with};
 use surfacelab::harness::study::output::{RUN_TOML, TRIALS_CSV};
-use surfacelab::harness::study::{RunOptions, StudyDesign, Technique, resume_study, run_study};
+use surfacelab::harness::study::{RunOptions, StudyDesign, resume_study, run_study};
 use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
 
@@ -26,7 +26,7 @@ fn read(path: &Path) -> String {
 }
 
 /// One practice-and-measure design: a participant, a task, one condition.
-fn tiny(task: &str, technique: Technique) -> StudyDesign {
+fn tiny(task: &str, technique: TechniqueKind) -> StudyDesign {
     StudyDesign {
         participants: 1,
         tasks: vec![task.into()],
@@ -44,11 +44,11 @@ fn one_technique_under_two_names_gives_identical_trials_and_strategies() {
     // every strategy must agree; only the label column differs.
     let a = scratch("guard_proxy");
     let b = scratch("guard_relabelled");
-    let design_a = tiny("sorting", Technique::Proxy);
+    let design_a = tiny("sorting", TechniqueKind::Proxy);
     run_study(&design_a, &a, &ScriptedRunner::new(design_a.clone(), None), &quiet()).expect("run a");
-    let design_b = tiny("sorting", Technique::Joint);
+    let design_b = tiny("sorting", TechniqueKind::Joint);
     let mut runner_b = ScriptedRunner::new(design_b.clone(), None);
-    runner_b.relabel = BTreeMap::from([(Technique::Joint, TechniqueKind::Proxy)]);
+    runner_b.relabel = BTreeMap::from([(TechniqueKind::Joint, TechniqueKind::Proxy)]);
     run_study(&design_b, &b, &runner_b, &quiet()).expect("run b");
     for file in [TRIALS_CSV, "strategies.csv"] {
         let ta = read(&a.join(file));
@@ -66,7 +66,7 @@ fn one_technique_under_two_names_gives_identical_trials_and_strategies() {
 fn a_resumed_scripted_run_writes_the_same_bytes() {
     // Two participants, practice + 1 measured trial: killed after P1's
     // practice trial, the resume must replay it to rebuild P1's learner.
-    let design = StudyDesign { participants: 2, ..tiny("sorting", Technique::Particle) };
+    let design = StudyDesign { participants: 2, ..tiny("sorting", TechniqueKind::Particle) };
     let full_dir = scratch("resume_full");
     run_study(&design, &full_dir, &ScriptedRunner::new(design.clone(), None), &quiet()).expect("full");
     let full = read(&full_dir.join(TRIALS_CSV));
@@ -92,7 +92,8 @@ fn practice_tries_several_manners_and_what_is_learned_carries_over() {
     let (o, learned) =
         run_scripted_with(&scene, TechniqueKind::Proxy, true, skill, 5, 120.0, fresh.clone(), practice, None)
             .expect("practice");
-    let used: Vec<Manner> = o.usage.used().map(|(m, _, _)| m).collect();
+    // The manners column: `name:time_s:net_m` per manner used.
+    let used: Vec<&str> = o.manners.split(';').filter_map(|item| item.split(':').next()).collect();
     assert!(used.len() >= 3, "a practice trial tries manners: {used:?}");
     assert_ne!(learned, fresh, "practice changes the estimates");
     // The same measured trial from the learned state and from a fresh one
@@ -102,7 +103,7 @@ fn practice_tries_several_manners_and_what_is_learned_carries_over() {
             .expect("measured")
             .0
     };
-    assert_ne!(run(learned).usage, run(fresh).usage);
+    assert_ne!(run(learned).manners, run(fresh).manners);
 }
 
 #[test]

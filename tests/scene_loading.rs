@@ -1,7 +1,9 @@
 //! Scene files: the shipped tasks load, and every class of bad input names
 //! the file, the line and the field.
 
-use surfacelab::scene::{self, Effect, Goal, SceneError, Shape};
+use surfacelab::pipeline::technique::TechniqueKind;
+use surfacelab::scene::{self, Color, Effect, Goal, SceneError, Shape};
+use surfacelab::session::{Session, SessionOptions};
 
 #[test]
 fn positioning_has_four_spheres_and_four_boxes_each_with_a_target() {
@@ -20,12 +22,12 @@ fn positioning_has_four_spheres_and_four_boxes_each_with_a_target() {
 fn sorting_has_two_colours_and_a_zone_for_each() {
     let s = scene::load("sorting").expect("sorting loads");
     let Goal::Sorting { zones, .. } = &s.goal else { panic!("sorting goal") };
-    let mut colours: Vec<&str> = s.objects.iter().map(|o| o.color_name.as_str()).collect();
-    colours.sort_unstable();
-    colours.dedup();
-    assert_eq!(colours, ["blue", "red"]);
-    for c in colours {
-        assert!(zones.iter().any(|z| z.color_name == c), "zone for {c}");
+    let red = Color::parse("red").expect("palette");
+    let blue = Color::parse("blue").expect("palette");
+    assert!(s.objects.iter().all(|o| o.color == red || o.color == blue));
+    for c in [red, blue] {
+        assert!(s.objects.iter().any(|o| o.color == c), "an object of {c:?}");
+        assert!(zones.iter().any(|z| z.color == c), "zone for {c:?}");
     }
     // Different shapes, sizes and masses.
     let masses: Vec<f32> = s.objects.iter().map(|o| o.mass).collect();
@@ -135,4 +137,52 @@ fn missing_scene_file_lists_where_it_looked() {
         Err(SceneError::NotFound { tried, .. }) => assert!(tried.contains("tasks")),
         other => panic!("expected NotFound, got {other:?}"),
     }
+}
+
+#[test]
+fn sorting_matches_zones_to_objects_by_colour_value_not_spelling() {
+    // The object is `#ff0000`, its zone `#FF0000`: the same colour. The
+    // green box has no zone, so the goal concerns one object.
+    let text = r##"
+name = "hex_sorting"
+effects = ["gravity", "friction", "sleeping"]
+time_limit_s = 10
+
+[table]
+size = [1.0, 0.75]
+
+[[objects]]
+name = "red_box"
+shape = "box"
+size = [0.04, 0.04, 0.03]
+mass = 0.05
+color = "#ff0000"
+position = [-0.4, 0.0]
+
+[[objects]]
+name = "green_box"
+shape = "box"
+size = [0.04, 0.04, 0.03]
+mass = 0.05
+color = "#00ff00"
+position = [0.2, 0.0]
+
+[goal]
+kind = "sorting"
+dwell_s = 0.5
+
+[[goal.zones]]
+color = "#FF0000"
+min = [-0.5, -0.375]
+max = [-0.28, 0.375]
+"##;
+    let s = scene::parse(text, "hex_sorting.toml").expect("loads");
+    assert_eq!(s.objects[0].color, Color::parse("#FF0000").expect("hex"));
+    let mut session = Session::new(&s, TechniqueKind::Joint, SessionOptions::default()).expect("session");
+    assert_eq!(session.tracker().progress().total, 1, "only the red box has a zone");
+    while session.time() < 1.0 && !session.progress().complete {
+        session.step(&[]).expect("steps");
+    }
+    let p = session.progress();
+    assert!(p.complete && p.placed == 1, "the red box rests in its zone: {p:?}");
 }

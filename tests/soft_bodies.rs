@@ -87,7 +87,7 @@ fn soft_bodies_exist_only_when_their_effect_is_declared() {
     assert!(w.physics().soft_bodies.is_empty());
     assert!(!w.soft_exists(0));
     let err = w.add_soft_body(&cloth.soft_bodies[0]).expect_err("effect is off");
-    assert!(matches!(err, WorldError::EffectNotDeclared { effect: "cloth", .. }), "{err}");
+    assert!(matches!(err, WorldError::EffectNotDeclared { effect: Effect::Cloth, .. }), "{err}");
     let msg = err.to_string();
     assert!(msg.contains("`cloth`") && msg.contains("scene `cloth`"), "{msg}");
 

@@ -9,10 +9,11 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
 use surfacelab::harness::study::output::{RUN_TOML, SUMMARY_CSV, TRIALS_CSV, read_trials};
 use surfacelab::harness::study::{
-    COLUMNS, ParticipantRun, RunFile, RunOptions, STRATEGY_COLUMNS, Shard, StudyDesign, StudyError, Technique,
+    COLUMNS, ParticipantRun, RunFile, RunOptions, RunnerSettings, STRATEGY_COLUMNS, Shard, StudyDesign, StudyError,
     TrialResult, TrialRow, TrialRunner, TrialSpec, describe, merge, resume_study, run_study, summarize, t_quantile_975,
     trial_seed, williams_square,
 };
+use surfacelab::pipeline::technique::TechniqueKind;
 
 /// Results that depend only on the spec. `jitter` sleeps a seed-dependent
 /// moment so parallel workers finish out of order.
@@ -51,11 +52,11 @@ impl TrialRunner for FakeRunner {
             _ => 80.0,
         };
         let factor = match spec.technique {
-            Technique::Direct => 2.0,
-            Technique::Joint => 0.8,
-            Technique::Proxy => 1.1,
-            Technique::Particle => 1.0,
-            Technique::Hybrid => 0.95,
+            TechniqueKind::Direct => 2.0,
+            TechniqueKind::Joint => 0.8,
+            TechniqueKind::Proxy => 1.1,
+            TechniqueKind::Particle => 1.0,
+            TechniqueKind::Hybrid => 0.95,
         };
         let feedback = if spec.feedback { 0.9 } else { 1.0 };
         let noise = (spec.seed % 10_000) as f64 / 997.0;
@@ -194,7 +195,7 @@ fn williams_square_is_balanced_for_other_sizes() {
 
 /// How often each technique sits at each position, per feedback-order group
 /// (keyed by the participant's first feedback level).
-fn positions_per_group(design: &StudyDesign) -> BTreeMap<(bool, usize, Technique), usize> {
+fn positions_per_group(design: &StudyDesign) -> BTreeMap<(bool, usize, TechniqueKind), usize> {
     let mut counts = BTreeMap::new();
     for p in 1..=design.participants {
         let first = design.feedback_order(p)[0];
@@ -207,7 +208,7 @@ fn positions_per_group(design: &StudyDesign) -> BTreeMap<(bool, usize, Technique
 
 #[test]
 fn paper_design_counterbalances_six_participants() {
-    use Technique::{Joint as J, Particle as Pa, Proxy as P};
+    use TechniqueKind::{Joint as J, Particle as Pa, Proxy as P};
     let design = StudyDesign::default();
     assert_eq!(design.balance_note(), None);
     // By hand from the Williams rows [J,P,Pa] [P,Pa,J] [Pa,J,P] and their
@@ -250,7 +251,7 @@ fn other_participant_counts_balance_only_in_whole_units() {
     // 4 techniques with on/off: a unit is 8 (a 4-row square per group).
     let four = StudyDesign {
         participants: 8,
-        techniques: vec![Technique::Direct, Technique::Joint, Technique::Proxy, Technique::Particle],
+        techniques: vec![TechniqueKind::Direct, TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle],
         ..StudyDesign::default()
     };
     assert_eq!(four.balance_unit(), 8);
@@ -268,7 +269,7 @@ fn other_participant_counts_balance_only_in_whole_units() {
     let note = five.balance_note().expect("5 participants are unbalanced");
     assert!(note.contains("multiple of 6"), "{note}");
     let counts = positions_per_group(&five);
-    let first_off: usize = [Technique::Joint, Technique::Proxy, Technique::Particle]
+    let first_off: usize = [TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle]
         .iter()
         .filter(|t| !counts.contains_key(&(false, 0, **t)))
         .count();
@@ -334,7 +335,7 @@ fn invalid_designs_are_rejected() {
         StudyDesign { participants: 0, ..ok.clone() },
         StudyDesign { tasks: vec![], ..ok.clone() },
         StudyDesign { tasks: vec!["sorting".into(), "sorting".into()], ..ok.clone() },
-        StudyDesign { techniques: vec![Technique::Joint, Technique::Joint], ..ok.clone() },
+        StudyDesign { techniques: vec![TechniqueKind::Joint, TechniqueKind::Joint], ..ok.clone() },
         StudyDesign { feedback: vec![], ..ok.clone() },
         StudyDesign { repetitions: 0, ..ok.clone() },
         StudyDesign { seed: u64::MAX, ..ok.clone() },
@@ -347,11 +348,14 @@ fn invalid_designs_are_rejected() {
 
 #[test]
 fn technique_and_shard_parse_and_print() {
-    for t in Technique::ALL {
-        assert_eq!(t.to_string().parse::<Technique>().ok(), Some(t));
+    // The names are file contracts: trials.csv and run.toml spell them so.
+    let names: Vec<String> = TechniqueKind::ALL.iter().map(ToString::to_string).collect();
+    assert_eq!(names, ["direct", "joint", "proxy", "particle", "hybrid"]);
+    for t in TechniqueKind::ALL {
+        assert_eq!(t.to_string().parse::<TechniqueKind>().ok(), Some(t));
     }
-    assert_eq!(" Particle ".parse::<Technique>().ok(), Some(Technique::Particle));
-    assert!("spring".parse::<Technique>().is_err());
+    assert_eq!(" Particle ".parse::<TechniqueKind>().ok(), Some(TechniqueKind::Particle));
+    assert!("spring".parse::<TechniqueKind>().is_err());
     let s: Shard = "1/4".parse().expect("shard");
     assert_eq!(s, Shard { index: 1, count: 4 });
     assert_eq!(s.to_string(), "1/4");
@@ -595,7 +599,7 @@ fn summary_of_hand_made_rows() {
     let design = StudyDesign {
         participants: 3,
         tasks: vec!["sorting".into()],
-        techniques: vec![Technique::Proxy],
+        techniques: vec![TechniqueKind::Proxy],
         feedback: vec![true],
         ..StudyDesign::default()
     };
@@ -603,7 +607,7 @@ fn summary_of_hand_made_rows() {
         participant,
         order_index: repetition,
         task: "sorting".into(),
-        technique: Technique::Proxy,
+        technique: TechniqueKind::Proxy,
         feedback: true,
         repetition,
         practice,
@@ -778,13 +782,50 @@ fn a_shard_resumes_as_itself() {
 // ---------------------------------------------------------------- run.toml
 
 #[test]
+fn run_toml_settings_keep_their_on_disk_format() {
+    // `[design.settings]` as earlier versions wrote it (`--frames`,
+    // `--replay`) and as the README tells people to write it (an integer
+    // delay is a number of seconds too).
+    let dir = scratch("run_toml_settings");
+    let head = "format = \"surfacelab-study/2\"\nversion = \"0\"\n[design]\nparticipants = 2\n[design.settings]\n";
+    std::fs::write(dir.join("old.toml"), format!("{head}frames = true\nreplay = \"rec\"\nperception_delay_s = 0.15\n"))
+        .expect("write");
+    let settings = RunFile::load(&dir.join("old.toml")).expect("an existing run.toml loads").design.settings;
+    assert_eq!(
+        settings,
+        RunnerSettings { frames: true, perception_delay_s: Some(0.15), replay: Some(PathBuf::from("rec")) }
+    );
+    std::fs::write(dir.join("int.toml"), format!("{head}perception_delay_s = 1\n")).expect("write");
+    let settings = RunFile::load(&dir.join("int.toml")).expect("integer seconds").design.settings;
+    assert_eq!(settings.perception_delay_s, Some(1.0));
+    assert!(!settings.frames && settings.replay.is_none());
+    // Written back under the same keys, and not at all when nothing is set.
+    let text = RunFile::new(StudyDesign { settings: settings.clone(), ..StudyDesign::default() }, None)
+        .to_toml()
+        .expect("toml");
+    assert!(text.contains("[design.settings]\nperception_delay_s = 1.0\n"), "{text}");
+    let text = RunFile::new(StudyDesign::default(), None).to_toml().expect("toml");
+    assert!(!text.contains("settings"), "{text}");
+    // A misspelt or mistyped setting is refused, not silently ignored.
+    for bad in ["frame = true\n", "frames = \"yes\"\n"] {
+        std::fs::write(dir.join("bad.toml"), format!("{head}{bad}")).expect("write");
+        let err = RunFile::load(&dir.join("bad.toml")).expect_err(bad);
+        assert!(matches!(err, StudyError::TomlRead { .. }), "{bad}: {err}");
+    }
+    let negative = StudyDesign {
+        settings: RunnerSettings { perception_delay_s: Some(-0.1), ..RunnerSettings::default() },
+        ..StudyDesign::default()
+    };
+    assert!(negative.validate().is_err());
+}
+
+#[test]
 fn run_toml_round_trips() {
-    let mut settings = BTreeMap::new();
-    settings.insert("frames".to_owned(), toml::Value::Integer(60));
+    let settings = RunnerSettings { frames: true, perception_delay_s: Some(0.15), replay: Some("gestures/p1".into()) };
     let design = StudyDesign {
         participants: 4,
         tasks: vec!["steering".into(), "positioning".into()],
-        techniques: vec![Technique::Direct, Technique::Particle],
+        techniques: vec![TechniqueKind::Direct, TechniqueKind::Particle],
         feedback: vec![false, true],
         repetitions: 3,
         practice: false,
@@ -809,7 +850,7 @@ fn run_toml_round_trips() {
     .expect("write");
     let mine = RunFile::load(&dir.join("mine.toml")).expect("load partial");
     assert_eq!(mine.design.participants, 12);
-    assert_eq!(mine.design.techniques, vec![Technique::Joint, Technique::Particle]);
+    assert_eq!(mine.design.techniques, vec![TechniqueKind::Joint, TechniqueKind::Particle]);
     assert_eq!(mine.design.tasks, StudyDesign::default().tasks);
 
     // The design table is written, and a table that contradicts the design is refused.
@@ -849,7 +890,7 @@ struct NoDirect(FakeRunner);
 
 impl TrialRunner for NoDirect {
     fn run(&self, spec: &TrialSpec) -> anyhow::Result<TrialResult> {
-        anyhow::ensure!(spec.technique != Technique::Direct, "direct force is not scripted");
+        anyhow::ensure!(spec.technique != TechniqueKind::Direct, "direct force is not scripted");
         self.0.run(spec)
     }
 }
@@ -861,7 +902,7 @@ fn figure_copes_with_sparse_data() {
     let design = StudyDesign {
         participants: 1,
         tasks: vec!["sorting".into(), "steering".into()],
-        techniques: Technique::ALL.to_vec(),
+        techniques: TechniqueKind::ALL.to_vec(),
         feedback: vec![false],
         ..StudyDesign::default()
     };
@@ -875,6 +916,8 @@ fn figure_copes_with_sparse_data() {
     let summary = surfacelab::harness::study::summary::read_summary(&dir.join(SUMMARY_CSV)).expect("summary");
     // Two tasks, every technique.
     assert_eq!(summary.len(), 2 * 5);
-    assert!(summary.iter().filter(|s| s.technique == Technique::Direct).all(|s| s.mean_s.is_none() && s.failed == 2));
+    assert!(
+        summary.iter().filter(|s| s.technique == TechniqueKind::Direct).all(|s| s.mean_s.is_none() && s.failed == 2)
+    );
     assert!(summary.iter().all(|s| s.sd_s.is_none()));
 }

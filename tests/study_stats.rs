@@ -12,8 +12,9 @@ use surfacelab::harness::study::pairwise::{holm, paired_t};
 use surfacelab::harness::study::report::{REPORT_HTML, REPORT_MD};
 use surfacelab::harness::study::within_ci::cousineau_morey_half_widths;
 use surfacelab::harness::study::{
-    RunOptions, StudyDesign, Technique, TrialResult, TrialRow, TrialRunner, TrialSpec, run_study, summarize,
+    RunOptions, StudyDesign, TrialResult, TrialRow, TrialRunner, TrialSpec, run_study, summarize,
 };
+use surfacelab::pipeline::technique::TechniqueKind;
 
 /// Maxwell & Delaney (2004), *Designing Experiments and Analyzing Data*, 2nd
 /// ed., Table 12.1 (p. 574): reaction times (ms) of 10 subjects, noise
@@ -162,8 +163,8 @@ struct MdRunner;
 impl TrialRunner for MdRunner {
     fn run(&self, spec: &TrialSpec) -> anyhow::Result<TrialResult> {
         let angle = match spec.technique {
-            Technique::Joint => 0,
-            Technique::Proxy => 1,
+            TechniqueKind::Joint => 0,
+            TechniqueKind::Proxy => 1,
             _ => 2,
         };
         let noise = usize::from(!spec.feedback);
@@ -263,8 +264,8 @@ fn findings_are_decided_by_their_tests() {
         .iter()
         .map(|r| {
             let technique = match r.technique {
-                Technique::Joint => Technique::Particle,
-                Technique::Particle => Technique::Joint,
+                TechniqueKind::Joint => TechniqueKind::Particle,
+                TechniqueKind::Particle => TechniqueKind::Joint,
                 t => t,
             };
             TrialRow { technique, ..r.clone() }
@@ -288,13 +289,13 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
     };
     let mut rows = Vec::new();
     for p in 1..=3u32 {
-        for technique in [Technique::Joint, Technique::Proxy, Technique::Particle] {
+        for technique in [TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle] {
             for feedback in [true, false] {
                 for rep in 1..=2 {
                     let s = spec(p, technique, feedback, rep);
                     let time = 10.0 * f64::from(p) + f64::from(rep);
                     // P2's Proxy/on rep 2 hits a 50 s limit; P3's Joint/off has no time at all.
-                    let row = if p == 2 && technique == Technique::Proxy && feedback && rep == 2 {
+                    let row = if p == 2 && technique == TechniqueKind::Proxy && feedback && rep == 2 {
                         TrialRow::new(
                             &s,
                             &TrialResult {
@@ -306,7 +307,7 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
                                 ..TrialResult::default()
                             },
                         )
-                    } else if p == 3 && technique == Technique::Joint && !feedback {
+                    } else if p == 3 && technique == TechniqueKind::Joint && !feedback {
                         TrialRow::failed(&s)
                     } else {
                         TrialRow::new(
@@ -333,9 +334,9 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
     // P2's Proxy/on cell: (21 + 50) / 2, the timed-out trial at its limit.
     assert!((cells.values[1][cells.cell(1, 0)] - 35.5).abs() < 1e-12);
     let summary = summarize(&design, &rows);
-    let proxy_on = summary.iter().find(|s| s.technique == Technique::Proxy && s.feedback).expect("row");
+    let proxy_on = summary.iter().find(|s| s.technique == TechniqueKind::Proxy && s.feedback).expect("row");
     assert_eq!((proxy_on.completed, proxy_on.failed, proxy_on.errors), (5, 1, 0));
-    let joint_off = summary.iter().find(|s| s.technique == Technique::Joint && !s.feedback).expect("row");
+    let joint_off = summary.iter().find(|s| s.technique == TechniqueKind::Joint && !s.feedback).expect("row");
     assert_eq!((joint_off.completed, joint_off.failed, joint_off.errors), (4, 2, 2));
 
     let dir = scratch("files");

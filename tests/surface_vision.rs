@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 
 use surfacelab::pipeline::surface::{
-    ContactImage, Hand, HandKind, Patch, RasterParams, Sensor, Shape, rasterize, rasterize_into, rasterize_patches,
+    ContactImage, Footprint, Hand, HandKind, Patch, RasterParams, Sensor, rasterize, rasterize_into, rasterize_patches,
     rasterize_rows,
 };
 
@@ -38,7 +38,7 @@ fn rasterized_disc_has_the_right_area_and_centroid() {
     let s = sensor();
     let mpp = s.metres_per_pixel();
     for (centre, radius) in [([0.0f32, 0.0f32], 0.02f32), ([0.1234, -0.0567], 0.0111), ([-0.31, 0.2], 0.05)] {
-        let disc = Patch { shape: Shape::Ellipse { centre, radii: [radius, radius], angle: 0.0 }, level: 1.0 };
+        let disc = Patch { shape: Footprint::Ellipse { centre, radii: [radius, radius], angle: 0.0 }, level: 1.0 };
         let image = rasterize_patches(&[disc], &s, &RasterParams::default());
         // Half the touch level lies exactly on the outline.
         let blobs = find_blobs(&image, &threshold(&image, 128), 1);

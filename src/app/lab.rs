@@ -8,7 +8,7 @@ use super::clock::Clock;
 use super::participant_mode::{Phase, Trials};
 use super::record::{Recording, timestamped};
 use super::scene_view::{self, ViewOptions};
-use super::stats::Stats;
+use super::stats::FrameStats;
 use crate::harness::study::TrialResult;
 use crate::input::tuio::TuioListener;
 use crate::input::{Input, quantized};
@@ -43,7 +43,7 @@ pub struct Lab {
     recording: Option<Recording>,
     /// Folder under which gestures/ and screenshots/ are written.
     pub out_dir: PathBuf,
-    pub stats: Stats,
+    pub stats: FrameStats,
     status: Option<(String, f64)>,
     pub participant: Option<Trials>,
     /// Wall-clock seconds since the demo opened (set by the window).
@@ -70,7 +70,7 @@ impl Lab {
             input: Input::new(options.script.clone(), tuio),
             recording: None,
             out_dir: options.out_dir.clone(),
-            stats: Stats::default(),
+            stats: FrameStats::default(),
             status: None,
             participant,
             wall: 0.0,
@@ -235,15 +235,8 @@ impl Lab {
         if !p.complete && self.session.time() < limit {
             return false;
         }
-        let result = TrialResult {
-            // Failed at the limit, recorded at the limit (as the study's runners do).
-            completion_time_s: p.completed_at.filter(|_| p.complete).unwrap_or(limit),
-            completed: p.complete,
-            restarts: p.restarts,
-            objects_placed: p.placed as u32,
-            steps: self.session.frames(),
-            ..TrialResult::default()
-        };
+        // Failed at the limit, recorded at the limit (as the study's runners do).
+        let result = TrialResult::from_progress(&p, self.session.frames(), limit);
         self.stop_recording();
         let wall = self.wall;
         if let Some(trials) = &mut self.participant

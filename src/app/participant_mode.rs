@@ -10,7 +10,7 @@
 //! condition by condition, one `demo --participant` call each.
 
 use crate::harness::study::output::{TrialRow, TrialsWriter, recover_trials};
-use crate::harness::study::{Technique, TrialResult, TrialSpec};
+use crate::harness::study::{TrialResult, TrialSpec};
 use crate::pipeline::technique::TechniqueKind;
 use anyhow::Context;
 use std::path::{Path, PathBuf};
@@ -53,7 +53,6 @@ pub struct Trials {
     pub options: ParticipantOptions,
     /// The task as given (name or path), written into every row.
     pub task: String,
-    technique: Technique,
     writer: TrialsWriter,
     /// Trials finished in this sitting.
     pub done: u32,
@@ -69,7 +68,7 @@ impl Trials {
         if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
             std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
         }
-        let technique: Technique = options.technique.name().parse()?;
+        let technique = options.technique;
         let recovered = recover_trials(path).with_context(|| format!("reading {}", path.display()))?;
         let mine = recovered.rows.iter().filter(|r| r.participant == options.id);
         let next_order = mine.clone().count() as u32;
@@ -79,16 +78,7 @@ impl Trials {
             .max()
             .unwrap_or(0);
         let writer = TrialsWriter::open(path, true)?;
-        Ok(Self {
-            options,
-            task: task.to_owned(),
-            technique,
-            writer,
-            done: 0,
-            next_order,
-            next_repetition,
-            phase: Phase::Ready,
-        })
+        Ok(Self { options, task: task.to_owned(), writer, done: 0, next_order, next_repetition, phase: Phase::Ready })
     }
 
     /// The spec of the trial now running (or about to).
@@ -97,7 +87,7 @@ impl Trials {
             participant: self.options.id,
             order_index: self.next_order,
             task: self.task.clone(),
-            technique: self.technique,
+            technique: self.options.technique,
             feedback: self.options.feedback,
             repetition: self.next_repetition,
             practice: false,

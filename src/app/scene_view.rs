@@ -187,7 +187,7 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
         }
         Goal::Sorting { zones, .. } => {
             for z in zones {
-                let mut c = crate::scene::Color::parse(&z.color_name).map_or([0.5; 4], |c| c.rgba);
+                let mut c = z.color.rgba;
                 c[3] = 0.22;
                 let center = (z.min + z.max) * 0.5;
                 out.push(Decal::Rect {

@@ -31,7 +31,7 @@ impl Rolling {
 
 /// What the panel shows about timing (milliseconds unless named otherwise).
 #[derive(Debug, Clone, Default)]
-pub struct Stats {
+pub struct FrameStats {
     /// Wall time between frames.
     pub frame_ms: Rolling,
     /// Draw list, 3D render, UI and present.
@@ -49,7 +49,7 @@ pub struct Stats {
     sim_steps: u64,
 }
 
-impl Stats {
+impl FrameStats {
     /// Adds one session step's stage times.
     pub fn push_stages(&mut self, t: &StageTimes) {
         self.rasterize_ms.push(t.rasterize_us / 1000.0);

@@ -5,7 +5,7 @@
 
 use super::lab::{BETWEEN_TRIALS_S, Lab};
 use super::participant_mode::Phase;
-use crate::pipeline::surface::{Hand, Shape};
+use crate::pipeline::surface::{Footprint, Hand};
 use crate::render::CameraMatrices;
 use egui::{Color32, FontId, Pos2, Rect, Stroke, TextureId, Vec2};
 use glam::Vec3;
@@ -140,7 +140,7 @@ fn outline_hand(painter: &egui::Painter, hand: &Hand, project: &impl Fn([f32; 2]
 }
 
 /// Closed polylines around a footprint, table metres (a ring has two).
-pub fn outline(shape: &Shape) -> Vec<Vec<[f32; 2]>> {
+pub fn outline(shape: &Footprint) -> Vec<Vec<[f32; 2]>> {
     use std::f32::consts::{FRAC_PI_2, PI, TAU};
     let rot = |p: [f32; 2], angle: f32, c: [f32; 2]| {
         let (s, k) = angle.sin_cos();
@@ -153,7 +153,7 @@ pub fn outline(shape: &Shape) -> Vec<Vec<[f32; 2]>> {
         }
     };
     match *shape {
-        Shape::Ellipse { centre, radii, angle } => vec![
+        Footprint::Ellipse { centre, radii, angle } => vec![
             (0..SEGMENTS)
                 .map(|i| {
                     let t = TAU * i as f32 / SEGMENTS as f32;
@@ -161,7 +161,7 @@ pub fn outline(shape: &Shape) -> Vec<Vec<[f32; 2]>> {
                 })
                 .collect(),
         ],
-        Shape::Capsule { a, b, radius } => {
+        Footprint::Capsule { a, b, radius } => {
             let d = [b[0] - a[0], b[1] - a[1]];
             let heading = if d[0].hypot(d[1]) > 1e-9 { d[1].atan2(d[0]) } else { FRAC_PI_2 };
             let mut out = Vec::with_capacity(SEGMENTS + 2);
@@ -169,7 +169,7 @@ pub fn outline(shape: &Shape) -> Vec<Vec<[f32; 2]>> {
             arc(&mut out, a, radius, heading + FRAC_PI_2, PI, SEGMENTS / 2);
             vec![out]
         }
-        Shape::RoundedRect { centre, half, angle, corner } => {
+        Footprint::RoundedRect { centre, half, angle, corner } => {
             let c = corner.clamp(0.0, half[0].min(half[1]));
             let inner = [half[0] - c, half[1] - c];
             let mut local = Vec::with_capacity(SEGMENTS + 4);
@@ -178,7 +178,7 @@ pub fn outline(shape: &Shape) -> Vec<Vec<[f32; 2]>> {
             }
             vec![local.into_iter().map(|p| rot(p, angle, centre)).collect()]
         }
-        Shape::Ring { centre, radius, half_width } => [radius + half_width, radius - half_width]
+        Footprint::Ring { centre, radius, half_width } => [radius + half_width, radius - half_width]
             .into_iter()
             .filter(|r| *r > 0.0)
             .map(|r| {
@@ -198,10 +198,10 @@ mod tests {
     #[test]
     fn outlines_lie_on_the_boundary() {
         let shapes = [
-            Shape::Ellipse { centre: [0.1, 0.2], radii: [0.02, 0.01], angle: 0.7 },
-            Shape::Capsule { a: [0.0, 0.0], b: [0.05, 0.03], radius: 0.01 },
-            Shape::RoundedRect { centre: [-0.1, 0.0], half: [0.04, 0.02], angle: -0.4, corner: 0.005 },
-            Shape::Ring { centre: [0.0, 0.0], radius: 0.035, half_width: 0.003 },
+            Footprint::Ellipse { centre: [0.1, 0.2], radii: [0.02, 0.01], angle: 0.7 },
+            Footprint::Capsule { a: [0.0, 0.0], b: [0.05, 0.03], radius: 0.01 },
+            Footprint::RoundedRect { centre: [-0.1, 0.0], half: [0.04, 0.02], angle: -0.4, corner: 0.005 },
+            Footprint::Ring { centre: [0.0, 0.0], radius: 0.035, half_width: 0.003 },
         ];
         for s in shapes {
             let rings = outline(&s);

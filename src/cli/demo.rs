@@ -42,10 +42,7 @@ pub fn run(args: &DemoArgs) -> anyhow::Result<ExitCode> {
 
 /// Checks the flags; an `Err` is a usage error (exit 2).
 fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
-    let (technique, feedback) = match &args.condition {
-        Some(c) => parse_condition(c)?,
-        None => (args.technique, args.feedback),
-    };
+    let (technique, feedback) = args.condition.unwrap_or((args.technique, args.feedback));
     let mut o = DemoOptions::new(args.task.clone(), technique);
     o.feedback = feedback;
     o.contact_overlay = !args.no_contact_overlay;
@@ -54,9 +51,6 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
     }
     o.out_dir.clone_from(&args.out);
     o.tuio = args.tuio.map(|port| SocketAddr::new(args.tuio_bind.unwrap_or(IpAddr::V4(Ipv4Addr::LOCALHOST)), port));
-    if args.tuio_bind.is_some() && args.tuio.is_none() {
-        return Err("--tuio-bind needs --tuio".into());
-    }
     if let Some(path) = &args.script {
         o.script = Some(Gesture::load(path).map_err(|e| format!("--script: {e}"))?);
     }
@@ -70,9 +64,6 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
     o.quit_after = args.quit_after.map(f64::from);
     match (args.participant, &args.condition) {
         (Some(id), Some(_)) => {
-            if id == 0 {
-                return Err("--participant: IDs start at 1, as in the study's files".into());
-            }
             // The participant sees the table and their own hands, not the sensor's image.
             o.contact_overlay = false;
             o.participant = Some(ParticipantOptions {
@@ -95,17 +86,16 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
     Ok(o)
 }
 
-/// `TECHNIQUE:on|off`, e.g. `particle:on`.
+/// `--condition TECHNIQUE:on|off`, e.g. `particle:on` (clap's value
+/// parser: its errors name the flag).
 pub fn parse_condition(s: &str) -> Result<(TechniqueKind, bool), String> {
-    let (t, f) =
-        s.split_once(':').ok_or_else(|| format!("--condition `{s}`: expected TECHNIQUE:on|off, e.g. particle:on"))?;
-    let technique: TechniqueKind = t.trim().parse().map_err(|e| format!("--condition `{s}`: {e}"))?;
+    let (t, f) = s.split_once(':').ok_or_else(|| "expected TECHNIQUE:on|off, e.g. particle:on".to_owned())?;
+    let technique: TechniqueKind =
+        t.parse().map_err(|e: crate::pipeline::technique::UnknownTechnique| e.to_string())?;
     let feedback = match f.trim() {
         "on" => true,
         "off" => false,
-        other => {
-            return Err(format!("--condition `{s}`: feedback `{other}` must be on or off"));
-        }
+        other => return Err(format!("feedback `{other}` must be on or off")),
     };
     Ok((technique, feedback))
 }

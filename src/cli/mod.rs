@@ -12,6 +12,7 @@ mod screenshot;
 mod study;
 mod tradeoff;
 
+use crate::harness::study::Shard;
 use crate::pipeline::technique::TechniqueKind;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
@@ -62,7 +63,7 @@ pub struct DemoArgs {
     #[arg(long, value_name = "PORT", num_args = 0..=1, default_missing_value = "3333")]
     pub tuio: Option<u16>,
     /// Address the TUIO socket binds to (default 127.0.0.1; 0.0.0.0 for a tracker on another machine).
-    #[arg(long, value_name = "ADDR")]
+    #[arg(long, value_name = "ADDR", requires = "tuio")]
     pub tuio_bind: Option<std::net::IpAddr>,
     /// Replay a gesture file as live input, from the start of the session.
     #[arg(long, value_name = "GESTURE_FILE")]
@@ -80,16 +81,16 @@ pub struct DemoArgs {
     #[arg(long, default_value = "out")]
     pub out: PathBuf,
     /// Participant mode: no panel; the task runs as study trials of this participant (1-based ID).
-    #[arg(long, value_name = "ID")]
+    #[arg(long, value_name = "ID", value_parser = clap::value_parser!(u32).range(1..), requires = "condition")]
     pub participant: Option<u32>,
     /// Participant mode's condition, e.g. particle:on.
-    #[arg(long, value_name = "TECHNIQUE:on|off", conflicts_with_all = ["technique", "feedback"])]
-    pub condition: Option<String>,
+    #[arg(long, value_name = "TECHNIQUE:on|off", value_parser = demo::parse_condition, conflicts_with_all = ["technique", "feedback"])]
+    pub condition: Option<(TechniqueKind, bool)>,
     /// Participant mode: trials.csv to append rows to (default out/participants/trials.csv).
-    #[arg(long, value_name = "FILE")]
+    #[arg(long, value_name = "FILE", requires = "participant")]
     pub trials_csv: Option<PathBuf>,
     /// Participant mode: trials in this sitting (default 2).
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", requires = "participant")]
     pub reps: Option<u32>,
 }
 
@@ -111,6 +112,19 @@ pub struct RunArgs {
     /// Seconds simulated after the gesture ends, so released objects settle.
     #[arg(long, default_value_t = 1.0, value_parser = parse_seconds)]
     pub settle: f32,
+}
+
+/// A technique name, as in files (`joint`); case and surrounding spaces
+/// are ignored, so `--techniques "joint, Proxy"` reads as written.
+fn parse_technique(s: &str) -> Result<TechniqueKind, String> {
+    s.parse().map_err(|e: crate::pipeline::technique::UnknownTechnique| e.to_string())
+}
+
+/// A task name or path from a comma-separated list, spaces around it
+/// dropped; whether the scene loads is checked where it is loaded.
+fn parse_task_name(s: &str) -> Result<String, String> {
+    let t = s.trim();
+    if t.is_empty() { Err("empty task name".into()) } else { Ok(t.to_owned()) }
 }
 
 /// A finite, non-negative number of seconds.
@@ -137,11 +151,11 @@ pub struct StudyArgs {
     #[arg(long)]
     pub reps: Option<u32>,
     /// Comma-separated techniques (default joint,proxy,particle; direct is optional).
-    #[arg(long)]
-    pub techniques: Option<String>,
+    #[arg(long, value_delimiter = ',', value_parser = parse_technique)]
+    pub techniques: Option<Vec<TechniqueKind>>,
     /// Comma-separated tasks, in the fixed order they run (default positioning,sorting,steering).
-    #[arg(long)]
-    pub tasks: Option<String>,
+    #[arg(long, value_delimiter = ',', value_parser = parse_task_name)]
+    pub tasks: Option<Vec<String>>,
     /// Skip the unmeasured practice trial before each condition.
     #[arg(long)]
     pub no_practice: bool,
@@ -155,8 +169,8 @@ pub struct StudyArgs {
     #[arg(long, conflicts_with = "from")]
     pub resume: Option<PathBuf>,
     /// Run only shard i of n (0-based), e.g. for a Slurm job array; combine with `study merge`.
-    #[arg(long)]
-    pub shard: Option<String>,
+    #[arg(long, value_name = "i/n", value_parser = study::parse_shard)]
+    pub shard: Option<Shard>,
     /// Worker threads (0 = one per core). Results do not depend on it.
     #[arg(long, default_value_t = 0)]
     pub jobs: usize,

@@ -5,7 +5,7 @@
 
 use super::{StudyAction, StudyArgs};
 use crate::harness::participant::{ReplayRunner, ScriptedRunner};
-use crate::harness::study::{self, RunFile, RunOptions, StudyDesign, Technique, TrialRunner};
+use crate::harness::study::{self, RunFile, RunOptions, Shard, StudyDesign, TrialRunner};
 use anyhow::Context;
 use std::process::ExitCode;
 
@@ -15,15 +15,8 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
         println!("surfacelab study merge: {m:?}");
         return Ok(ExitCode::SUCCESS);
     }
-    let options = RunOptions {
-        jobs: args.jobs,
-        progress: !args.no_progress,
-        shard: match &args.shard {
-            Some(s) => Some(s.parse().map_err(|e| anyhow::anyhow!("--shard {s}: {e}"))?),
-            None => None,
-        },
-        ..RunOptions::default()
-    };
+    let options =
+        RunOptions { jobs: args.jobs, progress: !args.no_progress, shard: args.shard, ..RunOptions::default() };
     if let Some(n) = args.seeds {
         return run_seeds(args, n, &options);
     }
@@ -124,10 +117,14 @@ fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> anyhow::Result<E
     Ok(ExitCode::SUCCESS)
 }
 
+/// `--shard i/n`: checked by clap, so a bad value names the flag and exits 2.
+pub fn parse_shard(s: &str) -> Result<Shard, String> {
+    s.parse().map_err(|e: study::StudyError| e.to_string())
+}
+
 fn runner_for(args: &StudyArgs, design: StudyDesign, out: &std::path::Path) -> anyhow::Result<Box<dyn TrialRunner>> {
-    let frames = design.settings.get("frames").and_then(toml::Value::as_bool).unwrap_or(false);
-    let frames_dir = frames.then(|| out.join("frames"));
-    let replay = args.replay.clone().or_else(|| design.settings.get("replay").and_then(|v| v.as_str()).map(Into::into));
+    let frames_dir = design.settings.frames.then(|| out.join("frames"));
+    let replay = args.replay.clone().or_else(|| design.settings.replay.clone());
     Ok(match replay {
         Some(dir) => {
             anyhow::ensure!(dir.is_dir(), "--replay {}: not a folder of gesture files", dir.display());
@@ -152,13 +149,10 @@ fn design_from(args: &StudyArgs) -> anyhow::Result<StudyDesign> {
         d.repetitions = r;
     }
     if let Some(ts) = &args.techniques {
-        d.techniques = ts
-            .split(',')
-            .map(|t| t.trim().parse::<Technique>().map_err(|e| anyhow::anyhow!("--techniques: {e}")))
-            .collect::<anyhow::Result<_>>()?;
+        d.techniques.clone_from(ts);
     }
     if let Some(ts) = &args.tasks {
-        d.tasks = ts.split(',').map(|t| t.trim().to_string()).collect();
+        d.tasks.clone_from(ts);
         for t in &d.tasks {
             crate::scene::load(t).with_context(|| format!("--tasks: task `{t}`"))?;
         }
@@ -170,10 +164,10 @@ fn design_from(args: &StudyArgs) -> anyhow::Result<StudyDesign> {
         d.time_limit_override = Some(f64::from(t));
     }
     if let Some(dir) = &args.replay {
-        d.settings.insert("replay".into(), toml::Value::String(dir.display().to_string()));
+        d.settings.replay = Some(dir.clone());
     }
     if args.frames {
-        d.settings.insert("frames".into(), toml::Value::Boolean(true));
+        d.settings.frames = true;
     }
     Ok(d)
 }

@@ -109,7 +109,7 @@ pub struct Color {
 }
 
 impl Color {
-    /// The named palette scene files may use (sorting matches on these names).
+    /// The named palette scene files may use.
     pub const NAMED: [(&'static str, [f32; 4]); 10] = [
         ("red", [0.85, 0.18, 0.16, 1.0]),
         ("blue", [0.16, 0.36, 0.86, 1.0]),
@@ -191,8 +191,8 @@ pub struct ObjectSpec {
     pub mass: f32,
     pub friction: f32,
     pub restitution: f32,
-    /// Palette name (or the hex string) — the key sorting zones match on.
-    pub color_name: String,
+    /// The validated colour; sorting zones match objects on its value, so
+    /// `#ff0000` and `#FF0000` are the same colour.
     pub color: Color,
     pub position: Vec3,
     pub rotation: Quat,
@@ -254,7 +254,6 @@ pub struct SoftBodySpec {
     /// a permanent set: 0 = perfectly elastic, springs back to its rest
     /// shape; 0.03 = cotton, keeps the creases a hand presses in or out.
     pub crease: f32,
-    pub color_name: String,
     pub color: Color,
 }
 
@@ -290,7 +289,8 @@ pub struct Target {
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct SortingZone {
-    pub color_name: String,
+    /// Objects of this colour (by value) belong in the zone.
+    pub color: Color,
     pub min: Vec2,
     pub max: Vec2,
 }

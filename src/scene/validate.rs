@@ -330,7 +330,6 @@ impl Checker<'_> {
                 mass,
                 friction: self.num(&span, &f("friction"), o.friction.unwrap_or(0.5), 0.0, 10.0)?,
                 restitution: self.num(&span, &f("restitution"), o.restitution.unwrap_or(0.1), 0.0, 1.0)?,
-                color_name: o.color.clone(),
                 color,
                 position,
                 rotation,
@@ -480,7 +479,6 @@ impl Checker<'_> {
             damping: self.num(&span, &f("damping"), b.damping.unwrap_or(0.5), 0.0, 100.0)?,
             crumple: self.num(&span, &f("crumple"), b.crumple.unwrap_or(0.0), 0.0, 0.6)?,
             crease: self.num(&span, &f("crease"), b.crease.unwrap_or(0.0), 0.0, 0.5)?,
-            color_name: b.color,
             color,
         };
         for e in spec.required_effects().iter() {
@@ -574,14 +572,10 @@ impl Checker<'_> {
                     if min.x >= max.x || min.y >= max.y {
                         return Err(self.err(&zspan, format!("goal.zones[{i}]"), "min must be below max on both axes"));
                     }
-                    if Color::parse(&z.color).is_none() {
-                        return Err(self.err(
-                            &zspan,
-                            format!("goal.zones[{i}].color"),
-                            format!("unknown colour `{}`", z.color),
-                        ));
-                    }
-                    zones.push(SortingZone { color_name: z.color, min, max });
+                    let color = Color::parse(&z.color).ok_or_else(|| {
+                        self.err(&zspan, format!("goal.zones[{i}].color"), format!("unknown colour `{}`", z.color))
+                    })?;
+                    zones.push(SortingZone { color, min, max });
                 }
                 Goal::Sorting { zones, dwell_s }
             }

@@ -10,7 +10,7 @@ use crate::pipeline::technique::{
 use crate::pipeline::vision::{Pipeline, VisionFrame, VisionParams};
 use crate::pipeline::world::{World, WorldError};
 use crate::scene::Scene;
-use crate::session::goal::{Progress, Tracker};
+use crate::session::goal::{GoalTracker, Progress};
 use std::time::Instant;
 
 #[derive(Debug, thiserror::Error)]
@@ -83,7 +83,7 @@ pub struct Session {
     /// Rows of `image` the last frame may have lit.
     lit: std::ops::Range<usize>,
     frame: VisionFrame,
-    tracker: Tracker,
+    tracker: GoalTracker,
     progress: Progress,
     last: StageTimes,
     sums: StageTimes,
@@ -125,7 +125,7 @@ impl Session {
             image: ContactImage::new(sensor.width_px as usize, sensor.height_px as usize),
             lit: 0..sensor.height_px as usize,
             frame: VisionFrame::default(),
-            tracker: Tracker::new(scene),
+            tracker: GoalTracker::new(scene),
             progress: Progress::default(),
             last: StageTimes::default(),
             sums: StageTimes::default(),
@@ -186,7 +186,7 @@ impl Session {
         self.technique.clear(&mut self.world);
         self.world.reset_objects();
         self.vision.reset();
-        self.tracker = Tracker::new(&self.scene);
+        self.tracker = GoalTracker::new(&self.scene);
         self.progress = Progress::default();
     }
 
@@ -231,7 +231,7 @@ impl Session {
         self.progress
     }
 
-    pub fn tracker(&self) -> &Tracker {
+    pub fn tracker(&self) -> &GoalTracker {
         &self.tracker
     }
 

@@ -3,7 +3,7 @@
 //! is, how much work is left, and which objects share a destination.
 
 use crate::scene::{Goal, Scene};
-use crate::session::goal::Tracker;
+use crate::session::goal::GoalTracker;
 use glam::Vec2;
 
 /// Where the goal wants one object now.
@@ -18,7 +18,7 @@ pub struct Want {
 }
 
 /// Where the goal wants object `i` now, if anywhere.
-pub fn want(scene: &Scene, tracker: &Tracker, i: usize, observed: &[Vec2]) -> Option<Want> {
+pub fn want(scene: &Scene, tracker: &GoalTracker, i: usize, observed: &[Vec2]) -> Option<Want> {
     let point_region = |p: Vec2| (u64::from(p.x.to_bits()) << 32) | u64::from(p.y.to_bits());
     match &scene.goal {
         // Soft-body goals concern no rigid object.
@@ -30,7 +30,7 @@ pub fn want(scene: &Scene, tracker: &Tracker, i: usize, observed: &[Vec2]) -> Op
         Goal::Sorting { zones, .. } => {
             let o = &scene.objects[i];
             let p = *observed.get(i)?;
-            let mine = || zones.iter().enumerate().filter(|(_, z)| z.color_name == o.color_name);
+            let mine = || zones.iter().enumerate().filter(|(_, z)| z.color == o.color);
             if mine().any(|(_, z)| {
                 z.contains(p) && inset(z.min, z.max, 0.03).is_some_and(|(a, b)| p.cmpge(a).all() && p.cmple(b).all())
             }) {
@@ -65,7 +65,7 @@ pub fn settle_radius(scene: &Scene) -> f32 {
 }
 
 /// Objects that still need moving, with what the goal wants of each.
-pub fn open_objects(scene: &Scene, tracker: &Tracker, active: &[bool], observed: &[Vec2]) -> Vec<(usize, Want)> {
+pub fn open_objects(scene: &Scene, tracker: &GoalTracker, active: &[bool], observed: &[Vec2]) -> Vec<(usize, Want)> {
     let settle = settle_radius(scene);
     (0..scene.objects.len().min(observed.len()))
         .filter(|&i| active.get(i).copied().unwrap_or(false))

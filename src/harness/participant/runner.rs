@@ -5,8 +5,8 @@ use super::Skill;
 use super::learner::{EXPLORE_MEASURED, EXPLORE_PRACTICE, Learner};
 use super::manner::fingers;
 use super::planner::PlannerOptions;
-use super::trial::objects_moving;
-use crate::harness::study::{ParticipantRun, StudyDesign, Technique, TrialResult, TrialRunner, TrialSpec, trial_seed};
+use super::trial::{TrialStep, run_trial};
+use crate::harness::study::{ParticipantRun, StudyDesign, TrialResult, TrialRunner, TrialSpec, trial_seed};
 use crate::input::Gesture;
 use crate::pipeline::technique::TechniqueKind;
 use crate::scene;
@@ -15,26 +15,10 @@ use anyhow::Context;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-/// Maps the harness's technique names onto the techniques.
-pub fn technique_kind(t: Technique) -> TechniqueKind {
-    match t {
-        Technique::Direct => TechniqueKind::Direct,
-        Technique::Joint => TechniqueKind::Joint,
-        Technique::Proxy => TechniqueKind::Proxy,
-        Technique::Particle => TechniqueKind::Particle,
-        Technique::Hybrid => TechniqueKind::Hybrid,
-    }
-}
-
 /// The skill of one participant: fixed for all their trials.
 pub fn participant_skill(design: &StudyDesign, participant: u32) -> Skill {
     Skill::draw(trial_seed(design.seed, participant, u32::MAX))
 }
-
-/// The `run.toml` setting (`[design.settings]`) that switches on the
-/// perception-delay model: seconds by which a participant sees the world
-/// later when feedback is off. Absent = 0, the paper's definition.
-pub const PERCEPTION_DELAY_SETTING: &str = "perception_delay_s";
 
 /// Scripted participants: the closed-loop planner with a learner that
 /// carries from trial to trial within a participant.
@@ -46,7 +30,7 @@ pub struct ScriptedRunner {
     /// Techniques run under another study label (`label -> technique`);
     /// labels not listed run their own technique. The guard against tuning
     /// registers one technique under two labels.
-    pub relabel: BTreeMap<Technique, TechniqueKind>,
+    pub relabel: BTreeMap<TechniqueKind, TechniqueKind>,
 }
 
 impl ScriptedRunner {
@@ -54,16 +38,13 @@ impl ScriptedRunner {
         ScriptedRunner { design, frames_dir, relabel: BTreeMap::new() }
     }
 
-    fn kind(&self, t: Technique) -> TechniqueKind {
-        self.relabel.get(&t).copied().unwrap_or_else(|| technique_kind(t))
+    fn kind(&self, t: TechniqueKind) -> TechniqueKind {
+        self.relabel.get(&t).copied().unwrap_or(t)
     }
 
+    /// The perception-delay setting; absent = 0, the paper's definition.
     fn perception_delay_s(&self) -> f32 {
-        self.design
-            .settings
-            .get(PERCEPTION_DELAY_SETTING)
-            .and_then(|v| v.as_float().or_else(|| v.as_integer().map(|i| i as f64)))
-            .unwrap_or(0.0) as f32
+        self.design.settings.perception_delay_s.unwrap_or(0.0) as f32
     }
 
     fn session(&self, participant: u32) -> ScriptedParticipant<'_> {
@@ -117,7 +98,7 @@ impl ScriptedParticipant<'_> {
             explore: if spec.practice { EXPLORE_PRACTICE } else { EXPLORE_MEASURED },
             perception_delay_s: runner.perception_delay_s(),
         };
-        let (o, learner) = super::run_scripted_with(
+        let (result, learner) = super::run_scripted_with(
             &scene,
             runner.kind(spec.technique),
             spec.feedback,
@@ -132,20 +113,7 @@ impl ScriptedParticipant<'_> {
         if let Some(log) = log {
             log.finish().context("writing the trial's frames")?;
         }
-        Ok(TrialResult {
-            // A trial the limit ended is recorded at the limit (the loop
-            // stops up to one step past it).
-            completion_time_s: if o.completed { o.completion_time_s } else { limit },
-            completed: o.completed,
-            restarts: o.restarts,
-            objects_placed: o.objects_placed,
-            steps: o.steps,
-            strategy: o.strategy.map(|m| m.name().to_owned()).unwrap_or_default(),
-            hands_max: o.hands_max,
-            fingers_max: o.fingers_max,
-            objects_moving_max: o.objects_moving_max,
-            manners: o.usage.to_column(),
-        })
+        Ok(result)
     }
 }
 
@@ -198,30 +166,16 @@ impl TrialRunner for ReplayRunner {
         let gesture = Gesture::load(self.gesture_path(spec)?)?;
         let limit = self.design.time_limit_override.unwrap_or(f64::from(scene.time_limit_s));
         let end = limit.min(gesture.duration() + 2.0);
-        let mut session = Session::new(&scene, technique_kind(spec.technique), SessionOptions::default())?;
-        let (mut hands_max, mut fingers_max, mut moving_max) = (0, 0, 0);
-        while session.time() < end && !session.progress().complete {
-            let hands = gesture.sample(session.time());
+        let mut session = Session::new(&scene, spec.technique, SessionOptions::default())?;
+        let next = |s: &Session| {
+            let hands = gesture.sample(s.time());
             let down: Vec<_> = hands.iter().filter(|h| h.pressure > 0.0).collect();
-            hands_max = hands_max.max(down.len() as u32);
-            fingers_max = fingers_max.max(down.iter().map(|h| fingers(h.kind)).sum());
-            session.step(&hands)?;
-            moving_max = moving_max.max(objects_moving(&session));
-        }
-        let p = session.progress();
-        Ok(TrialResult {
-            // Not done when the gesture (plus 2 s) ran out: nothing more will
-            // happen, so the trial is failed and recorded at the time limit,
-            // as a scripted one is, not at the gesture's end.
-            completion_time_s: p.completed_at.filter(|_| p.complete).unwrap_or(limit),
-            completed: p.complete,
-            restarts: p.restarts,
-            objects_placed: p.placed as u32,
-            steps: session.frames(),
-            hands_max,
-            fingers_max,
-            objects_moving_max: moving_max,
-            ..TrialResult::default()
-        })
+            let (hands_down, fingers_down) = (down.len() as u32, down.iter().map(|h| fingers(h.kind)).sum());
+            TrialStep { hands, hands_down, fingers_down }
+        };
+        // Not done when the gesture (plus 2 s) ran out: nothing more will
+        // happen, so the trial is failed and recorded at the time limit, as
+        // a scripted one is, not at the gesture's end.
+        Ok(run_trial(&mut session, end, limit, next, None)?)
     }
 }

@@ -1,11 +1,12 @@
-//! One scripted trial: a planner drives a session until the goal is met or
-//! the time limit ends it as failed (never a hang).
+//! One trial: an input (a scripted planner, a replayed gesture) drives a
+//! session until the goal is met or the time limit ends it as failed (never
+//! a hang); [`run_trial`] is that loop for every runner.
 
 use super::learner::Learner;
-use super::manner::Manner;
 use super::planner::{Planner, PlannerOptions};
 use super::skill::Skill;
-use super::usage::Usage;
+use crate::harness::study::TrialResult;
+use crate::pipeline::surface::Hand;
 use crate::pipeline::technique::TechniqueKind;
 use crate::scene::Scene;
 use crate::session::{Session, SessionError, SessionOptions};
@@ -15,30 +16,49 @@ use crate::session::{Session, SessionError, SessionOptions};
 /// slowest deliberate push.
 pub const MOVING_SPEED: f32 = 0.02;
 
-/// What a trial produced. Completion time is simulated time, not wall time,
-/// so the same seed gives the same numbers on any load.
-#[derive(Debug, Clone, PartialEq)]
-pub struct TrialOutcome {
-    pub completion_time_s: f64,
-    pub completed: bool,
-    pub restarts: u32,
-    pub objects_placed: u32,
-    pub steps: u64,
-    /// The manner used for the most time.
-    pub strategy: Option<Manner>,
-    /// Most hands on the table at once.
-    pub hands_max: u32,
-    /// Most fingertips on the table at once (a flat hand counts five).
-    pub fingers_max: u32,
-    /// Most objects moving at once (faster than [`MOVING_SPEED`]).
-    pub objects_moving_max: u32,
-    /// Time and net progress per manner.
-    pub usage: Usage,
-}
-
 /// Objects of the session moving faster than [`MOVING_SPEED`] now.
 pub fn objects_moving(session: &Session) -> u32 {
     session.world().object_poses().iter().filter(|p| p.active && p.linvel.length() > MOVING_SPEED).count() as u32
+}
+
+/// What the input does on one step of a trial: the hands, and how many
+/// hands and fingertips are down (for `hands_max` and `fingers_max`).
+#[derive(Debug, Clone, Default)]
+pub struct TrialStep {
+    pub hands: Vec<Hand>,
+    pub hands_down: u32,
+    pub fingers_down: u32,
+}
+
+/// The one run-until-done loop of every trial: steps `session` with the
+/// hands `next` gives until the goal is met or `end_s` of simulated time
+/// has passed, then records it against the time limit `limit_s` (see
+/// [`TrialResult::from_progress`]) with the per-frame maxima. Writes every
+/// frame to `frames` when given (the study's `--frames` option).
+pub fn run_trial(
+    session: &mut Session,
+    end_s: f64,
+    limit_s: f64,
+    mut next: impl FnMut(&Session) -> TrialStep,
+    mut frames: Option<&mut FrameLog>,
+) -> Result<TrialResult, SessionError> {
+    let (mut hands_max, mut fingers_max, mut moving_max) = (0, 0, 0);
+    while session.time() < end_s && !session.progress().complete {
+        let step = next(session);
+        hands_max = hands_max.max(step.hands_down);
+        fingers_max = fingers_max.max(step.fingers_down);
+        session.step(&step.hands)?;
+        moving_max = moving_max.max(objects_moving(session));
+        if let Some(log) = frames.as_deref_mut() {
+            log.record(session);
+        }
+    }
+    Ok(TrialResult {
+        hands_max,
+        fingers_max,
+        objects_moving_max: moving_max,
+        ..TrialResult::from_progress(&session.progress(), session.frames(), limit_s)
+    })
 }
 
 /// Runs one scripted trial with a fresh participant whose habit is
@@ -50,14 +70,15 @@ pub fn run_scripted(
     skill: Skill,
     seed: u64,
     time_limit_s: f64,
-) -> Result<TrialOutcome, SessionError> {
+) -> Result<TrialResult, SessionError> {
     let learner = Learner::new(skill.habit());
     Ok(run_scripted_with(scene, kind, feedback, skill, seed, time_limit_s, learner, PlannerOptions::default(), None)?.0)
 }
 
 /// Runs one scripted trial for a participant who has learned `learner` so
-/// far; returns what it learned too. Writes every frame to `frames` when
-/// given (the study's `--frames` option).
+/// far; returns what it learned too. The result names the manner used for
+/// the most time (`strategy`) and each manner's time and net progress
+/// (`manners`). Writes every frame to `frames` when given.
 #[allow(clippy::too_many_arguments)]
 pub fn run_scripted_with(
     scene: &Scene,
@@ -68,37 +89,23 @@ pub fn run_scripted_with(
     time_limit_s: f64,
     learner: Learner,
     options: PlannerOptions,
-    mut frames: Option<&mut FrameLog>,
-) -> Result<(TrialOutcome, Learner), SessionError> {
+    frames: Option<&mut FrameLog>,
+) -> Result<(TrialResult, Learner), SessionError> {
     let mut session = Session::new(scene, kind, SessionOptions::default())?;
     let mut planner = Planner::new(skill, feedback, seed, learner, options);
-    let (mut hands_max, mut fingers_max, mut moving_max) = (0, 0, 0);
-    while session.time() < time_limit_s && !session.progress().complete {
-        let hands = planner.hands(&session);
-        let (n, f) = planner.hands_down();
-        hands_max = hands_max.max(n);
-        fingers_max = fingers_max.max(f);
-        session.step(&hands)?;
-        moving_max = moving_max.max(objects_moving(&session));
-        if let Some(log) = frames.as_deref_mut() {
-            log.record(&session);
-        }
-    }
-    let p = session.progress();
-    let (learner, usage) = planner.finish(session.time());
-    let outcome = TrialOutcome {
-        completion_time_s: p.completed_at.unwrap_or(session.time()),
-        completed: p.complete,
-        restarts: p.restarts,
-        objects_placed: p.placed as u32,
-        steps: session.frames(),
-        strategy: usage.main(),
-        hands_max,
-        fingers_max,
-        objects_moving_max: moving_max,
-        usage,
+    let next = |s: &Session| {
+        let hands = planner.hands(s);
+        let (hands_down, fingers_down) = planner.hands_down();
+        TrialStep { hands, hands_down, fingers_down }
     };
-    Ok((outcome, learner))
+    let result = run_trial(&mut session, time_limit_s, time_limit_s, next, frames)?;
+    let (learner, usage) = planner.finish(session.time());
+    let result = TrialResult {
+        strategy: usage.main().map(|m| m.name().to_owned()).unwrap_or_default(),
+        manners: usage.to_column(),
+        ..result
+    };
+    Ok((result, learner))
 }
 
 /// Per-frame rows of one trial (`frames/p<participant>_t<order>.csv`): tidy,

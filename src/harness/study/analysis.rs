@@ -18,7 +18,7 @@ use super::design::StudyDesign;
 use super::error::StudyError;
 use super::output::{TrialRow, write_atomically};
 use super::pairwise::{holm, paired_t};
-use super::trial::Technique;
+use crate::pipeline::technique::TechniqueKind;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
@@ -48,8 +48,8 @@ pub struct AnovaRow {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct PairwiseRow {
     pub task: String,
-    pub a: Technique,
-    pub b: Technique,
+    pub a: TechniqueKind,
+    pub b: TechniqueKind,
     pub mean_diff_s: Option<f64>,
     pub t: Option<f64>,
     pub df: u32,
@@ -73,7 +73,7 @@ impl Analysis {
 
     /// The pairwise row of two techniques in a task, whichever way round it
     /// was written, with its mean difference turned to `first − second`.
-    pub fn pair(&self, task: &str, first: Technique, second: Technique) -> Option<(Option<f64>, &PairwiseRow)> {
+    pub fn pair(&self, task: &str, first: TechniqueKind, second: TechniqueKind) -> Option<(Option<f64>, &PairwiseRow)> {
         self.pairwise.iter().find_map(|r| {
             if r.task != task {
                 None

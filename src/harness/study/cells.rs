@@ -11,7 +11,7 @@
 
 use super::design::StudyDesign;
 use super::output::TrialRow;
-use super::trial::Technique;
+use crate::pipeline::technique::TechniqueKind;
 use std::collections::BTreeMap;
 
 /// One task's cell values.
@@ -19,7 +19,7 @@ use std::collections::BTreeMap;
 pub struct TaskCells {
     pub task: String,
     /// In design order.
-    pub techniques: Vec<Technique>,
+    pub techniques: Vec<TechniqueKind>,
     /// In design order (the design's feedback levels).
     pub feedback: Vec<bool>,
     /// Participants with every cell, ascending.
@@ -52,7 +52,7 @@ impl TaskCells {
     }
 
     /// Position of a technique in this task's table.
-    pub fn technique_index(&self, technique: Technique) -> Option<usize> {
+    pub fn technique_index(&self, technique: TechniqueKind) -> Option<usize> {
         self.techniques.iter().position(|&t| t == technique)
     }
 

@@ -48,9 +48,10 @@
 //! [`StudyDesign::balance_note`] says what is off.
 
 use super::error::StudyError;
-use super::trial::{Technique, TrialSpec};
+use super::trial::TrialSpec;
+use crate::pipeline::technique::TechniqueKind;
 use serde::{Deserialize, Serialize};
-use std::collections::BTreeMap;
+use std::path::PathBuf;
 
 /// The paper's tasks, in the paper's (fixed) order.
 pub const DEFAULT_TASKS: [&str; 3] = ["positioning", "sorting", "steering"];
@@ -68,7 +69,7 @@ pub struct StudyDesign {
     /// In run order (the paper keeps it fixed for everyone).
     pub tasks: Vec<String>,
     /// The conditions the Latin square orders. Default: Joint, Proxy, Particle.
-    pub techniques: Vec<Technique>,
+    pub techniques: Vec<TechniqueKind>,
     /// Feedback levels in the phase order of participant 1; default `[true, false]`.
     pub feedback: Vec<bool>,
     /// Measured trials per condition.
@@ -82,10 +83,38 @@ pub struct StudyDesign {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub time_limit_override: Option<f64>,
     /// Runner settings that change results without being part of the design
-    /// proper (e.g. `frames`); recorded so `--from` reproduces the run. The
-    /// harness never reads them.
-    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
-    pub settings: BTreeMap<String, toml::Value>,
+    /// proper (`[design.settings]`); recorded so `--from` reproduces the run.
+    /// The harness never reads them.
+    #[serde(skip_serializing_if = "RunnerSettings::is_default")]
+    pub settings: RunnerSettings,
+}
+
+/// The trial runner's settings, `[design.settings]` in `run.toml`. Every
+/// key is optional; an unknown key is an error (a typo would otherwise
+/// silently change nothing).
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct RunnerSettings {
+    /// `frames = true` (`--frames`): write every scripted trial's frames to
+    /// `frames/p<participant>_t<order>.csv`.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub frames: bool,
+    /// `perception_delay_s = 0.15` switches on the perception-delay model:
+    /// seconds by which a participant sees the world later when feedback is
+    /// off. Absent = 0, the paper's definition.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub perception_delay_s: Option<f64>,
+    /// `replay = "DIR"` (`--replay DIR`): replay recorded gesture files from
+    /// this folder instead of running scripted participants.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub replay: Option<PathBuf>,
+}
+
+impl RunnerSettings {
+    /// True when nothing is set (then `run.toml` has no settings table).
+    pub fn is_default(&self) -> bool {
+        *self == RunnerSettings::default()
+    }
 }
 
 impl Default for StudyDesign {
@@ -95,13 +124,13 @@ impl Default for StudyDesign {
         StudyDesign {
             participants: 6,
             tasks: DEFAULT_TASKS.iter().map(|t| (*t).to_owned()).collect(),
-            techniques: vec![Technique::Joint, Technique::Proxy, Technique::Particle],
+            techniques: vec![TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle],
             feedback: vec![true, false],
             repetitions: 2,
             practice: true,
             seed: 2008,
             time_limit_override: None,
-            settings: BTreeMap::new(),
+            settings: RunnerSettings::default(),
         }
     }
 }
@@ -147,6 +176,11 @@ impl StudyDesign {
             && !(limit.is_finite() && limit > 0.0)
         {
             return fail(format!("time limit must be a positive number of seconds, got {limit}"));
+        }
+        if let Some(delay) = self.settings.perception_delay_s
+            && !(delay.is_finite() && delay >= 0.0)
+        {
+            return fail(format!("settings.perception_delay_s must be a number of seconds >= 0, got {delay}"));
         }
         Ok(())
     }
@@ -199,7 +233,7 @@ impl StudyDesign {
     }
 
     /// Technique order for a participant (1-based ID): a row of the square.
-    pub fn technique_order(&self, participant: u32) -> Vec<Technique> {
+    pub fn technique_order(&self, participant: u32) -> Vec<TechniqueKind> {
         let square = williams_square(self.techniques.len());
         if square.is_empty() {
             return Vec::new();
@@ -278,7 +312,7 @@ pub struct ParticipantPlan {
     /// Feedback phases in run order (`true` = feedback on).
     pub feedback_order: Vec<bool>,
     /// Techniques in run order (the same in every task and phase).
-    pub technique_order: Vec<Technique>,
+    pub technique_order: Vec<TechniqueKind>,
 }
 
 /// A slice of a design's trials, run into its own folder so that several

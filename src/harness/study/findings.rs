@@ -20,7 +20,7 @@
 
 use super::analysis::Analysis;
 use super::pairwise::{PairedTest, one_sample_t, paired_t};
-use super::trial::Technique;
+use crate::pipeline::technique::TechniqueKind;
 
 /// The significance level of every decision.
 pub const ALPHA: f64 = 0.05;
@@ -29,11 +29,11 @@ pub const ALPHA: f64 = 0.05;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Rule {
     /// Every technique in `faster` is faster than every one in `than`.
-    Faster { faster: &'static [Technique], than: &'static [Technique] },
+    Faster { faster: &'static [TechniqueKind], than: &'static [TechniqueKind] },
     /// Feedback on vs off makes no significant difference for `technique`.
-    FeedbackSmall { technique: Technique },
+    FeedbackSmall { technique: TechniqueKind },
     /// Feedback's benefit (off − on) is larger for `more` than for `less`.
-    FeedbackLarger { more: Technique, less: Technique },
+    FeedbackLarger { more: TechniqueKind, less: TechniqueKind },
 }
 
 /// One of the paper's findings.
@@ -47,7 +47,7 @@ pub struct Finding {
     pub rule: Rule,
 }
 
-use Technique::{Joint, Particle, Proxy};
+use TechniqueKind::{Joint, Particle, Proxy};
 
 /// The paper's findings, in the paper's order.
 pub const FINDINGS: [Finding; 5] = [
@@ -183,7 +183,7 @@ impl Finding {
 
     /// The deciding test, in words.
     pub fn test(&self) -> String {
-        let names = |ts: &[Technique]| ts.iter().map(|t| t.label()).collect::<Vec<_>>().join(", ");
+        let names = |ts: &[TechniqueKind]| ts.iter().map(|t| t.label()).collect::<Vec<_>>().join(", ");
         match self.rule {
             Rule::Faster { faster, than } => format!(
                 "{}: Holm-corrected pairwise t-test (pairwise.csv) of {} against {}, p_holm < {ALPHA} and the mean difference negative for every pair",
@@ -225,7 +225,7 @@ pub fn fmt_p(p: f64) -> String {
 }
 
 /// Per complete participant: the technique's feedback-off minus feedback-on value.
-fn feedback_benefits(cells: &super::cells::TaskCells, technique: Technique) -> Result<Vec<f64>, String> {
+fn feedback_benefits(cells: &super::cells::TaskCells, technique: TechniqueKind) -> Result<Vec<f64>, String> {
     let t = cells.technique_index(technique).ok_or_else(|| format!("the design lacks {technique}"))?;
     let (Some(on), Some(off)) = (cells.feedback_index(true), cells.feedback_index(false)) else {
         return Err("the design lacks a feedback level".into());
@@ -233,7 +233,7 @@ fn feedback_benefits(cells: &super::cells::TaskCells, technique: Technique) -> R
     Ok(cells.column(t, off).iter().zip(cells.column(t, on)).map(|(off, on)| off - on).collect())
 }
 
-fn feedback_effect(cells: &super::cells::TaskCells, technique: Technique) -> Result<PairedTest, String> {
+fn feedback_effect(cells: &super::cells::TaskCells, technique: TechniqueKind) -> Result<PairedTest, String> {
     let t = cells.technique_index(technique).ok_or_else(|| format!("the design lacks {technique}"))?;
     let (Some(on), Some(off)) = (cells.feedback_index(true), cells.feedback_index(false)) else {
         return Err("the design lacks a feedback level".into());

@@ -19,10 +19,10 @@ pub mod summary;
 pub mod trial;
 pub mod within_ci;
 
-pub use design::{DEFAULT_TASKS, ParticipantPlan, Shard, StudyDesign, trial_seed, williams_square};
+pub use design::{DEFAULT_TASKS, ParticipantPlan, RunnerSettings, Shard, StudyDesign, trial_seed, williams_square};
 pub use error::StudyError;
 pub use output::{COLUMNS, RunFile, TrialRow};
 pub use runner::{MergeOutcome, RunOptions, RunOutcome, merge, resume_study, run_study, write_report};
 pub use strategies::{STRATEGY_COLUMNS, StrategyRow, read_strategies, strategies};
-pub use summary::{Stats, SummaryRow, describe, summarize, t_quantile_975};
-pub use trial::{ParticipantRun, Technique, TrialResult, TrialRunner, TrialSpec, UnknownTechnique};
+pub use summary::{CellStats, SummaryRow, describe, summarize, t_quantile_975};
+pub use trial::{ParticipantRun, TrialResult, TrialRunner, TrialSpec};

@@ -19,7 +19,8 @@
 
 use super::design::{ParticipantPlan, Shard, StudyDesign};
 use super::error::StudyError;
-use super::trial::{Technique, TrialResult, TrialSpec};
+use super::trial::{TrialResult, TrialSpec};
+use crate::pipeline::technique::TechniqueKind;
 use serde::{Deserialize, Serialize};
 use std::fs::{File, OpenOptions};
 use std::io::Write;
@@ -75,7 +76,7 @@ pub struct TrialRow {
     pub participant: u32,
     pub order_index: u32,
     pub task: String,
-    pub technique: Technique,
+    pub technique: TechniqueKind,
     pub feedback: bool,
     pub repetition: u32,
     pub practice: bool,

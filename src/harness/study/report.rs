@@ -13,7 +13,7 @@ use super::error::StudyError;
 use super::findings::{FINDINGS, fmt_p};
 use super::output::{FIGURE_PNG, TRIALS_CSV, write_atomically};
 use super::summary::SummaryRow;
-use super::trial::Technique;
+use crate::pipeline::technique::TechniqueKind;
 use base64::Engine;
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -217,7 +217,7 @@ pub fn report_blocks(
             let mut rows = Vec::new();
             for (technique, manners) in counts {
                 let total: usize = manners.values().sum();
-                let label = technique.parse::<Technique>().map_or(technique.as_str(), |t| t.label());
+                let label = technique.parse::<TechniqueKind>().map_or(technique.as_str(), |t| t.label());
                 for (manner, n) in manners {
                     rows.push(vec![
                         label.to_owned(),

@@ -16,7 +16,7 @@
 
 use super::error::StudyError;
 use super::output::TrialRow;
-use super::trial::Technique;
+use crate::pipeline::technique::TechniqueKind;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -30,7 +30,7 @@ pub const STRATEGY_COLUMNS: [&str; 8] =
 pub struct StrategyRow {
     pub participant: u32,
     pub task: String,
-    pub technique: Technique,
+    pub technique: TechniqueKind,
     pub feedback: bool,
     pub manner: String,
     pub time_s: f64,
@@ -50,7 +50,7 @@ fn parse_item(item: &str) -> Option<(&str, f64, f64)> {
 /// The rows of `strategies.csv` from `trials.csv`'s rows; `path` names the
 /// trials file in errors (a `manners` cell that does not parse).
 pub fn strategies(rows: &[TrialRow], path: &Path) -> Result<Vec<StrategyRow>, StudyError> {
-    type Key = (u32, String, Technique, bool);
+    type Key = (u32, String, TechniqueKind, bool);
     // Condition -> manner -> (first seen, time, net); conditions by first use.
     let mut order: Vec<Key> = Vec::new();
     let mut acc: BTreeMap<Key, Vec<(String, f64, f64)>> = BTreeMap::new();

@@ -22,8 +22,8 @@ use super::cells::task_cells;
 use super::design::StudyDesign;
 use super::error::StudyError;
 use super::output::TrialRow;
-use super::trial::Technique;
 use super::within_ci::cousineau_morey_half_widths;
+use crate::pipeline::technique::TechniqueKind;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -33,7 +33,7 @@ use std::path::Path;
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct SummaryRow {
     pub task: String,
-    pub technique: Technique,
+    pub technique: TechniqueKind,
     pub feedback: bool,
     /// Participants with at least one timed measured trial in this condition.
     pub participants: u32,
@@ -55,7 +55,7 @@ pub struct SummaryRow {
 
 /// Mean, sample SD (n - 1) and 95% CI half-width of a sample.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Stats {
+pub struct CellStats {
     pub n: usize,
     pub mean: f64,
     /// `None` for n < 2.
@@ -65,19 +65,19 @@ pub struct Stats {
 }
 
 /// `None` for an empty sample.
-pub fn describe(values: &[f64]) -> Option<Stats> {
+pub fn describe(values: &[f64]) -> Option<CellStats> {
     let n = values.len();
     if n == 0 {
         return None;
     }
     let mean = values.iter().sum::<f64>() / n as f64;
     if n < 2 {
-        return Some(Stats { n, mean, sd: None, ci95_half_width: None });
+        return Some(CellStats { n, mean, sd: None, ci95_half_width: None });
     }
     let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1) as f64;
     let sd = var.sqrt();
     let half = t_quantile_975((n - 1) as u32) * sd / (n as f64).sqrt();
-    Some(Stats { n, mean, sd: Some(sd), ci95_half_width: Some(half) })
+    Some(CellStats { n, mean, sd: Some(sd), ci95_half_width: Some(half) })
 }
 
 /// The 0.975 quantile of Student's t with `df` degrees of freedom (the

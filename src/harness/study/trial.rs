@@ -8,74 +8,9 @@
 //! - `repetition` is 0 for the practice trial of a condition and 1..=reps for
 //!   the measured ones.
 
+use crate::pipeline::technique::TechniqueKind;
+use crate::session::goal::Progress;
 use serde::{Deserialize, Serialize};
-use std::fmt;
-use std::str::FromStr;
-
-/// A study condition's interaction technique. Kept local to the study layer
-/// (the harness needs no physics); the CLI maps it to the technique module's kind.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Technique {
-    /// Piloted, then dropped by the paper; optional here.
-    Direct,
-    Joint,
-    Proxy,
-    Particle,
-    /// Per-frame plus persistent particles (grasping); not in the paper's study.
-    Hybrid,
-}
-
-impl Technique {
-    pub const ALL: [Technique; 5] =
-        [Technique::Direct, Technique::Joint, Technique::Proxy, Technique::Particle, Technique::Hybrid];
-
-    /// The name used in files and on the command line (`joint`).
-    pub fn name(self) -> &'static str {
-        match self {
-            Technique::Direct => "direct",
-            Technique::Joint => "joint",
-            Technique::Proxy => "proxy",
-            Technique::Particle => "particle",
-            Technique::Hybrid => "hybrid",
-        }
-    }
-
-    /// The name used on plots (`Joint`).
-    pub fn label(self) -> &'static str {
-        match self {
-            Technique::Direct => "Direct",
-            Technique::Joint => "Joint",
-            Technique::Proxy => "Proxy",
-            Technique::Particle => "Particle",
-            Technique::Hybrid => "Hybrid",
-        }
-    }
-}
-
-impl fmt::Display for Technique {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
-/// An unknown technique name.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("unknown technique {0:?} (expected one of: direct, joint, proxy, particle, hybrid)")]
-pub struct UnknownTechnique(pub String);
-
-impl FromStr for Technique {
-    type Err = UnknownTechnique;
-
-    /// Case-insensitive; surrounding spaces ignored.
-    fn from_str(s: &str) -> Result<Self, Self::Err> {
-        let t = s.trim();
-        Technique::ALL
-            .into_iter()
-            .find(|k| k.name().eq_ignore_ascii_case(t))
-            .ok_or_else(|| UnknownTechnique(s.to_owned()))
-    }
-}
 
 /// Everything the runner needs to run one trial. The same spec always gives
 /// the same trial: `seed` drives all randomness of the scripted participant.
@@ -87,7 +22,7 @@ pub struct TrialSpec {
     pub order_index: u32,
     /// Task name from the design (`positioning`, `sorting`, `steering`).
     pub task: String,
-    pub technique: Technique,
+    pub technique: TechniqueKind,
     /// Visual feedback of the input shown.
     pub feedback: bool,
     /// 0 for the practice trial, 1..=reps for measured ones.
@@ -120,6 +55,24 @@ pub struct TrialResult {
     pub objects_moving_max: u32,
     /// Time and net progress per manner: `name:time_s:net_m` joined by `;`.
     pub manners: String,
+}
+
+impl TrialResult {
+    /// Where a trial ended, as a result: the one place that turns a goal's
+    /// progress into a row. A trial that did not meet its goal is recorded
+    /// at `limit_s`, whether the time limit or the end of its input ended
+    /// it (the loop stops up to one step past the limit). The per-frame
+    /// maxima, strategy and manners are left for the runner to fill in.
+    pub fn from_progress(progress: &Progress, steps: u64, limit_s: f64) -> TrialResult {
+        TrialResult {
+            completion_time_s: progress.completed_at.filter(|_| progress.complete).unwrap_or(limit_s),
+            completed: progress.complete,
+            restarts: progress.restarts,
+            objects_placed: progress.placed as u32,
+            steps,
+            ..TrialResult::default()
+        }
+    }
 }
 
 /// Runs trials through the physics. Implemented by the CLI's runners.

@@ -36,8 +36,8 @@
 //! id, `source` the index of the source in order of appearance, mod 32),
 //! so TUIO hands never share an id with mouse or touch hands.
 
+use crate::pipeline::surface::{Footprint, Patch};
 use crate::pipeline::surface::{Hand, HandKind};
-use crate::pipeline::surface::{Patch, Shape};
 
 /// The port TUIO trackers send to by default.
 pub const DEFAULT_PORT: u16 = 3333;
@@ -77,7 +77,7 @@ pub struct Cursor {
 /// coordinates; `width` lies along the blob's own x axis, turned by `angle`
 /// radians from the surface's +x towards its +y.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Blob {
+pub struct TuioBlob {
     pub session: i32,
     pub x: f32,
     pub y: f32,
@@ -151,7 +151,7 @@ impl Session for Cursor {
     }
 }
 
-impl Session for Blob {
+impl Session for TuioBlob {
     fn session(&self) -> i32 {
         self.session
     }
@@ -207,7 +207,7 @@ struct Source {
     index: u32,
     last_seen: f64,
     cursors: Profile<Cursor>,
-    blobs: Profile<Blob>,
+    blobs: Profile<TuioBlob>,
 }
 
 /// Which profile a message addresses.
@@ -223,7 +223,7 @@ enum Op {
     Source(String),
     Alive(Kind, Vec<i32>),
     SetCursor(Cursor),
-    SetBlob(Blob),
+    SetBlob(TuioBlob),
     Fseq(Kind, i32),
     Ignored,
 }
@@ -262,7 +262,7 @@ impl TuioState {
 
     /// Live cursors and blobs of sources heard from in the last
     /// [`STALE_AFTER_S`] seconds.
-    pub fn live(&self, now: f64) -> (Vec<Cursor>, Vec<Blob>) {
+    pub fn live(&self, now: f64) -> (Vec<Cursor>, Vec<TuioBlob>) {
         let fresh = self.sources.iter().filter(|s| now - s.last_seen <= STALE_AFTER_S);
         let mut cursors = Vec::new();
         let mut blobs = Vec::new();
@@ -396,8 +396,10 @@ pub fn centroid(patches: &[Patch]) -> [f32; 2] {
     let mut total = 0.0f32;
     for p in patches {
         let c = match p.shape {
-            Shape::Ellipse { centre, .. } | Shape::RoundedRect { centre, .. } | Shape::Ring { centre, .. } => centre,
-            Shape::Capsule { a, b, .. } => [(a[0] + b[0]) * 0.5, (a[1] + b[1]) * 0.5],
+            Footprint::Ellipse { centre, .. }
+            | Footprint::RoundedRect { centre, .. }
+            | Footprint::Ring { centre, .. } => centre,
+            Footprint::Capsule { a, b, .. } => [(a[0] + b[0]) * 0.5, (a[1] + b[1]) * 0.5],
         };
         let area = p.shape.area();
         sum[0] += c[0] * area;
@@ -425,7 +427,7 @@ pub fn blob_kind(long_m: f32, aspect: f32) -> HandKind {
 /// A blob as the hand whose footprint fits it: [`blob_kind`] picks the
 /// kind, its scale makes the footprint's long side the blob's, and it is
 /// turned so the long sides agree and centred on the blob's centre.
-pub fn blob_hand(b: &Blob, table: [f32; 2], id: u32) -> Hand {
+pub fn blob_hand(b: &TuioBlob, table: [f32; 2], id: u32) -> Hand {
     let [cx, cy] = to_table([b.x, b.y], table);
     let (sin, cos) = b.angle.sin_cos();
     // The blob's axes, normalized screen vectors mapped to table metres.
@@ -581,7 +583,7 @@ fn op(m: &rosc::OscMessage) -> Result<Op, TuioError> {
                     if !(width > 0.0 && width <= 2.0 && height > 0.0 && height <= 2.0) {
                         return Err(bad(format!("set: blob size {width} x {height} is not in (0, 2]")));
                     }
-                    Op::SetBlob(Blob { session, x, y, angle, width, height })
+                    Op::SetBlob(TuioBlob { session, x, y, angle, width, height })
                 }
             })
         }
@@ -771,7 +773,7 @@ mod tests {
 
     #[test]
     fn blobs_become_hands_of_their_size_and_angle() {
-        let blob = |w: f32, h: f32, angle: f32| Blob { session: 1, x: 0.5, y: 0.5, angle, width: w, height: h };
+        let blob = |w: f32, h: f32, angle: f32| TuioBlob { session: 1, x: 0.5, y: 0.5, angle, width: w, height: h };
         // 1.5 cm across: a fingertip.
         let tip = blob_hand(&blob(0.015, 0.02, 0.0), TABLE, 1);
         assert_eq!(tip.kind, HandKind::Fingertips(1));

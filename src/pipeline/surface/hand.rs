@@ -1,13 +1,13 @@
 //! Models of hands and tangibles lying on the glass.
 //!
-//! Each model is a union of [`Shape`]s in a local frame whose +y points
+//! Each model is a union of [`Footprint`]s in a local frame whose +y points
 //! along the fingers (away from the wrist) and whose +x points to the
 //! little-finger side of a right hand, placed on the table by a [`Pose`].
 //! Sizes are those of an adult hand as seen by a diffuse-illumination table:
 //! a fingertip touches with a patch about 1.5 cm across, a flat palm about
 //! 9 x 10 cm, a forearm about 25 x 7 cm.
 
-use super::shape::{Patch, Shape};
+use super::footprint::{Footprint, Patch};
 
 /// What is touching the glass.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -167,29 +167,29 @@ impl Hand {
     }
 }
 
-fn scaled(shape: Shape, s: f32) -> Shape {
+fn scaled(shape: Footprint, s: f32) -> Footprint {
     let v = |p: [f32; 2]| [p[0] * s, p[1] * s];
     match shape {
-        Shape::Ellipse { centre, radii, angle } => Shape::Ellipse { centre: v(centre), radii: v(radii), angle },
-        Shape::Capsule { a, b, radius } => Shape::Capsule { a: v(a), b: v(b), radius: radius * s },
-        Shape::RoundedRect { centre, half, angle, corner } => {
-            Shape::RoundedRect { centre: v(centre), half: v(half), angle, corner: corner * s }
+        Footprint::Ellipse { centre, radii, angle } => Footprint::Ellipse { centre: v(centre), radii: v(radii), angle },
+        Footprint::Capsule { a, b, radius } => Footprint::Capsule { a: v(a), b: v(b), radius: radius * s },
+        Footprint::RoundedRect { centre, half, angle, corner } => {
+            Footprint::RoundedRect { centre: v(centre), half: v(half), angle, corner: corner * s }
         }
-        Shape::Ring { centre, radius, half_width } => {
-            Shape::Ring { centre: v(centre), radius: radius * s, half_width: half_width * s }
+        Footprint::Ring { centre, radius, half_width } => {
+            Footprint::Ring { centre: v(centre), radius: radius * s, half_width: half_width * s }
         }
     }
 }
 
-fn patch(shape: Shape, level: f32) -> Patch {
+fn patch(shape: Footprint, level: f32) -> Patch {
     Patch { shape, level }
 }
 
 /// A capsule of `length` starting at `base`, pointing `angle` radians
 /// counter-clockwise from +y.
-fn digit(base: [f32; 2], angle: f32, length: f32, radius: f32) -> Shape {
+fn digit(base: [f32; 2], angle: f32, length: f32, radius: f32) -> Footprint {
     let (sin, cos) = angle.sin_cos();
-    Shape::Capsule { a: base, b: [base[0] - sin * length, base[1] + cos * length], radius }
+    Footprint::Capsule { a: base, b: [base[0] - sin * length, base[1] + cos * length], radius }
 }
 
 /// The footprint of `kind` in its local frame at scale 1.
@@ -203,16 +203,16 @@ fn local_patches(kind: HandKind, spread: f32, out: &mut Vec<Patch>) {
                 let k = f32::from(i) - f32::from(fingers - 1) * 0.5;
                 // The middle fingers reach further than the outer ones.
                 let y = -0.003 * k * k;
-                out.push(patch(Shape::Ellipse { centre: [k * spacing, y], radii: TIP_RADII, angle: 0.0 }, 1.0));
+                out.push(patch(Footprint::Ellipse { centre: [k * spacing, y], radii: TIP_RADII, angle: 0.0 }, 1.0));
             }
             if n == 5 {
                 let x = -(1.5 * spacing + 0.012 + 0.01 * spread);
-                out.push(patch(Shape::Ellipse { centre: [x, -0.045], radii: [0.009, 0.011], angle: 0.5 }, 1.0));
+                out.push(patch(Footprint::Ellipse { centre: [x, -0.045], radii: [0.009, 0.011], angle: 0.5 }, 1.0));
             }
         }
         HandKind::FlatHand => {
             out.push(patch(
-                Shape::RoundedRect { centre: [0.0, 0.0], half: [0.043, 0.048], angle: 0.0, corner: 0.02 },
+                Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.043, 0.048], angle: 0.0, corner: 0.02 },
                 1.0,
             ));
             // Index, middle, ring, little: base x, length, radius.
@@ -225,24 +225,24 @@ fn local_patches(kind: HandKind, spread: f32, out: &mut Vec<Patch>) {
             out.push(patch(digit([-0.036, -0.022], 0.7 + 0.3 * spread, 0.055, 0.0095), FINGER_LEVEL));
         }
         HandKind::Edge => {
-            out.push(patch(Shape::Capsule { a: [0.0, -0.05], b: [0.0, 0.03], radius: 0.012 }, 1.0));
-            out.push(patch(Shape::Capsule { a: [0.0, 0.03], b: [0.004, 0.09], radius: 0.008 }, 0.8));
+            out.push(patch(Footprint::Capsule { a: [0.0, -0.05], b: [0.0, 0.03], radius: 0.012 }, 1.0));
+            out.push(patch(Footprint::Capsule { a: [0.0, 0.03], b: [0.004, 0.09], radius: 0.008 }, 0.8));
         }
         HandKind::Fist => out.push(patch(
-            Shape::RoundedRect { centre: [0.0, 0.0], half: [0.04, 0.0225], angle: 0.0, corner: 0.015 },
+            Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.04, 0.0225], angle: 0.0, corner: 0.015 },
             1.0,
         )),
         HandKind::Forearm => {
-            out.push(patch(Shape::Capsule { a: [0.0, -0.09], b: [0.0, 0.0], radius: 0.035 }, 1.0));
-            out.push(patch(Shape::Capsule { a: [0.0, 0.0], b: [0.0, 0.1], radius: 0.027 }, 0.9));
+            out.push(patch(Footprint::Capsule { a: [0.0, -0.09], b: [0.0, 0.0], radius: 0.035 }, 1.0));
+            out.push(patch(Footprint::Capsule { a: [0.0, 0.0], b: [0.0, 0.1], radius: 0.027 }, 0.9));
         }
         HandKind::Ruler => out.push(patch(
-            Shape::RoundedRect { centre: [0.0, 0.0], half: [0.15, 0.015], angle: 0.0, corner: 0.001 },
+            Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.15, 0.015], angle: 0.0, corner: 0.001 },
             1.0,
         )),
-        HandKind::Cup => out.push(patch(Shape::Ring { centre: [0.0, 0.0], radius: 0.035, half_width: 0.003 }, 1.0)),
+        HandKind::Cup => out.push(patch(Footprint::Ring { centre: [0.0, 0.0], radius: 0.035, half_width: 0.003 }, 1.0)),
         HandKind::Card => out.push(patch(
-            Shape::RoundedRect { centre: [0.0, 0.0], half: [0.043, 0.027], angle: 0.0, corner: 0.003 },
+            Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.043, 0.027], angle: 0.0, corner: 0.003 },
             1.0,
         )),
     }

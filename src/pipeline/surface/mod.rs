@@ -1,16 +1,16 @@
-//! The sensing surface: hands and tangibles on the table ([`Hand`], [`Shape`])
+//! The sensing surface: hands and tangibles on the table ([`Hand`], [`Footprint`])
 //! drawn into the contact image a vision-based surface sees ([`ContactImage`],
 //! [`rasterize_rows`]) through its camera ([`Sensor`]). Where hands come from
 //! (mouse, TUIO, gesture files) is the input layer's business.
 
+mod footprint;
 mod hand;
 mod image;
 mod raster;
 mod sensor;
-mod shape;
 
+pub use footprint::{Footprint, Patch, Prepared};
 pub use hand::{Hand, HandKind, Pose};
 pub use image::ContactImage;
 pub use raster::{Noise, RasterParams, rasterize, rasterize_into, rasterize_patches, rasterize_rows};
 pub use sensor::Sensor;
-pub use shape::{Patch, Prepared, Shape};

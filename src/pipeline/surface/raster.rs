@@ -10,10 +10,10 @@ use rand_chacha::ChaCha8Rng;
 
 use std::ops::Range;
 
+use super::footprint::Patch;
 use super::hand::Hand;
 use super::image::ContactImage;
 use super::sensor::Sensor;
-use super::shape::Patch;
 
 /// Additive sensor noise: every pixel gets a uniform integer in
 /// `-amplitude..=amplitude` (clamped to 0..=255), drawn from a `ChaCha8Rng`

@@ -20,7 +20,7 @@ pub use direct::DirectForce;
 pub use feedback::Feedback;
 pub use hybrid::HybridTechnique;
 pub use joint::JointTechnique;
-pub use kind::TechniqueKind;
+pub use kind::{TechniqueKind, UnknownTechnique};
 pub use particle::ParticleTechnique;
 pub use proxy::ProxyTechnique;
 

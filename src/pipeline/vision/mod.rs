@@ -17,4 +17,4 @@ pub use hull::{convex_hull, signed_area};
 pub use pipeline::{Contact, EdgeSample, FlowInterest, Pipeline, StageTimings, VisionFrame, VisionParams, rigid_guess};
 pub use sobel::{EDGE_PAD, EdgePixel, find_edges, gradient_magnitude, sobel_at};
 pub use threshold::{Mask, threshold, threshold_into, threshold_rows};
-pub use tracking::{Tracked, Tracker, TrackerParams};
+pub use tracking::{BlobTracker, BlobTrackerParams, Tracked};

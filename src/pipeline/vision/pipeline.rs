@@ -17,7 +17,7 @@ use super::components::{Blob, find_blobs_in_rows};
 use super::flow::BlockMatcher;
 use super::sobel::find_edges;
 use super::threshold::{Mask, threshold_rows};
-use super::tracking::{Tracker, TrackerParams};
+use super::tracking::{BlobTracker, BlobTrackerParams};
 
 /// Pipeline settings. The defaults suit the default sensor (640 x 480 over
 /// 1.0 x 0.75 m, 1.56 mm pixels) and the rasterizer's 4 px soft edge.
@@ -49,7 +49,7 @@ pub struct VisionParams {
     /// 3 covers a fingertip spinning or accelerating by 3 px per frame
     /// beyond what tracking predicted.
     pub search_radius: usize,
-    /// See [`TrackerParams::max_jump_px`].
+    /// See [`BlobTrackerParams::max_jump_px`].
     pub max_jump_px: f32,
 }
 
@@ -62,7 +62,7 @@ impl Default for VisionParams {
             stride: 3,
             block_size: 7,
             search_radius: 3,
-            max_jump_px: TrackerParams::default().max_jump_px,
+            max_jump_px: BlobTrackerParams::default().max_jump_px,
         }
     }
 }
@@ -162,7 +162,7 @@ pub struct VisionFrame {
 pub struct Pipeline {
     params: VisionParams,
     matcher: BlockMatcher,
-    tracker: Tracker,
+    tracker: BlobTracker,
     previous: Option<ContactImage>,
     mask: Mask,
     /// The rows the previous frame may have lit (see [`Pipeline::process_rows`]).
@@ -184,7 +184,10 @@ impl Pipeline {
         Self {
             params,
             matcher: BlockMatcher::new(params.block_size, params.search_radius),
-            tracker: Tracker::new(TrackerParams { max_jump_px: params.max_jump_px, ..TrackerParams::default() }),
+            tracker: BlobTracker::new(BlobTrackerParams {
+                max_jump_px: params.max_jump_px,
+                ..BlobTrackerParams::default()
+            }),
             previous: None,
             mask: Mask::default(),
             lit: 0..usize::MAX,

@@ -37,9 +37,9 @@ use std::collections::HashSet;
 use super::components::{BBox, Blob, Run};
 use super::grid::BoxGrid;
 
-/// Tracker settings.
+/// [`BlobTracker`] settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TrackerParams {
+pub struct BlobTrackerParams {
     /// Furthest a contact may be from its predicted place and keep its id
     /// without overlap, or reclaim an id after a split; pixels.
     pub max_jump_px: f32,
@@ -48,7 +48,7 @@ pub struct TrackerParams {
     pub min_elongation: f32,
 }
 
-impl Default for TrackerParams {
+impl Default for BlobTrackerParams {
     fn default() -> Self {
         Self { max_jump_px: 40.0, min_elongation: 1.2 }
     }
@@ -121,8 +121,8 @@ struct Assignment {
 
 /// Keeps contact ids from frame to frame.
 #[derive(Debug, Clone, Default)]
-pub struct Tracker {
-    params: TrackerParams,
+pub struct BlobTracker {
+    params: BlobTrackerParams,
     live: Vec<Live>,
     next_id: u32,
     frame: u64,
@@ -188,12 +188,12 @@ fn axis_turn(from: f32, to: f32) -> f32 {
     d
 }
 
-impl Tracker {
-    pub fn new(params: TrackerParams) -> Self {
+impl BlobTracker {
+    pub fn new(params: BlobTrackerParams) -> Self {
         Self { params, live: Vec::new(), next_id: 1, frame: 0 }
     }
 
-    pub fn params(&self) -> TrackerParams {
+    pub fn params(&self) -> BlobTrackerParams {
         self.params
     }
 
@@ -484,7 +484,7 @@ mod tests {
 
     #[test]
     fn moving_contact_keeps_its_id_and_speed() {
-        let mut t = Tracker::new(TrackerParams::default());
+        let mut t = BlobTracker::new(BlobTrackerParams::default());
         let a = t.update(&squares(&[[20, 30]], 8));
         let b = t.update(&squares(&[[23, 30]], 8));
         assert_eq!(a[0].id, b[0].id);
@@ -503,7 +503,7 @@ mod tests {
 
     #[test]
     fn merge_keeps_the_older_id_and_split_restores_both() {
-        let mut t = Tracker::new(TrackerParams::default());
+        let mut t = BlobTracker::new(BlobTrackerParams::default());
         let old = t.update(&squares(&[[30, 30]], 8))[0].id;
         let ab = t.update(&squares(&[[30, 30], [50, 30]], 8));
         let young = ab[1].id;
@@ -521,7 +521,7 @@ mod tests {
 
     #[test]
     fn split_restores_ids_on_the_right_side_whatever_the_sizes() {
-        let mut t = Tracker::new(TrackerParams::default());
+        let mut t = BlobTracker::new(BlobTrackerParams::default());
         let both = t.update(&squares(&[[30, 30], [50, 30]], 8));
         let (left, right) = (both[0].id, both[1].id);
         t.update(&squares(&[[37, 30], [43, 30]], 8));
@@ -541,7 +541,7 @@ mod tests {
 
     #[test]
     fn splitting_a_single_contact_gives_a_new_id_to_the_smaller_part() {
-        let mut t = Tracker::new(TrackerParams::default());
+        let mut t = BlobTracker::new(BlobTrackerParams::default());
         let one = t.update(&squares(&[[30, 30]], 20))[0].id;
         let parts = t.update(&squares(&[[26, 30], [36, 30]], 6));
         assert_eq!(parts.len(), 2);

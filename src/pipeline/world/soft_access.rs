@@ -17,7 +17,7 @@ impl World {
         let (soft, physics) = self.soft_and_physics_mut();
         soft.add(spec, &config, physics).map_err(|e| WorldError::EffectNotDeclared {
             scene: self.scene().name.clone(),
-            effect: e.name(),
+            effect: e,
             what: format!("the {} `{}`", spec.kind.name(), spec.name),
         })
     }

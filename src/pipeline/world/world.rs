@@ -6,7 +6,7 @@ use super::groups::Layer;
 use super::ray::RayHit;
 use super::soft::{self, SOFT_TAG, SoftBodies};
 use super::stats::{StepStats, WorldStats};
-use crate::scene::{BodyKind, EffectSet, Scene, Shape};
+use crate::scene::{BodyKind, Effect, EffectSet, Scene, Shape};
 use glam::{Quat, Vec2, Vec3};
 use rapier3d::parry::bounding_volume::Aabb;
 use rapier3d::parry::query::{RayCast, RayIntersection};
@@ -222,7 +222,7 @@ impl World {
         } else {
             Err(WorldError::EffectNotDeclared {
                 scene: self.scene.name.clone(),
-                effect: "joints",
+                effect: Effect::Joints,
                 what: what.to_string(),
             })
         }

@@ -1,9 +1,9 @@
 //! Task completion rules, shared by the demo, `run` and the study harness.
 //!
-//! A [`Tracker`] reads the world after every step and decides what the
+//! A [`GoalTracker`] reads the world after every step and decides what the
 //! scene's [`crate::scene::Goal`] says: objects placed, waypoints passed,
 //! restarts, and whether the task is complete.
 
 mod tracker;
 
-pub use tracker::{Progress, Tracker};
+pub use tracker::{GoalTracker, Progress};

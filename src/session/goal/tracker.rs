@@ -1,4 +1,4 @@
-//! [`Tracker`]: evaluates a scene goal on the world, step by step.
+//! [`GoalTracker`]: evaluates a scene goal on the world, step by step.
 
 use crate::pipeline::world::{ObjectPose, World};
 use crate::scene::{Goal, Scene, SteeringGoal};
@@ -30,7 +30,7 @@ pub struct Progress {
 
 /// Evaluates one scene's goal.
 #[derive(Debug, Clone)]
-pub struct Tracker {
+pub struct GoalTracker {
     goal: Goal,
     /// Seconds each object has rested where it should (per object).
     dwell: Vec<f32>,
@@ -43,10 +43,10 @@ pub struct Tracker {
     soft_dwell: f32,
 }
 
-impl Tracker {
-    pub fn new(scene: &Scene) -> Tracker {
+impl GoalTracker {
+    pub fn new(scene: &Scene) -> GoalTracker {
         let n = scene.objects.len();
-        let mut t = Tracker {
+        let mut t = GoalTracker {
             goal: scene.goal.clone(),
             dwell: vec![0.0; n],
             placed: vec![false; n],
@@ -59,7 +59,7 @@ impl Tracker {
             Goal::None => 0,
             Goal::Positioning { targets, .. } => targets.len(),
             Goal::Sorting { zones, .. } => {
-                scene.objects.iter().filter(|o| zones.iter().any(|z| z.color_name == o.color_name)).count()
+                scene.objects.iter().filter(|o| zones.iter().any(|z| z.color == o.color)).count()
             }
             Goal::Steering(g) => g.waypoints.len() + 1,
             Goal::Gather { .. } => scene.objects.iter().filter(|o| o.body == crate::scene::BodyKind::Dynamic).count(),
@@ -118,7 +118,7 @@ impl Tracker {
                 let mut all = true;
                 let mut oks = Vec::new();
                 for (i, o) in scene.objects.iter().enumerate() {
-                    let mine: Vec<_> = zones.iter().filter(|z| z.color_name == o.color_name).collect();
+                    let mine: Vec<_> = zones.iter().filter(|z| z.color == o.color).collect();
                     if mine.is_empty() {
                         continue;
                     }

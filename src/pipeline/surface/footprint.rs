@@ -6,7 +6,7 @@
 
 /// One primitive footprint, in table metres.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Shape {
+pub enum Footprint {
     /// An ellipse with semi-axes `radii` along its own x and y, rotated by
     /// `angle` (radians, counter-clockwise).
     Ellipse { centre: [f32; 2], radii: [f32; 2], angle: f32 },
@@ -23,11 +23,11 @@ pub enum Shape {
 /// palm presses harder than the fingers, a cup rim shows uniformly.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Patch {
-    pub shape: Shape,
+    pub shape: Footprint,
     pub level: f32,
 }
 
-/// A [`Shape`] ready for many distance queries: no trigonometry or
+/// A [`Footprint`] ready for many distance queries: no trigonometry or
 /// division per point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Prepared {
@@ -38,7 +38,7 @@ pub enum Prepared {
 }
 
 impl Prepared {
-    /// See [`Shape::distance`].
+    /// See [`Footprint::distance`].
     #[inline]
     pub fn distance(&self, p: [f32; 2]) -> f32 {
         match *self {
@@ -77,7 +77,7 @@ fn length(v: [f32; 2]) -> f32 {
     (v[0] * v[0] + v[1] * v[1]).sqrt()
 }
 
-impl Shape {
+impl Footprint {
     /// Signed distance from `p` to the outline, metres: negative inside.
     ///
     /// Exact for capsules, rounded rectangles and rings. For ellipses it is
@@ -173,29 +173,29 @@ mod tests {
 
     #[test]
     fn distances_have_the_right_sign_and_size() {
-        let e = Shape::Ellipse { centre: [1.0, 1.0], radii: [0.2, 0.1], angle: std::f32::consts::FRAC_PI_2 };
+        let e = Footprint::Ellipse { centre: [1.0, 1.0], radii: [0.2, 0.1], angle: std::f32::consts::FRAC_PI_2 };
         assert!(e.distance([1.0, 1.0]) < 0.0);
         // Rotated a quarter turn: the long axis is now along y.
         assert!(e.distance([1.0, 1.19]) < 0.0);
         assert!(e.distance([1.19, 1.0]) > 0.0);
         assert!((e.distance([1.0, 1.3]) - 0.1).abs() < 0.01);
 
-        let c = Shape::Capsule { a: [0.0, 0.0], b: [1.0, 0.0], radius: 0.1 };
+        let c = Footprint::Capsule { a: [0.0, 0.0], b: [1.0, 0.0], radius: 0.1 };
         assert!((c.distance([0.5, 0.3]) - 0.2).abs() < 1e-6);
         assert!((c.distance([-0.3, 0.0]) - 0.2).abs() < 1e-6);
 
-        let r = Shape::RoundedRect { centre: [0.0, 0.0], half: [0.5, 0.2], angle: 0.0, corner: 0.05 };
+        let r = Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.5, 0.2], angle: 0.0, corner: 0.05 };
         assert!((r.distance([0.7, 0.0]) - 0.2).abs() < 1e-6);
         assert!((r.distance([0.0, -0.1]) + 0.1).abs() < 1e-6);
 
-        let ring = Shape::Ring { centre: [0.0, 0.0], radius: 0.04, half_width: 0.003 };
+        let ring = Footprint::Ring { centre: [0.0, 0.0], radius: 0.04, half_width: 0.003 };
         assert!(ring.distance([0.0, 0.0]) > 0.0);
         assert!(ring.distance([0.04, 0.0]) < 0.0);
     }
 
     #[test]
     fn bounds_contain_the_shape() {
-        let r = Shape::RoundedRect { centre: [0.0, 0.0], half: [0.5, 0.2], angle: 0.3, corner: 0.0 }
+        let r = Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.5, 0.2], angle: 0.3, corner: 0.0 }
             .placed([1.0, 2.0], 0.4);
         let [lo, hi] = r.bounds();
         for i in 0..100 {
