@@ -6,6 +6,7 @@
 //! the cluster cannot start, the cluster tests fail with the script's output:
 //! they never skip.
 
+use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::sync::OnceLock;
@@ -29,7 +30,7 @@ const STUDY: [&str; 11] = [
 ];
 
 /// How long a sweep may take on the local cluster before the test gives up.
-const WAIT: Duration = Duration::from_secs(300);
+const WAIT: Duration = Duration::from_mins(5);
 
 fn bin() -> Command {
     let mut c = Command::new(env!("CARGO_BIN_EXE_surfacelab"));
@@ -122,7 +123,8 @@ fn wait_until(jobs: &str, logs: &Path, what: &str, want: impl Fn(&[(String, Stri
             let mut out = String::new();
             for e in std::fs::read_dir(logs).into_iter().flatten().flatten() {
                 if e.path().extension().is_some_and(|x| x == "out") {
-                    out += &format!(
+                    let _ = write!(
+                        out,
                         "--- {}\n{}",
                         e.path().display(),
                         std::fs::read_to_string(e.path()).unwrap_or_default()
@@ -249,11 +251,10 @@ fn a_sweep_submitted_to_a_local_slurm_merges_to_the_unsharded_bytes() {
     let out = text(&o);
     assert!(o.status.success(), "--submit failed:\n{out}");
     // "submitted: array job A (3 tasks), merge job M (afterok:A)"
-    let ids: Vec<&str> = out
-        .lines()
-        .find_map(|l| l.strip_prefix("submitted: array job "))
-        .map(|l| l.split(|c: char| !c.is_ascii_digit()).filter(|s| !s.is_empty()).collect())
-        .unwrap_or_else(|| panic!("no job ids in:\n{out}"));
+    let ids: Vec<&str> = out.lines().find_map(|l| l.strip_prefix("submitted: array job ")).map_or_else(
+        || panic!("no job ids in:\n{out}"),
+        |l| l.split(|c: char| !c.is_ascii_digit()).filter(|s| !s.is_empty()).collect(),
+    );
     let (array, merge) = (ids[0], ids[2]);
     assert_eq!(ids[1], "3", "{out}");
     assert!(out.contains(&format!("merge job {merge} (afterok:{array})")), "{out}");
@@ -279,8 +280,7 @@ fn a_task_cancelled_while_running_resubmitted_alone_continues_its_shard() {
     let (array_sh, merge_sh) = (dir.join("slurm/array.sbatch"), dir.join("slurm/merge.sbatch"));
     let (array_sh, merge_sh) = (array_sh.to_str().expect("utf-8"), merge_sh.to_str().expect("utf-8"));
     let shard_csv = dir.join("shard-1/trials.csv");
-    let rows_written =
-        || std::fs::read(&shard_csv).map_or(0, |b| b.iter().filter(|&&c| c == b'\n').count().saturating_sub(1));
+    let rows_written = || std::fs::read_to_string(&shard_csv).map_or(0, |t| t.matches('\n').count().saturating_sub(1));
 
     // Submitted as the README's two sbatch lines do it; task 1 is cancelled
     // once it has written two of its 12 rows.

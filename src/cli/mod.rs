@@ -120,6 +120,7 @@ fn parse_seconds(s: &str) -> Result<f32, String> {
 
 #[derive(Debug, Args)]
 #[command(args_conflicts_with_subcommands = true)]
+#[expect(clippy::struct_excessive_bools, reason = "each bool is an on/off command-line flag")]
 pub struct StudyArgs {
     #[command(subcommand)]
     pub action: Option<StudyAction>,

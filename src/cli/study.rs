@@ -135,7 +135,7 @@ fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> anyhow::Result<E
 /// `study findings DIR`: findings.csv and seeds.png from `DIR/seed-1`,
 /// `DIR/seed-2`, ... (every consecutive seed folder holding a run.toml).
 fn findings(dir: &std::path::Path) -> anyhow::Result<ExitCode> {
-    let dirs: Vec<_> = (1..)
+    let dirs: Vec<_> = (1..=u32::MAX)
         .map(|k| study::seeds::seed_dir(dir, k))
         .take_while(|d| d.join(study::output::RUN_TOML).exists())
         .collect();

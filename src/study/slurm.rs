@@ -177,16 +177,13 @@ impl SlurmJob {
         let _ = writeln!(s, "exe={}", shell_quote(&self.exe)?);
         let _ = writeln!(s, "dir={}", shell_quote(&self.dir)?);
         let _ = writeln!(s, "task=\"${{SLURM_ARRAY_TASK_ID:?submit this script with sbatch (it is a job array)}}\"");
-        match self.seeds {
-            None => {
-                let _ = writeln!(s, "shard=\"$task\"");
-                let _ = writeln!(s, "study=\"$dir\"");
-            }
-            Some(_) => {
-                let _ = writeln!(s, "seed=$((task / {n} + 1))");
-                let _ = writeln!(s, "shard=$((task % {n}))");
-                let _ = writeln!(s, "study=\"$dir/seed-$seed\"");
-            }
+        if self.seeds.is_some() {
+            let _ = writeln!(s, "seed=$((task / {n} + 1))");
+            let _ = writeln!(s, "shard=$((task % {n}))");
+            let _ = writeln!(s, "study=\"$dir/seed-$seed\"");
+        } else {
+            let _ = writeln!(s, "shard=\"$task\"");
+            let _ = writeln!(s, "study=\"$dir\"");
         }
         let _ = writeln!(s, "echo \"surfacelab: task $task on $(hostname): shard $shard/{n} of $study\"");
         let _ = writeln!(
