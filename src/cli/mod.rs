@@ -135,6 +135,7 @@ fn parse_seconds(s: &str) -> Result<f32, String> {
 
 #[derive(Debug, Args)]
 #[command(args_conflicts_with_subcommands = true)]
+#[expect(clippy::struct_excessive_bools, reason = "each bool is an on/off command-line flag")]
 pub struct StudyArgs {
     #[command(subcommand)]
     pub action: Option<StudyAction>,
@@ -188,6 +189,22 @@ pub struct StudyArgs {
     /// OUT/seed-1 .. OUT/seed-N, then write OUT/findings.csv and OUT/seeds.png.
     #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..), conflicts_with_all = ["resume", "shard"])]
     pub seeds: Option<u32>,
+    /// Instead of running: fix run.toml, then write a Slurm job array of N
+    /// shards (OUT/slurm/array.sbatch) and its merge job (OUT/slurm/merge.sbatch).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..), conflicts_with_all = ["resume", "shard"])]
+    pub slurm: Option<u32>,
+    /// With --slurm: submit both scripts with sbatch (the merge after the array, afterok) and print the job ids.
+    #[arg(long, requires = "slurm")]
+    pub submit: bool,
+    /// With --slurm: the Slurm partition (#SBATCH --partition).
+    #[arg(long, value_name = "P", requires = "slurm", value_parser = crate::harness::study::slurm::parse_partition)]
+    pub partition: Option<String>,
+    /// With --slurm: each job's wall-clock limit, HH:MM:SS or D-HH:MM:SS (#SBATCH --time).
+    #[arg(long, value_name = "HH:MM:SS", requires = "slurm", value_parser = clap::value_parser!(crate::harness::study::slurm::SlurmTime))]
+    pub time: Option<crate::harness::study::slurm::SlurmTime>,
+    /// With --slurm: CPUs per array task (#SBATCH --cpus-per-task); the task runs that many workers.
+    #[arg(long, value_name = "C", requires = "slurm", value_parser = clap::value_parser!(u32).range(1..))]
+    pub cpus: Option<u32>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -199,6 +216,12 @@ pub enum StudyAction {
         /// Shard folders.
         #[arg(required = true)]
         dirs: Vec<PathBuf>,
+    },
+    /// Write DIR/findings.csv and DIR/seeds.png from the studies DIR/seed-1, DIR/seed-2, ...
+    /// (what `study --seeds N` writes last; the merge job of `--seeds N --slurm M` runs it).
+    Findings {
+        /// The folder holding seed-1, seed-2, ...
+        dir: PathBuf,
     },
 }
 
@@ -343,6 +366,11 @@ fn headless_main() -> anyhow::Result<ExitCode> {
         no_progress: false,
         frames: false,
         seeds: None,
+        slurm: None,
+        submit: false,
+        partition: None,
+        time: None,
+        cpus: None,
     };
     study::run(&args)
 }

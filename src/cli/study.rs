@@ -1,10 +1,12 @@
 //! `surfacelab study`: scripted or replayed participants → trials.csv,
 //! summary.csv, anova.csv, pairwise.csv, strategies.csv, figure.png/svg,
 //! report.md/html and
-//! run.toml in one folder; with `--seeds N`, N such folders and findings.csv.
+//! run.toml in one folder; with `--seeds N`, N such folders and findings.csv;
+//! with `--slurm N`, the folders and a Slurm job array that fills them.
 
 use super::{StudyAction, StudyArgs};
 use crate::harness::participant::{ReplayRunner, ScriptedRunner};
+use crate::harness::study::slurm::{self, SlurmJob};
 use crate::harness::study::{self, RunFile, RunOptions, Shard, StudyDesign, TrialRunner};
 use anyhow::Context;
 use std::process::ExitCode;
@@ -14,6 +16,12 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
         let m = study::merge(out, dirs)?;
         println!("surfacelab study merge: {m:?}");
         return Ok(ExitCode::SUCCESS);
+    }
+    if let Some(StudyAction::Findings { dir }) = &args.action {
+        return findings(dir);
+    }
+    if let Some(shards) = args.slurm {
+        return run_slurm(args, shards);
     }
     let options =
         RunOptions { jobs: args.jobs, progress: !args.no_progress, shard: args.shard, ..RunOptions::default() };
@@ -120,6 +128,83 @@ fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> anyhow::Result<E
 /// `--shard i/n`: checked by clap, so a bad value names the flag and exits 2.
 pub fn parse_shard(s: &str) -> Result<Shard, String> {
     s.parse().map_err(|e: study::StudyError| e.to_string())
+}
+
+/// `study findings DIR`: findings.csv and seeds.png from `DIR/seed-1`,
+/// `DIR/seed-2`, ... (every consecutive seed folder holding a run.toml).
+fn findings(dir: &std::path::Path) -> anyhow::Result<ExitCode> {
+    let dirs: Vec<_> = (1..=u32::MAX)
+        .map(|k| study::seeds::seed_dir(dir, k))
+        .take_while(|d| d.join(study::output::RUN_TOML).exists())
+        .collect();
+    if dirs.is_empty() {
+        return Err(study::StudyError::mismatch(dir, "no seed-1/run.toml: not a `study --seeds` folder").into());
+    }
+    let rows = study::seeds::summarize_seeds(dir, &dirs)?;
+    println!("findings over {} seeds (reproduced / seeds that could test it):", dirs.len());
+    for r in &rows {
+        println!("  {:32} {}/{}", r.finding, r.reproduced, r.seeds);
+    }
+    println!("  files in {}: findings.csv, seeds.png", dir.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+/// `--slurm N`: the design fixed in run.toml files and the two batch scripts
+/// (see `study::slurm`); with `--submit`, both submitted.
+fn run_slurm(args: &StudyArgs, shards: u32) -> anyhow::Result<ExitCode> {
+    let design = design_from(args)?;
+    design.validate()?;
+    if let Some(note) = design.balance_note() {
+        eprintln!("note: {note}");
+    }
+    if shards > design.participants {
+        eprintln!(
+            "note: {shards} shards for {} participants: shards split by participant, so {} of them have no trials",
+            design.participants,
+            shards - design.participants
+        );
+    }
+    let dir = std::path::absolute(&args.out).with_context(|| format!("--out {}", args.out.display()))?;
+    let exe = std::env::current_exe().context("cannot find the path of the running surfacelab binary")?;
+    let job = SlurmJob {
+        exe,
+        dir,
+        shards,
+        seeds: args.seeds,
+        partition: args.partition.clone(),
+        time: args.time,
+        cpus: args.cpus,
+    };
+    slurm::prepare(&job, &design).with_context(|| format!("--out {}", args.out.display()))?;
+    let (array, merge) = (job.array_script_path(), job.merge_script_path());
+    println!(
+        "surfacelab study: {} array tasks ({} shard{} per study{}) and a merge job written:",
+        job.tasks(),
+        shards,
+        if shards == 1 { "" } else { "s" },
+        args.seeds.map_or_else(String::new, |s| format!(", {s} studies"))
+    );
+    println!("  {}\n  {}", array.display(), merge.display());
+    if args.submit {
+        let ids = slurm::submit(&job)?;
+        println!(
+            "submitted: array job {} ({} tasks), merge job {} (afterok:{})",
+            ids.array,
+            job.tasks(),
+            ids.merge,
+            ids.array
+        );
+        println!(
+            "  watch: squeue -j {},{}   failed tasks: sacct -X -j {} --format=JobID,State,ExitCode",
+            ids.array, ids.merge, ids.array
+        );
+    } else {
+        let q = |p: &std::path::Path| slurm::shell_quote(p).unwrap_or_else(|_| p.display().to_string());
+        println!("submit with:");
+        println!("  array=$(sbatch --parsable {})", q(&array));
+        println!("  sbatch --dependency=afterok:${{array%%;*}} {}", q(&merge));
+    }
+    Ok(ExitCode::SUCCESS)
 }
 
 fn runner_for(args: &StudyArgs, design: StudyDesign, out: &std::path::Path) -> anyhow::Result<Box<dyn TrialRunner>> {

@@ -14,6 +14,7 @@ pub mod report;
 pub mod runner;
 pub mod seeds;
 pub mod seeds_figure;
+pub mod slurm;
 pub mod strategies;
 pub mod summary;
 pub mod trial;
