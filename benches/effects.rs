@@ -41,12 +41,12 @@ fn bench_pair(c: &mut Criterion, group: &str, runs: Vec<(&str, Scene, EffectSet)
         g.bench_function(label, |b| {
             b.iter(|| {
                 k += 1;
-                if w.object_count() > 0 && k.is_multiple_of(120) {
-                    if let Some(mut body) = w.push_object(ObjectId::new(0))
-                        && body.is_dynamic()
-                    {
-                        body.apply_impulse(glam::Vec3::new(0.01, 0.005, 0.0));
-                    }
+                if w.object_count() > 0
+                    && k.is_multiple_of(120)
+                    && let Some(mut body) = w.push_object(ObjectId::new(0))
+                    && body.is_dynamic()
+                {
+                    body.apply_impulse(glam::Vec3::new(0.01, 0.005, 0.0));
                 }
                 w.step();
             });

@@ -122,8 +122,7 @@ impl HybridTechnique {
                     .translation(center)
                     .gravity_scale(gravity_scale_for(mass, weight))
                     .lock_rotations()
-                    .can_sleep(false)
-                    .build(),
+                    .can_sleep(false),
             );
             let col = ColliderBuilder::capsule_z(half, r)
                 .mass(mass)

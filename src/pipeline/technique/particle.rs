@@ -197,8 +197,7 @@ impl ParticleTechnique {
                 .linvel(p.velocity)
                 .gravity_scale(gravity_scale_for(p.mass, p.weight))
                 .lock_rotations()
-                .can_sleep(false)
-                .build(),
+                .can_sleep(false),
         );
         let col = shape
             .mass(p.mass)
