@@ -12,7 +12,7 @@ use rapier3d::prelude::PhysicsWorld;
 use std::time::Duration;
 use surfacelab::pipeline::surface::{Hand, HandKind};
 use surfacelab::pipeline::technique::TechniqueKind;
-use surfacelab::pipeline::world::World;
+use surfacelab::pipeline::world::{ObjectId, World};
 use surfacelab::scene::{self, Effect, EffectSet, Scene};
 use surfacelab::session::{Session, SessionOptions};
 
@@ -41,13 +41,12 @@ fn bench_pair(c: &mut Criterion, group: &str, runs: Vec<(&str, Scene, EffectSet)
         g.bench_function(label, |b| {
             b.iter(|| {
                 k += 1;
-                if w.object_count() > 0 && k.is_multiple_of(120) {
-                    let h = w.object_body(0);
-                    if let Some(body) = w.physics_mut().bodies.get_mut(h)
-                        && body.is_dynamic()
-                    {
-                        body.apply_impulse(glam::Vec3::new(0.01, 0.005, 0.0), true);
-                    }
+                if w.object_count() > 0
+                    && k.is_multiple_of(120)
+                    && let Some(mut body) = w.push_object(ObjectId::new(0))
+                    && body.is_dynamic()
+                {
+                    body.apply_impulse(glam::Vec3::new(0.01, 0.005, 0.0));
                 }
                 w.step();
             });

@@ -7,20 +7,19 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use glam::Vec3;
-use surfacelab::pipeline::world::World;
+use surfacelab::pipeline::world::{ObjectId, World};
 use surfacelab::scene::{self, EffectSet};
 
 fn stir(w: &mut World, k: usize) {
     let t = k as f32 / 60.0;
     for i in 0..w.object_count() {
-        let h = w.object_body(i);
-        if let Some(b) = w.physics_mut().bodies.get_mut(h)
+        if let Some(mut b) = w.push_object(ObjectId::new(i))
             && b.is_dynamic()
         {
             let phase = t * 1.5 + i as f32;
             let f = Vec3::new(phase.cos(), phase.sin(), 0.0) * (b.mass() * 4.0);
-            b.reset_forces(false);
-            b.add_force(f, true);
+            b.reset_forces();
+            b.add_force(f);
         }
     }
 }

@@ -8,7 +8,7 @@
 
 use glam::Vec3;
 use rapier3d::prelude::*;
-use surfacelab::pipeline::world::{Layer, World};
+use surfacelab::pipeline::world::{Layer, TechniqueBody, World};
 use surfacelab::scene;
 
 const SCENE: &str = r#"
@@ -49,42 +49,30 @@ fn press(fresh: bool, steps: usize) -> Vec<f32> {
     }
     let dt = world.dt();
     let boxc = world.object_collider(0);
-    let mut bodies: Vec<RigidBodyHandle> = Vec::new();
+    let mut bodies: Vec<TechniqueBody> = Vec::new();
     let mut out = Vec::new();
     for step in 0..steps {
         let top = world.object_pose(0).position.z + 0.015;
-        let physics = world.physics_mut();
         if fresh || step == 0 {
             for b in bodies.drain(..) {
-                physics.bodies.remove(
-                    b,
-                    &mut physics.islands,
-                    &mut physics.colliders,
-                    &mut physics.impulse_joints,
-                    &mut physics.multibody_joints,
-                    &mut physics.soft_bodies,
-                    true,
-                );
+                world.remove_body(b);
             }
             for k in 0..N {
-                let body = physics.bodies.insert(
-                    RigidBodyBuilder::dynamic()
-                        .translation(ring(top, k))
-                        .gravity_scale(WEIGHT / (MASS * 9.81))
-                        .lock_rotations()
-                        .build(),
-                );
+                let body = RigidBodyBuilder::dynamic()
+                    .translation(ring(top, k))
+                    .gravity_scale(WEIGHT / (MASS * 9.81))
+                    .lock_rotations()
+                    .build();
                 let col = ColliderBuilder::ball(R)
                     .mass(MASS)
                     .friction(1.5)
                     .collision_groups(Layer::Particle.groups())
                     .build();
-                physics.colliders.insert_with_parent(col, body, &mut physics.bodies);
-                bodies.push(body);
+                bodies.push(world.spawn_body(body, col));
             }
         } else {
             for (k, &h) in bodies.iter().enumerate() {
-                let b = physics.bodies.get_mut(h).expect("particle");
+                let b = world.technique_body_mut(h).expect("particle");
                 b.set_position(Pose::from_translation(ring(top, k)), true);
                 b.set_linvel(Vec3::ZERO, true);
             }
@@ -93,7 +81,7 @@ fn press(fresh: bool, steps: usize) -> Vec<f32> {
         let physics = world.physics();
         let impulse: f32 = bodies
             .iter()
-            .filter_map(|&h| physics.narrow_phase.contact_pair(physics.bodies[h].colliders()[0], boxc))
+            .filter_map(|&h| physics.narrow_phase.contact_pair(physics.bodies[h.handle()].colliders()[0], boxc))
             .flat_map(|pair| pair.manifolds().iter().flat_map(|m| m.points.iter().map(|p| p.data.impulse)))
             .sum();
         out.push(impulse / (N as f32 * WEIGHT * dt));

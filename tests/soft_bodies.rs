@@ -10,7 +10,7 @@ use glam::{Vec2, Vec3};
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::surface::{Hand, HandKind};
 use surfacelab::pipeline::technique::TechniqueKind;
-use surfacelab::pipeline::world::{World, WorldError};
+use surfacelab::pipeline::world::{ObjectId, World, WorldError};
 use surfacelab::scene::{self, Effect, EffectSet, Goal, Scene};
 use surfacelab::session::{Session, SessionOptions};
 
@@ -306,11 +306,10 @@ fn a_flat_hand_stops_a_rolling_ball() {
     let scene = task("ball");
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy] {
         let mut s = session(&scene, kind);
-        let h = s.world().object_body(0);
         let r = 0.03;
-        if let Some(b) = s.world_mut().physics_mut().bodies.get_mut(h) {
-            b.set_linvel(Vec3::new(0.5, 0.0, 0.0), true);
-            b.set_angvel(Vec3::new(0.0, 0.5 / r, 0.0), true);
+        if let Some(mut b) = s.world_mut().push_object(ObjectId::new(0)) {
+            b.set_linvel(Vec3::new(0.5, 0.0, 0.0));
+            b.set_angvel(Vec3::new(0.0, 0.5 / r, 0.0));
         }
         // Roll for 0.4 s, then lay the palm where the ball's top appears.
         while s.time() < 0.4 {

@@ -11,6 +11,7 @@ use rand_chacha::ChaCha8Rng;
 use surfacelab::contact::{self, ConvexPolygon};
 use surfacelab::pipeline::surface::{Hand, HandKind};
 use surfacelab::pipeline::technique::{TechniqueConfig, TechniqueKind};
+use surfacelab::pipeline::world::ObjectId;
 use surfacelab::scene;
 use surfacelab::session::{Session, SessionOptions};
 
@@ -156,8 +157,7 @@ fn a_ball_flicked_at_40_m_per_s_at_a_thin_wall_does_not_tunnel() {
         &case,
         STEPS,
         |s| {
-            let h = s.world().object_body(0);
-            s.world_mut().physics_mut().bodies[h].set_linvel(Vec3::new(40.0, 0.0, 0.0), true);
+            s.world_mut().push_object(ObjectId::new(0)).expect("the ball").set_linvel(Vec3::new(40.0, 0.0, 0.0));
         },
         &mut |_, s: &Session| {
             let x = s.world().object_pose(0).position.x;

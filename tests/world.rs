@@ -1,19 +1,18 @@
 //! The physics world: determinism, ray casts, and effect gating.
 
 use glam::{Vec2, Vec3};
-use surfacelab::pipeline::world::World;
+use surfacelab::pipeline::world::{ObjectId, World};
 use surfacelab::scene::{self, EffectSet};
 
 fn push_pattern(world: &mut World, step: usize) {
     // A fixed, input-like sequence of forces on a few objects.
     let n = world.object_count();
     let i = step % n;
-    let h = world.object_body(i);
     let f = Vec3::new(((step * 7) % 5) as f32 - 2.0, ((step * 3) % 7) as f32 - 3.0, 0.0) * 0.5;
-    if let Some(b) = world.physics_mut().bodies.get_mut(h)
+    if let Some(mut b) = world.push_object(ObjectId::new(i))
         && b.is_dynamic()
     {
-        b.add_force(f, true);
+        b.add_force(f);
     }
 }
 

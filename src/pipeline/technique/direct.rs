@@ -8,7 +8,7 @@ use super::surface_point::{clamp_len, table_point, table_velocity};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::Blob;
-use crate::pipeline::world::{World, WorldError};
+use crate::pipeline::world::{ObjectId, World, WorldError};
 use glam::Vec3;
 use rapier3d::prelude::SoftBodyHandle;
 
@@ -75,7 +75,7 @@ impl Technique for DirectForce {
                 }
                 under.sort_unstable_by_key(|&(h, i)| (h.0.into_raw_parts(), i));
                 for group in under.chunk_by(|a, b| a.0 == b.0) {
-                    let Some(b) = world.physics_mut().soft_bodies.get_mut(group[0].0) else { continue };
+                    let Some(mut b) = world.push_soft(group[0].0) else { continue };
                     let slip = group.iter().fold(Vec3::ZERO, |acc, &(_, i)| {
                         let v = b.particles()[i as usize].velocity();
                         acc + v_hand.extend(0.0) - Vec3::new(v.x, v.y, 0.0)
@@ -86,7 +86,7 @@ impl Technique for DirectForce {
                     let share = self.config.direct_gain * b.mass() / group.len() as f32;
                     for &(_, i) in group {
                         let m = b.particles()[i as usize].mass();
-                        b.add_particle_force(i as usize, slip * share.min(MAX_SERVO * m / input.dt), true);
+                        b.add_particle_force(i, slip * share.min(MAX_SERVO * m / input.dt));
                     }
                 }
                 self.soft_touched.extend(under);
@@ -94,8 +94,7 @@ impl Technique for DirectForce {
                 continue;
             }
             let Some(obj) = hit.object else { continue };
-            let h = world.object_body(obj);
-            let Some(body) = world.physics_mut().bodies.get_mut(h) else { continue };
+            let Some(mut body) = world.push_object(ObjectId::new(obj)) else { continue };
             if !body.is_dynamic() {
                 continue;
             }
@@ -104,7 +103,7 @@ impl Technique for DirectForce {
             // tangential velocity; no static grip, no normal force.
             let rel = v_hand.extend(0.0) - Vec3::new(v_point.x, v_point.y, 0.0);
             let force = rel * (self.config.direct_gain * body.mass());
-            body.add_force_at_point(force, hit.point, true);
+            body.add_force_at_point(force, hit.point);
             self.touched.push(hit.point);
         }
         Ok(())
@@ -113,17 +112,13 @@ impl Technique for DirectForce {
     fn after_step(&mut self, world: &mut World) {
         // Forces are per step: clear what we added so they do not accumulate.
         for i in 0..world.object_count() {
-            let h = world.object_body(i);
-            if let Some(b) = world.physics_mut().bodies.get_mut(h) {
-                b.reset_forces(false);
-                b.reset_torques(false);
+            if let Some(mut b) = world.push_object(ObjectId::new(i)) {
+                b.reset_forces();
             }
         }
         // Every piece: a tear this step may have carried a force to a new one.
         if !std::mem::take(&mut self.soft_touched).is_empty() {
-            for (_, b) in world.physics_mut().soft_bodies.iter_mut() {
-                b.reset_forces(false);
-            }
+            world.reset_soft_forces();
         }
     }
 

@@ -29,12 +29,12 @@
 //!   lets go, as a finger slides off.
 
 use super::particle::{ParticleTechnique, REFERENCE_SPACING};
-use super::proxy::{gravity_scale_for, pressure_weight, remove_body};
+use super::proxy::{gravity_scale_for, pressure_weight};
 use super::surface_point::{at_height, clamp_len, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{Contact, FlowInterest};
-use crate::pipeline::world::{Layer, World, WorldError};
+use crate::pipeline::world::{Layer, TechniqueBody, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::BTreeMap;
@@ -53,7 +53,7 @@ const GRIP_SLIP: f32 = 0.04;
 
 #[derive(Debug, Clone, Copy)]
 struct Grip {
-    body: RigidBodyHandle,
+    body: TechniqueBody,
     /// Offset from the contact's weighted centroid on the table plane (m),
     /// in the contact's frame at touch-down.
     offset: Vec2,
@@ -117,14 +117,12 @@ impl HybridTechnique {
             }
             let weight = pressure_weight(config, config.particle_weight, f32::from(e.grey)) * share;
             let mass = config.particle_mass * share;
-            let physics = world.physics_mut();
-            let body = physics.bodies.insert(
+            let body = RigidBody::from(
                 RigidBodyBuilder::dynamic()
                     .translation(center)
                     .gravity_scale(gravity_scale_for(mass, weight))
                     .lock_rotations()
-                    .can_sleep(false)
-                    .build(),
+                    .can_sleep(false),
             );
             let col = ColliderBuilder::capsule_z(half, r)
                 .mass(mass)
@@ -133,7 +131,7 @@ impl HybridTechnique {
                 .restitution(0.0)
                 .collision_groups(Layer::Particle.groups())
                 .build();
-            physics.colliders.insert_with_parent(col, body, &mut physics.bodies);
+            let body = world.spawn_body(body, col);
             held.grips.push(Grip { body, offset: p - centroid, depth: hit.point.z });
         }
         held
@@ -167,7 +165,7 @@ impl Technique for HybridTechnique {
             let targets: Vec<Vec2> = held.grips.iter().map(|g| Self::target(world, input.sensor, c, held, g)).collect();
             let mut slipped = Vec::new();
             for (k, (g, target)) in held.grips.iter().zip(targets).enumerate() {
-                let Some(b) = world.physics_mut().bodies.get_mut(g.body) else { continue };
+                let Some(b) = world.technique_body_mut(g.body) else { continue };
                 let pos = b.translation().truncate();
                 if (target - pos).length() > GRIP_SLIP {
                     slipped.push(k);
@@ -181,14 +179,14 @@ impl Technique for HybridTechnique {
             }
             for k in slipped.into_iter().rev() {
                 let g = held.grips.remove(k);
-                remove_body(world, g.body);
+                world.remove_body(g.body);
             }
         }
         let gone: Vec<u32> = self.held.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in gone {
             if let Some(held) = self.held.remove(&id) {
                 for g in held.grips {
-                    remove_body(world, g.body);
+                    world.remove_body(g.body);
                 }
             }
         }
@@ -199,7 +197,7 @@ impl Technique for HybridTechnique {
         self.particles.after_step(world);
         self.grip_positions.clear();
         for g in self.held.values().flat_map(|h| &h.grips) {
-            if let Some(b) = world.physics().bodies.get(g.body) {
+            if let Some(b) = world.technique_body(g.body) {
                 self.grip_positions.push(b.translation());
             }
         }
@@ -222,7 +220,7 @@ impl Technique for HybridTechnique {
         self.particles.clear(world);
         for (_, held) in std::mem::take(&mut self.held) {
             for g in held.grips {
-                remove_body(world, g.body);
+                world.remove_body(g.body);
             }
         }
         self.grip_positions.clear();

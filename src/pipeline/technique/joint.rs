@@ -27,11 +27,10 @@
 //! `joint_break_force`. Several contacts grab several particles, so two hands
 //! pulling apart stretch (and may tear) the sheet between them.
 
-use super::proxy::remove_body;
 use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::vision::Contact;
-use crate::pipeline::world::{Layer, World, WorldError};
+use crate::pipeline::world::{Layer, ObjectId, TechniqueBody, TechniqueJoint, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::{BTreeMap, BTreeSet};
@@ -46,9 +45,9 @@ const PRISM_TOUCH_HEIGHT: f32 = 0.015;
 
 #[derive(Debug, Clone, Copy)]
 struct Grab {
-    anchor: RigidBodyHandle,
-    joint: ImpulseJointHandle,
-    object: usize,
+    anchor: TechniqueBody,
+    joint: TechniqueJoint,
+    object: ObjectId,
     /// Anchor point in the object's local frame.
     local: Vec3,
     /// Height the anchor moves at (the touched surface).
@@ -62,7 +61,7 @@ struct Grab {
 /// particles and may move it to another piece; the attachment follows).
 #[derive(Debug, Clone, Copy)]
 struct SoftGrab {
-    anchor: RigidBodyHandle,
+    anchor: TechniqueBody,
     /// Height the anchor moves at (the touched surface).
     z: f32,
 }
@@ -75,8 +74,7 @@ enum Hold {
 
 #[derive(Debug, Clone, Copy)]
 struct Pusher {
-    body: RigidBodyHandle,
-    collider: ColliderHandle,
+    body: TechniqueBody,
     base_z: f32,
     /// Share of the contact's hull the prism spans (about its centre): less
     /// than 1 while the whole hull would overlap an object.
@@ -115,63 +113,52 @@ impl JointTechnique {
     fn try_grab(&self, world: &mut World, target: Vec2, v_hand: Vec2) -> Option<Hold> {
         let hit = world.cast_contact_ray(target)?;
         if let Some((h, particle)) = hit.soft {
-            let physics = world.physics_mut();
-            let at = physics.soft_bodies.get(h)?.particle_position(particle as usize);
-            let anchor = physics.bodies.insert(RigidBodyBuilder::kinematic_position_based().translation(at).build());
-            physics.soft_bodies.get_mut(h)?.attach_particle(particle as usize, anchor, &physics.bodies);
+            let at = world.soft_particle_position(h, particle)?;
+            let anchor = world.spawn_anchor(at);
+            world.attach_particle(h, particle, anchor)?;
             return Some(Hold::Soft(SoftGrab { anchor, z: at.z }));
         }
-        let object = hit.object?;
-        let h = world.object_body(object);
-        let physics = world.physics_mut();
-        let body = physics.bodies.get(h)?;
+        let object = ObjectId::new(hit.object?);
+        let body = world.object_rigid_body(object)?;
         if !body.is_dynamic() {
             return None;
         }
         let local = body.position().inverse_transform_point(hit.point);
-        let anchor = physics.bodies.insert(RigidBodyBuilder::kinematic_position_based().translation(hit.point).build());
+        let anchor = world.spawn_anchor(hit.point);
         let joint = SpringJointBuilder::new(0.0, self.config.joint_stiffness, self.config.joint_damping)
             .local_anchor1(Vec3::ZERO)
             .local_anchor2(local)
             .build();
-        let joint = physics.impulse_joints.insert(anchor, h, joint, true);
+        let joint = world.attach(anchor, object, joint)?;
         Some(Hold::Object(Grab { anchor, joint, object, local, z: hit.point.z, v_hand }))
     }
 
     /// The soft particle held by `anchor` (its position) and the force (N)
     /// the attachment applied over the last step; `None` once it is gone.
-    fn soft_held(world: &World, anchor: RigidBodyHandle, dt: f32) -> Option<(Vec3, f32)> {
+    fn soft_held(world: &World, anchor: TechniqueBody, dt: f32) -> Option<(Vec3, f32)> {
         world.physics().soft_bodies.iter().find_map(|(_, b)| {
-            let a = b.particle_attachments().iter().find(|a| a.body == anchor)?;
+            let a = b.particle_attachments().iter().find(|a| a.body == anchor.handle())?;
             Some((b.particle_position(a.particle as usize), a.impulse().length() / dt))
         })
     }
 
     fn release_soft(world: &mut World, g: SoftGrab) {
-        let physics = world.physics_mut();
-        for (_, b) in physics.soft_bodies.iter_mut() {
-            let held: Vec<u32> =
-                b.particle_attachments().iter().filter(|a| a.body == g.anchor).map(|a| a.particle).collect();
-            for p in held {
-                b.detach_particle(p as usize);
-            }
-        }
-        remove_body(world, g.anchor);
+        world.detach_particles(g.anchor);
+        world.remove_body(g.anchor);
     }
 
     fn release(world: &mut World, g: Grab) {
-        world.physics_mut().impulse_joints.remove(g.joint, true);
-        remove_body(world, g.anchor);
+        world.remove_joint(g.joint);
+        world.remove_body(g.anchor);
         // No slingshot: the object leaves with the hand's velocity, not with
         // energy stored in the stretched spring.
-        let h = world.object_body(g.object);
-        if let Some(b) = world.physics_mut().bodies.get_mut(h) {
+        if let Some(mut b) = world.push_object(g.object) {
             let v = b.linvel();
             let cap = g.v_hand.length() * 1.2 + 0.05;
             let horiz = Vec2::new(v.x, v.y);
             if horiz.length() > cap {
                 let c = clamp_len(horiz, cap);
-                b.set_linvel(Vec3::new(c.x, c.y, v.z), true);
+                b.set_linvel(Vec3::new(c.x, c.y, v.z));
             }
         }
     }
@@ -180,7 +167,7 @@ impl JointTechnique {
         let max_step = self.config.max_contact_speed * input.dt;
         if let Some(mut p) = self.pushers.get(&c.id).copied() {
             let (target, shape) = pusher_shape(world, c, input, screen, p.base_z, p.scale);
-            let cur = world.physics().bodies.get(p.body).map_or(target.extend(p.base_z), RigidBody::translation);
+            let cur = world.technique_body(p.body).map_or(target.extend(p.base_z), RigidBody::translation);
             let next = (cur.truncate() + clamp_len(target - cur.truncate(), max_step)).extend(p.base_z);
             // Grow back towards the whole hull only where that overlaps nothing.
             let grown = PRISM_SCALES.iter().copied().rev().find(|&k| k > p.scale).unwrap_or(p.scale);
@@ -196,11 +183,10 @@ impl JointTechnique {
             } else {
                 shape
             };
-            let physics = world.physics_mut();
-            if let Some(b) = physics.bodies.get_mut(p.body) {
+            if let Some(b) = world.technique_body_mut(p.body) {
                 b.set_next_kinematic_translation(next);
             }
-            if let Some(col) = physics.colliders.get_mut(p.collider) {
+            if let Some(col) = world.technique_collider_mut(p.body) {
                 col.set_shape(shape);
             }
         } else {
@@ -216,16 +202,13 @@ impl JointTechnique {
             }) else {
                 return;
             };
-            let physics = world.physics_mut();
-            let body = physics
-                .bodies
-                .insert(RigidBodyBuilder::kinematic_position_based().translation(target.extend(base_z)).build());
+            let body = RigidBodyBuilder::kinematic_position_based().translation(target.extend(base_z)).build();
             let col = ColliderBuilder::new(shape)
                 .friction(self.config.friction)
                 .collision_groups(Layer::Proxy.groups())
                 .build();
-            let collider = physics.colliders.insert_with_parent(col, body, &mut physics.bodies);
-            self.pushers.insert(c.id, Pusher { body, collider, base_z, scale });
+            let body = world.spawn_body(body, col);
+            self.pushers.insert(c.id, Pusher { body, base_z, scale });
         }
     }
 }
@@ -332,10 +315,9 @@ impl Technique for JointTechnique {
             if let Some(g) = self.soft_grabs.get(&c.id).copied() {
                 let goal = at_height(world, target, g.z);
                 let held = Self::soft_held(world, g.anchor, dt);
-                let physics = world.physics_mut();
-                let cur = physics.bodies.get(g.anchor).map_or(Vec3::ZERO, RigidBody::translation);
+                let cur = world.technique_body(g.anchor).map_or(Vec3::ZERO, RigidBody::translation);
                 let next = cur.truncate() + clamp_len(goal - cur.truncate(), max_step);
-                if let Some(a) = physics.bodies.get_mut(g.anchor) {
+                if let Some(a) = world.technique_body_mut(g.anchor) {
                     a.set_next_kinematic_translation(next.extend(g.z));
                 }
                 if held.is_none_or(|(_, force)| force > self.config.joint_break_force) {
@@ -347,18 +329,18 @@ impl Technique for JointTechnique {
             }
             if let Some(mut g) = self.grabs.get(&c.id).copied() {
                 g.v_hand = v_hand;
-                let object_body = world.object_body(g.object);
                 let goal = at_height(world, target, g.z);
-                let physics = world.physics_mut();
-                let cur = physics.bodies.get(g.anchor).map_or(Vec3::ZERO, RigidBody::translation);
+                let cur = world.technique_body(g.anchor).map_or(Vec3::ZERO, RigidBody::translation);
                 let next = cur.truncate() + clamp_len(goal - cur.truncate(), max_step);
-                if let Some(a) = physics.bodies.get_mut(g.anchor) {
+                if let Some(a) = world.technique_body_mut(g.anchor) {
                     a.set_next_kinematic_translation(next.extend(g.z));
                 }
                 // The spring's pull: stiffness × stretch. Past the break force it snaps.
-                let obj = physics.bodies.get(object_body).map(|b| b.position().transform_point(g.local));
+                let obj = world.object_rigid_body(g.object).map(|b| b.position().transform_point(g.local));
                 let stretch = obj.map_or(0.0, |p| (p - next.extend(g.z)).length());
-                if self.config.joint_stiffness * stretch > self.config.joint_break_force || !world.is_active(g.object) {
+                if self.config.joint_stiffness * stretch > self.config.joint_break_force
+                    || !world.is_active(g.object.index())
+                {
                     self.grabs.remove(&c.id);
                     self.broken.insert(c.id);
                     Self::release(world, g);
@@ -394,7 +376,7 @@ impl Technique for JointTechnique {
         let lifted: Vec<u32> = self.pushers.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in lifted {
             if let Some(p) = self.pushers.remove(&id) {
-                remove_body(world, p.body);
+                world.remove_body(p.body);
             }
         }
         self.broken.retain(|id| seen.contains(id));
@@ -402,18 +384,17 @@ impl Technique for JointTechnique {
     }
 
     fn feedback(&self, world: &World) -> Feedback {
-        let physics = world.physics();
         let mut lines: Vec<(Vec3, Vec3)> = self
             .grabs
             .values()
             .filter_map(|g| {
-                let a = physics.bodies.get(g.anchor)?.translation();
-                let o = physics.bodies.get(world.object_body(g.object))?.position().transform_point(g.local);
+                let a = world.technique_body(g.anchor)?.translation();
+                let o = world.object_rigid_body(g.object)?.position().transform_point(g.local);
                 Some((a, o))
             })
             .collect();
         lines.extend(self.soft_grabs.values().filter_map(|g| {
-            let a = physics.bodies.get(g.anchor)?.translation();
+            let a = world.technique_body(g.anchor)?.translation();
             let (p, _) = Self::soft_held(world, g.anchor, world.dt())?;
             Some((a, p))
         }));
@@ -440,7 +421,7 @@ impl Technique for JointTechnique {
             Self::release_soft(world, g);
         }
         for (_, p) in std::mem::take(&mut self.pushers) {
-            remove_body(world, p.body);
+            world.remove_body(p.body);
         }
         self.broken.clear();
     }

@@ -17,12 +17,12 @@
 //! and a particle never slides along a surface faster than
 //! [`MAX_SURFACE_SPEEDUP`] times the hand moves over the table.
 
-use super::proxy::{gravity_scale_for, pressure_weight, remove_body, soft_mass};
+use super::proxy::{gravity_scale_for, pressure_weight, soft_mass};
 use super::surface_point::{clamp_len, project_flow, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::FlowInterest;
-use crate::pipeline::world::{Layer, Reach, World, WorldError};
+use crate::pipeline::world::{Layer, Reach, TechniqueBody, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::HashMap;
@@ -55,7 +55,7 @@ const MATCH_PX: f32 = 3.0;
 
 #[derive(Debug, Clone, Copy)]
 struct Slot {
-    body: RigidBodyHandle,
+    body: TechniqueBody,
     /// Pixel position it sat on last frame.
     px: [f32; 2],
     active: bool,
@@ -183,23 +183,21 @@ impl ParticleTechnique {
         (out, culled)
     }
 
-    fn new_body(&self, world: &mut World, p: &Placement) -> RigidBodyHandle {
+    fn new_body(&self, world: &mut World, p: &Placement) -> TechniqueBody {
         let r = self.config.particle_radius;
         let shape = if self.config.particle_capsules {
             ColliderBuilder::capsule_z(r * 2.0, r)
         } else {
             ColliderBuilder::ball(r)
         };
-        let physics = world.physics_mut();
         // Rotations locked: a rolling ball would transmit no friction.
-        let body = physics.bodies.insert(
+        let body = RigidBody::from(
             RigidBodyBuilder::dynamic()
                 .translation(p.center)
                 .linvel(p.velocity)
                 .gravity_scale(gravity_scale_for(p.mass, p.weight))
                 .lock_rotations()
-                .can_sleep(false)
-                .build(),
+                .can_sleep(false),
         );
         let col = shape
             .mass(p.mass)
@@ -208,8 +206,7 @@ impl ParticleTechnique {
             .restitution(0.0)
             .collision_groups(Layer::Particle.groups())
             .build();
-        physics.colliders.insert_with_parent(col, body, &mut physics.bodies);
-        body
+        world.spawn_body(body, col)
     }
 
     fn place_pooled(&mut self, world: &mut World, placements: &[Placement]) {
@@ -264,27 +261,24 @@ impl ParticleTechnique {
             }
         }
         let mut used = vec![false; self.slots.len()];
-        let physics = world.physics_mut();
         for (k, p) in placements.iter().enumerate() {
             let i = assignment[k];
             used[i] = true;
             let s = &mut self.slots[i];
             s.px = p.px;
             s.active = true;
-            if let Some(b) = physics.bodies.get_mut(s.body) {
+            if let Some(b) = world.technique_body_mut(s.body) {
                 b.set_enabled(true);
                 b.set_position(Pose::from_translation(p.center), true);
                 b.set_linvel(p.velocity, true);
                 b.set_gravity_scale(gravity_scale_for(p.mass, p.weight), true);
                 // Moving between a soft body and rigid ground changes its mass
                 // (see `soft_mass`); rapier applies it at the next step.
-                if (s.mass - p.mass).abs() > 1e-7 {
-                    s.mass = p.mass;
-                    if let Some(&c) = b.colliders().first()
-                        && let Some(col) = physics.colliders.get_mut(c)
-                    {
-                        col.set_mass(p.mass);
-                    }
+            }
+            if (s.mass - p.mass).abs() > 1e-7 {
+                s.mass = p.mass;
+                if let Some(col) = world.technique_collider_mut(s.body) {
+                    col.set_mass(p.mass);
                 }
             }
         }
@@ -292,7 +286,7 @@ impl ParticleTechnique {
         for (i, s) in self.slots.iter_mut().enumerate() {
             if !used[i] && s.active {
                 s.active = false;
-                if let Some(b) = physics.bodies.get_mut(s.body) {
+                if let Some(b) = world.technique_body_mut(s.body) {
                     b.set_enabled(false);
                 }
             }
@@ -359,15 +353,14 @@ impl Technique for ParticleTechnique {
 
     fn after_step(&mut self, world: &mut World) {
         self.positions.clear();
-        let physics = world.physics();
         for s in self.slots.iter().filter(|s| s.active) {
-            if let Some(b) = physics.bodies.get(s.body) {
+            if let Some(b) = world.technique_body(s.body) {
                 self.positions.push(b.translation());
             }
         }
         if !self.config.particle_pooled {
             for s in std::mem::take(&mut self.slots) {
-                remove_body(world, s.body);
+                world.remove_body(s.body);
             }
         }
     }
@@ -384,7 +377,7 @@ impl Technique for ParticleTechnique {
 
     fn clear(&mut self, world: &mut World) {
         for s in std::mem::take(&mut self.slots) {
-            remove_body(world, s.body);
+            world.remove_body(s.body);
         }
         self.positions.clear();
         self.sensed_only.clear();

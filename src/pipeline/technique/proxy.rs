@@ -10,14 +10,14 @@ use super::surface_point::{at_height, clamp_len, support_below, table_point, tab
 use super::{
     Feedback, PressureMode, ProxyShape, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind,
 };
-use crate::pipeline::world::{Layer, World, WorldError};
+use crate::pipeline::world::{Layer, TechniqueBody, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::BTreeMap;
 
 #[derive(Debug, Clone, Copy)]
 struct Proxy {
-    body: RigidBodyHandle,
+    body: TechniqueBody,
     /// Spawned on a soft body, with its small inertia (see [`soft_mass`]).
     light: bool,
     /// Its press (N) and half height (m), for a light proxy's support test.
@@ -72,8 +72,6 @@ impl ProxyTechnique {
             .linvel(velocity.extend(0.0))
             .can_sleep(false)
             .build();
-        let physics = world.physics_mut();
-        let body = physics.bodies.insert(body);
         let collider = collider
             .mass(mass)
             .friction(self.config.friction)
@@ -81,7 +79,7 @@ impl ProxyTechnique {
             .restitution(0.0)
             .collision_groups(Layer::Proxy.groups())
             .build();
-        physics.colliders.insert_with_parent(collider, body, &mut physics.bodies);
+        let body = world.spawn_body(body, collider);
         Proxy { body, light, weight, half_height: hh }
     }
 }
@@ -139,7 +137,7 @@ impl Technique for ProxyTechnique {
             let target = table_point(input.sensor, c.blob.centroid);
             let v_hand = clamp_len(table_velocity(input.sensor, c.velocity_px, dt), self.config.max_contact_speed);
             if let Some(p) = self.proxies.get(&c.id).copied() {
-                let Some(pos) = world.physics().bodies.get(p.body).map(RigidBody::translation) else { continue };
+                let Some(pos) = world.technique_body(p.body).map(RigidBody::translation) else { continue };
                 // Where the finger appears at the proxy's own height.
                 let target = at_height(world, target, pos.z);
                 // A light proxy presses only while it stands on something:
@@ -150,7 +148,7 @@ impl Technique for ProxyTechnique {
                     || world
                         .cast_ray(pos, Vec3::NEG_Z, 1.0)
                         .is_some_and(|h| h.toi <= p.half_height + LIGHT_SUPPORT_GAP);
-                let Some(b) = world.physics_mut().bodies.get_mut(p.body) else { continue };
+                let Some(b) = world.technique_body_mut(p.body) else { continue };
                 if p.light {
                     let scale = if supported { gravity_scale_for(b.mass(), p.weight) } else { 1.0 };
                     let scale = scale.min(SOFT_MAX_GRAVITY_SCALE);
@@ -174,7 +172,7 @@ impl Technique for ProxyTechnique {
         let gone: Vec<u32> = self.proxies.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in gone {
             if let Some(p) = self.proxies.remove(&id) {
-                remove_body(world, p.body);
+                world.remove_body(p.body);
             }
         }
         Ok(())
@@ -184,7 +182,7 @@ impl Technique for ProxyTechnique {
         let cubes = self
             .proxies
             .values()
-            .filter_map(|p| world.physics().bodies.get(p.body))
+            .filter_map(|p| world.technique_body(p.body))
             .map(|b| (b.translation(), self.config.proxy_size))
             .collect();
         Feedback { lines: Vec::new(), cubes }
@@ -196,25 +194,11 @@ impl Technique for ProxyTechnique {
 
     fn clear(&mut self, world: &mut World) {
         for (_, p) in std::mem::take(&mut self.proxies) {
-            remove_body(world, p.body);
+            world.remove_body(p.body);
         }
     }
 
     fn config_mut(&mut self) -> &mut TechniqueConfig {
         &mut self.config
     }
-}
-
-/// Removes a technique body and its colliders.
-pub(super) fn remove_body(world: &mut World, body: RigidBodyHandle) {
-    let physics = world.physics_mut();
-    physics.bodies.remove(
-        body,
-        &mut physics.islands,
-        &mut physics.colliders,
-        &mut physics.impulse_joints,
-        &mut physics.multibody_joints,
-        &mut physics.soft_bodies,
-        true,
-    );
 }

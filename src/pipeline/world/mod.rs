@@ -7,20 +7,25 @@
 mod config;
 mod error;
 mod groups;
+mod object;
 mod overlap;
 mod ray;
 mod reach;
 mod soft;
 mod soft_access;
 mod stats;
+mod technique_body;
 #[allow(clippy::module_inception)]
 mod world;
 
 pub use config::WorldConfig;
 pub use error::WorldError;
 pub use groups::{Layer, collider_layer};
+pub use object::{ObjectId, ObjectPush, SoftId};
 pub use ray::RayHit;
 pub use reach::Reach;
 pub use soft::SoftSurface;
+pub use soft_access::SoftPush;
 pub use stats::{StepStats, WorldStats};
+pub use technique_body::{TechniqueBody, TechniqueJoint};
 pub use world::{ObjectPose, World};

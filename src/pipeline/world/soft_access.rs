@@ -83,3 +83,42 @@ impl World {
         soft::nearest_particle(self.physics(), h, point)
     }
 }
+
+/// A soft body (or torn piece), to push: per-particle forces. It reads as a
+/// [`SoftBody`] but offers no way to move its particles directly.
+#[derive(Debug)]
+pub struct SoftPush<'w>(&'w mut SoftBody);
+
+impl std::ops::Deref for SoftPush<'_> {
+    type Target = SoftBody;
+
+    fn deref(&self) -> &SoftBody {
+        self.0
+    }
+}
+
+impl SoftPush<'_> {
+    pub fn add_particle_force(&mut self, particle: u32, force: Vec3) {
+        self.0.add_particle_force(particle as usize, force, true);
+    }
+}
+
+impl World {
+    /// Soft body (or piece) `h`, to push.
+    pub fn push_soft(&mut self, h: SoftBodyHandle) -> Option<SoftPush<'_>> {
+        self.physics_mut().soft_bodies.get_mut(h).map(SoftPush)
+    }
+
+    /// Clears the particle forces added this step on every soft body and
+    /// piece (a tear may have carried a force to a new piece).
+    pub fn reset_soft_forces(&mut self) {
+        for (_, b) in self.physics_mut().soft_bodies.iter_mut() {
+            b.reset_forces(false);
+        }
+    }
+
+    /// The position of particle `particle` of soft body (or piece) `h`.
+    pub fn soft_particle_position(&self, h: SoftBodyHandle, particle: u32) -> Option<Vec3> {
+        Some(self.physics().soft_bodies.get(h)?.particle_position(particle as usize))
+    }
+}

@@ -193,9 +193,7 @@ impl World {
         self.last
     }
 
-    /// The underlying rapier world, for techniques that add and drive their
-    /// own bodies. Scene objects must not be removed through it (use
-    /// [`World::remove_object`]).
+    /// The underlying rapier world, to read (contact pairs, soft particles).
     pub fn physics(&self) -> &PhysicsWorld {
         &self.physics
     }
@@ -210,7 +208,10 @@ impl World {
         (&mut self.soft, &mut self.physics)
     }
 
-    pub fn physics_mut(&mut self) -> &mut PhysicsWorld {
+    /// The rapier world, mutable: for this module only. Techniques go
+    /// through `technique_body.rs` and `object.rs`, which cannot remove or
+    /// teleport a scene object.
+    pub(super) fn physics_mut(&mut self) -> &mut PhysicsWorld {
         &mut self.physics
     }
 

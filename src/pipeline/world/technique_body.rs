@@ -1,0 +1,231 @@
+//! The bodies and joints a technique adds to the world (proxies, particles,
+//! grips, pushers, joint anchors), behind handles only the world hands out.
+//!
+//! A technique gets a [`TechniqueBody`] for every body it spawns and can
+//! move, reshape or remove only those. Scene objects it reaches through an
+//! [`ObjectId`] (see `object_push.rs`): it may push them, never remove or
+//! teleport them. The type system, not a comment, keeps the two apart.
+
+use super::groups::{Layer, collider_layer};
+use super::object::ObjectId;
+use super::world::World;
+use glam::Vec3;
+use rapier3d::prelude::*;
+
+/// A rigid body a technique spawned. Only [`World`] creates these, so a
+/// scene object's body can never be passed where a technique body is asked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct TechniqueBody(RigidBodyHandle);
+
+impl TechniqueBody {
+    /// The rapier handle, to compare with what rapier reports (a soft
+    /// particle's attachment, a contact pair). Reading only: nothing outside
+    /// the world can mutate through it.
+    pub fn handle(self) -> RigidBodyHandle {
+        self.0
+    }
+}
+
+/// A joint a technique made between one of its bodies and a scene object.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct TechniqueJoint(ImpulseJointHandle);
+
+impl World {
+    /// Adds a technique body with its collider. The collider must be on a
+    /// technique layer ([`Layer::Proxy`] or [`Layer::Particle`]): scene ray
+    /// casts and the goal measures ignore exactly those.
+    pub fn spawn_body(&mut self, body: impl Into<RigidBody>, collider: impl Into<Collider>) -> TechniqueBody {
+        let collider = collider.into();
+        debug_assert!(
+            matches!(collider_layer(&collider), Layer::Proxy | Layer::Particle),
+            "a technique body's collider must be on a technique layer"
+        );
+        let physics = self.physics_mut();
+        let body = physics.bodies.insert(body);
+        physics.colliders.insert_with_parent(collider, body, &mut physics.bodies);
+        TechniqueBody(body)
+    }
+
+    /// Adds a kinematic anchor at `at`, with no collider: the end of a
+    /// joint or a soft particle's attachment that the contact drives.
+    pub fn spawn_anchor(&mut self, at: Vec3) -> TechniqueBody {
+        let body = RigidBodyBuilder::kinematic_position_based().translation(at).build();
+        TechniqueBody(self.physics_mut().bodies.insert(body))
+    }
+
+    /// A technique body, to read; `None` once removed.
+    pub fn technique_body(&self, body: TechniqueBody) -> Option<&RigidBody> {
+        self.physics().bodies.get(body.0)
+    }
+
+    /// A technique body, to move: velocities, kinematic targets, pose,
+    /// gravity scale, enabled. It is the technique's own.
+    pub fn technique_body_mut(&mut self, body: TechniqueBody) -> Option<&mut RigidBody> {
+        self.physics_mut().bodies.get_mut(body.0)
+    }
+
+    /// The (first) collider of a technique body, to reshape or re-weigh.
+    pub fn technique_collider_mut(&mut self, body: TechniqueBody) -> Option<&mut Collider> {
+        let physics = self.physics_mut();
+        let c = *physics.bodies.get(body.0)?.colliders().first()?;
+        physics.colliders.get_mut(c)
+    }
+
+    /// Removes a technique body, its colliders and its joints.
+    pub fn remove_body(&mut self, body: TechniqueBody) {
+        let physics = self.physics_mut();
+        physics.bodies.remove(
+            body.0,
+            &mut physics.islands,
+            &mut physics.colliders,
+            &mut physics.impulse_joints,
+            &mut physics.multibody_joints,
+            &mut physics.soft_bodies,
+            true,
+        );
+    }
+
+    /// Joins a technique body to a scene object (`joint`'s first anchor is
+    /// on the technique body, its second on the object). `None` when the
+    /// object has no body.
+    pub fn attach(
+        &mut self,
+        body: TechniqueBody,
+        object: ObjectId,
+        joint: impl Into<GenericJoint>,
+    ) -> Option<TechniqueJoint> {
+        let h = self.object_body(object.index());
+        let physics = self.physics_mut();
+        physics.bodies.get(h)?;
+        Some(TechniqueJoint(physics.impulse_joints.insert(body.0, h, joint, true)))
+    }
+
+    /// Removes a joint a technique made.
+    pub fn remove_joint(&mut self, joint: TechniqueJoint) {
+        self.physics_mut().impulse_joints.remove(joint.0, true);
+    }
+
+    /// Attaches particle `particle` of soft body `soft` to a technique body
+    /// (rapier's point constraint). `None` when the soft body is gone.
+    pub fn attach_particle(&mut self, soft: SoftBodyHandle, particle: u32, body: TechniqueBody) -> Option<()> {
+        let physics = self.physics_mut();
+        physics.soft_bodies.get_mut(soft)?.attach_particle(particle as usize, body.0, &physics.bodies);
+        Some(())
+    }
+
+    /// Lets go of every soft particle attached to a technique body.
+    pub fn detach_particles(&mut self, body: TechniqueBody) {
+        for (_, b) in self.physics_mut().soft_bodies.iter_mut() {
+            let held: Vec<u32> =
+                b.particle_attachments().iter().filter(|a| a.body == body.0).map(|a| a.particle).collect();
+            for p in held {
+                b.detach_particle(p as usize);
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene;
+
+    /// A 6 cm box resting at the origin, pushed by nothing.
+    const SCENE: &str = r#"
+name = "one box"
+description = "A box for technique bodies to meet."
+effects = ["gravity", "friction", "joints"]
+[table]
+size = [1.0, 0.75]
+friction = 0.3
+[[objects]]
+name = "box"
+shape = "box"
+size = [0.06, 0.06, 0.03]
+mass = 0.1
+color = "orange"
+position = [0.0, 0.0]
+"#;
+
+    fn world() -> World {
+        World::new(&scene::parse(SCENE, "one box").expect("scene"))
+    }
+
+    /// A 1 cm proxy cube resting on the table at `(x, y)`.
+    fn proxy(world: &mut World, x: f32, y: f32) -> TechniqueBody {
+        let body = RigidBodyBuilder::dynamic().translation(Vec3::new(x, y, 0.0105)).lock_rotations().build();
+        let collider = ColliderBuilder::cuboid(0.01, 0.01, 0.01).mass(0.05).collision_groups(Layer::Proxy.groups());
+        world.spawn_body(body, collider)
+    }
+
+    #[test]
+    fn a_technique_body_is_spawned_moved_and_removed() {
+        let mut w = world();
+        let bodies = w.physics().bodies.len();
+        let colliders = w.physics().colliders.len();
+        let p = proxy(&mut w, 0.3, 0.0);
+        assert_eq!(w.physics().bodies.len(), bodies + 1);
+        assert_eq!(w.physics().colliders.len(), colliders + 1, "the proxy's collider");
+        // Driven at 0.6 m/s along -x for 10 steps (1/6 s): about 10 cm.
+        for _ in 0..10 {
+            let b = w.technique_body_mut(p).expect("spawned");
+            b.set_linvel(Vec3::new(-0.6, 0.0, b.linvel().z), true);
+            w.step();
+        }
+        let x = w.technique_body(p).expect("still there").translation().x;
+        assert!((x - 0.2).abs() < 0.01, "moved to x = {x}, expected about 0.2");
+        w.remove_body(p);
+        assert!(w.technique_body(p).is_none());
+        assert_eq!(w.physics().bodies.len(), bodies);
+        assert_eq!(w.physics().colliders.len(), colliders, "its collider went with it");
+        // The scene object is untouched: there, active, at rest at the origin.
+        let boxed = w.object_pose(ObjectId::new(0).index());
+        assert!(boxed.active);
+        assert!(boxed.position.truncate().length() < 1e-3, "the box moved to {:?}", boxed.position);
+    }
+
+    #[test]
+    fn a_joint_pulls_the_object_and_removing_it_leaves_the_object() {
+        let mut w = world();
+        let box_id = ObjectId::new(0);
+        let top = w.object_pose(box_id.index()).position + Vec3::Z * 0.015;
+        let anchor = w.spawn_anchor(top);
+        let spring = SpringJointBuilder::new(0.0, 200.0, 5.0).local_anchor1(Vec3::ZERO).local_anchor2(Vec3::Z * 0.015);
+        let joint = w.attach(anchor, box_id, spring.build()).expect("the box has a body");
+        // The anchor slides 10 cm along +y over half a second; the box follows.
+        for k in 1..=30u8 {
+            let at = top + Vec3::Y * (0.1 * f32::from(k) / 30.0);
+            w.technique_body_mut(anchor).expect("anchor").set_next_kinematic_translation(at);
+            w.step();
+        }
+        let y = w.object_pose(box_id.index()).position.y;
+        assert!(y > 0.05, "the spring dragged the box only to y = {y}");
+        w.remove_joint(joint);
+        w.remove_body(anchor);
+        assert_eq!(w.physics().impulse_joints.len(), 0);
+        assert_eq!(w.physics().bodies.len(), 1, "the box's body stays");
+        assert!(w.is_active(box_id.index()));
+        // Ids are stable: the same object, the same body, after all that.
+        assert_eq!(w.object_of_body(w.object_body(box_id.index())), Some(box_id.index()));
+    }
+
+    #[test]
+    fn a_scene_object_can_be_pushed_but_keeps_its_place_in_the_world() {
+        let mut w = world();
+        let id = ObjectId::new(0);
+        let mass = w.object_rigid_body(id).expect("body").mass();
+        assert!((mass - 0.1).abs() < 1e-6, "mass {mass}");
+        // 0.5 m/s along x, then table friction slows it (without the push
+        // it would not move; without friction it would keep 0.5 m/s).
+        w.push_object(id).expect("body").set_linvel(Vec3::new(0.5, 0.0, 0.0));
+        for _ in 0..6 {
+            w.step();
+        }
+        let pose = w.object_pose(id.index());
+        let v = pose.linvel.x;
+        assert!(v > 0.0 && v < 0.45, "after 0.1 s the box moves at {v} m/s");
+        assert!(pose.position.x > 0.02, "the box slid only to x = {}", pose.position.x);
+        w.push_object(id).expect("body").reset_forces();
+        assert!(w.is_active(id.index()));
+    }
+}
