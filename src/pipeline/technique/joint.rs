@@ -401,7 +401,7 @@ impl Technique for JointTechnique {
         // The side-collision prisms are what a sweep pushes with: without
         // their outline a Joint sweep looks like an invisible wall.
         for p in self.pushers.values() {
-            if let Some(col) = physics.colliders.get(p.collider) {
+            if let Some(col) = world.technique_collider(p.body) {
                 lines.extend(prism_edges(col));
             }
         }

@@ -64,7 +64,14 @@ impl World {
         self.physics_mut().bodies.get_mut(body.0)
     }
 
-    /// The (first) collider of a technique body, to reshape or re-weigh.
+    /// A technique body's (first) collider, to read (feedback draws it).
+    pub fn technique_collider(&self, body: TechniqueBody) -> Option<&Collider> {
+        let physics = self.physics();
+        let c = *physics.bodies.get(body.0)?.colliders().first()?;
+        physics.colliders.get(c)
+    }
+
+    /// A technique body's (first) collider, to reshape or re-weigh.
     pub fn technique_collider_mut(&mut self, body: TechniqueBody) -> Option<&mut Collider> {
         let physics = self.physics_mut();
         let c = *physics.bodies.get(body.0)?.colliders().first()?;
