@@ -3,13 +3,13 @@
 //! report.md/html and
 //! run.toml in one folder; with `--seeds N`, N such folders and findings.csv.
 
+use super::Failure;
 use super::{StudyAction, StudyArgs};
 use crate::harness::participant::{ReplayRunner, ScriptedRunner};
 use crate::harness::study::{self, RunFile, RunOptions, StudyDesign, Technique, TrialRunner};
-use anyhow::Context;
 use std::process::ExitCode;
 
-pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
+pub fn run(args: &StudyArgs) -> super::Outcome {
     if let Some(StudyAction::Merge { out, dirs }) = &args.action {
         let m = study::merge(out, dirs)?;
         println!("surfacelab study merge: {m:?}");
@@ -19,7 +19,7 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
         jobs: args.jobs,
         progress: !args.no_progress,
         shard: match &args.shard {
-            Some(s) => Some(s.parse().map_err(|e| anyhow::anyhow!("--shard {s}: {e}"))?),
+            Some(s) => Some(s.parse().map_err(|e| Failure::from(e).context(format!("--shard {s}")))?),
             None => None,
         },
         ..RunOptions::default()
@@ -29,8 +29,9 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
     }
     let cpu_before = process_cpu_s();
     let outcome = if let Some(dir) = &args.resume {
-        let design =
-            RunFile::load(&dir.join("run.toml")).with_context(|| format!("--resume {}", dir.display()))?.design;
+        let design = RunFile::load(&dir.join("run.toml"))
+            .map_err(|e| Failure::from(e).context(format!("--resume {}", dir.display())))?
+            .design;
         let runner = runner_for(args, design, dir)?;
         study::resume_study(dir, runner.as_ref(), &options)?
     } else {
@@ -98,7 +99,7 @@ fn cpu_since(before: Option<f64>) -> Option<f64> {
 }
 
 /// `--seeds N`: N whole studies, one folder each, then findings.csv.
-fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> anyhow::Result<ExitCode> {
+fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> super::Outcome {
     let base = design_from(args)?;
     base.validate()?;
     if let Some(note) = base.balance_note() {
@@ -124,22 +125,29 @@ fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> anyhow::Result<E
     Ok(ExitCode::SUCCESS)
 }
 
-fn runner_for(args: &StudyArgs, design: StudyDesign, out: &std::path::Path) -> anyhow::Result<Box<dyn TrialRunner>> {
+fn runner_for(args: &StudyArgs, design: StudyDesign, out: &std::path::Path) -> Result<Box<dyn TrialRunner>, Failure> {
     let frames = design.settings.get("frames").and_then(toml::Value::as_bool).unwrap_or(false);
     let frames_dir = frames.then(|| out.join("frames"));
     let replay = args.replay.clone().or_else(|| design.settings.get("replay").and_then(|v| v.as_str()).map(Into::into));
     Ok(match replay {
         Some(dir) => {
-            anyhow::ensure!(dir.is_dir(), "--replay {}: not a folder of gesture files", dir.display());
+            if !dir.is_dir() {
+                return Err(Failure::bad_input(anyhow::anyhow!(
+                    "--replay {}: not a folder of gesture files",
+                    dir.display()
+                )));
+            }
             Box::new(ReplayRunner { dir, design })
         }
         None => Box::new(ScriptedRunner::new(design, frames_dir)),
     })
 }
 
-fn design_from(args: &StudyArgs) -> anyhow::Result<StudyDesign> {
+fn design_from(args: &StudyArgs) -> Result<StudyDesign, Failure> {
     let mut d = match &args.from {
-        Some(path) => RunFile::load(path).with_context(|| format!("--from {}", path.display()))?.design,
+        Some(path) => {
+            RunFile::load(path).map_err(|e| Failure::from(e).context(format!("--from {}", path.display())))?.design
+        }
         None => StudyDesign::default(),
     };
     if let Some(n) = args.participants {
@@ -154,13 +162,13 @@ fn design_from(args: &StudyArgs) -> anyhow::Result<StudyDesign> {
     if let Some(ts) = &args.techniques {
         d.techniques = ts
             .split(',')
-            .map(|t| t.trim().parse::<Technique>().map_err(|e| anyhow::anyhow!("--techniques: {e}")))
-            .collect::<anyhow::Result<_>>()?;
+            .map(|t| t.trim().parse::<Technique>().map_err(|e| Failure::bad_input(e).context("--techniques")))
+            .collect::<Result<_, _>>()?;
     }
     if let Some(ts) = &args.tasks {
         d.tasks = ts.split(',').map(|t| t.trim().to_string()).collect();
         for t in &d.tasks {
-            crate::scene::load(t).with_context(|| format!("--tasks: task `{t}`"))?;
+            crate::scene::load(t).map_err(|e| Failure::from(e).context(format!("--tasks: task `{t}`")))?;
         }
     }
     if args.no_practice {

@@ -65,10 +65,27 @@ pub enum GestureError {
         #[source]
         source: std::io::Error,
     },
+    /// Saving a recording failed: the program's fault or the disk's, not the user's.
+    #[error("{origin}: cannot write the gesture file")]
+    Write {
+        origin: String,
+        #[source]
+        source: std::io::Error,
+    },
     #[error("{origin}{}: {message}", at_line(.line.as_ref()))]
     Syntax { origin: String, line: Option<usize>, message: String },
     #[error("{origin}{}: field `{field}`: {problem}", at_line(.line.as_ref()))]
     Field { origin: String, line: Option<usize>, field: String, problem: String },
+}
+
+impl crate::error::Kind for GestureError {
+    fn kind(&self) -> crate::error::ErrorKind {
+        match self {
+            GestureError::Io { source, .. } => crate::error::io_kind(source),
+            GestureError::Write { .. } => crate::error::ErrorKind::Runtime,
+            GestureError::Syntax { .. } | GestureError::Field { .. } => crate::error::ErrorKind::BadInput,
+        }
+    }
 }
 
 fn at_line(line: Option<&usize>) -> String {
@@ -177,7 +194,7 @@ impl Gesture {
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), GestureError> {
         let path = path.as_ref();
         std::fs::write(path, self.to_string())
-            .map_err(|source| GestureError::Io { origin: path.display().to_string(), source })
+            .map_err(|source| GestureError::Write { origin: path.display().to_string(), source })
     }
 
     pub fn tracks(&self) -> &[Track] {

@@ -4,7 +4,7 @@ use std::path::PathBuf;
 
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
-    #[error("cannot read scene file {path}: {source}")]
+    #[error("cannot read scene file {}", path.display())]
     Io {
         path: PathBuf,
         #[source]
@@ -19,4 +19,17 @@ pub enum SceneError {
     Invalid { origin: String, line: usize, field: String, message: String },
     #[error("no scene named `{name}`: looked for {tried}")]
     NotFound { name: String, tried: String },
+}
+
+impl crate::error::Kind for SceneError {
+    /// A scene that is missing or malformed is bad input; a file the
+    /// system refuses to read is a run-time failure.
+    fn kind(&self) -> crate::error::ErrorKind {
+        match self {
+            SceneError::Io { source, .. } => crate::error::io_kind(source),
+            SceneError::Parse { .. } | SceneError::Invalid { .. } | SceneError::NotFound { .. } => {
+                crate::error::ErrorKind::BadInput
+            }
+        }
+    }
 }
