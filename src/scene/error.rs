@@ -11,12 +11,10 @@ pub enum SceneError {
         source: std::io::Error,
     },
     /// Syntax errors, unknown fields, unknown shapes/effects, missing fields
-    /// and wrong types: toml's own message already carries line, column and field.
-    #[error("{origin}: {message}")]
-    Parse { origin: String, message: String },
-    /// A value that parses but makes no sense (negative mass, target off the table, ...).
-    #[error("{origin}:{line}: field `{field}`: {message}")]
-    Invalid { origin: String, line: usize, field: String, message: String },
+    /// and wrong types; and values that parse but make no sense (negative
+    /// mass, target off the table, ...): file, line and field.
+    #[error(transparent)]
+    Field(#[from] super::fields::FieldError),
     #[error("no scene named `{name}`: looked for {tried}")]
     NotFound { name: String, tried: String },
 }
@@ -27,9 +25,7 @@ impl crate::error::Kind for SceneError {
     fn kind(&self) -> crate::error::ErrorKind {
         match self {
             SceneError::Io { source, .. } => crate::error::io_kind(source),
-            SceneError::Parse { .. } | SceneError::Invalid { .. } | SceneError::NotFound { .. } => {
-                crate::error::ErrorKind::BadInput
-            }
+            SceneError::Field(_) | SceneError::NotFound { .. } => crate::error::ErrorKind::BadInput,
         }
     }
 }

@@ -4,14 +4,17 @@
 //! plain [`Scene`] value that the world, the renderer, the study harness, the
 //! benchmarks and the tests all share — one scene definition, many uses.
 
+mod defaults;
 mod effects;
 mod error;
+pub mod fields;
 mod file;
 mod model;
 mod validate;
 
 pub use effects::{Effect, EffectSet};
 pub use error::SceneError;
+pub use fields::{FieldError, FieldReader};
 pub use model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
     SteeringGoal, Table, Target,
