@@ -64,7 +64,8 @@ impl<'a> FieldReader<'a> {
     /// The 1-based line of a byte offset.
     pub fn line(&self, offset: usize) -> usize {
         let end = offset.min(self.text.len());
-        self.text.as_bytes()[..end].iter().filter(|&&b| b == b'\n').count() + 1
+        // Pieces between newlines = newlines + 1 = the line number.
+        self.text.as_bytes()[..end].split(|&b| b == b'\n').count()
     }
 
     /// An error about `field`, at the line of byte offset `at` when known.

@@ -13,7 +13,8 @@ use std::fmt;
 use std::str::FromStr;
 
 /// A study condition's interaction technique. Kept local to the study layer
-/// (the harness needs no physics); the CLI maps it to the technique module's kind.
+/// (the study needs no physics); the participant runner maps it to the
+/// technique module's kind (`participant::technique_kind`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Technique {
