@@ -12,7 +12,7 @@ const WIDTH: u32 = 1024;
 const HEIGHT: u32 = 768;
 
 fn capture_frames(c: &mut Criterion) {
-    let gpu = GpuContext::new_headless().unwrap_or_else(|e| panic!("{e}"));
+    let gpu = GpuContext::new_headless().unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
     eprintln!("adapter: {}", gpu.summary());
     let runs = [
         ("positioning", samples::positioning(), 1),

@@ -8,7 +8,7 @@
 //! (see `ARCHITECTURE.md`):
 //!
 //! ```text
-//! scene, contact             data and pure geometry every layer may read
+//! scene, contact, error      data, pure geometry and error kinds every layer may read
 //! input                      mouse, TUIO, gesture files ──▶ hands
 //! pipeline                   surface ──▶ vision ──▶ technique ──▶ world
 //! session                    one scene running through the pipeline; its goals measured
@@ -20,6 +20,7 @@
 //!
 //! - [`scene`]: scene/task files (table, camera, objects, goals, declared effects) as data.
 //! - [`contact`]: exact 2D contact geometry (Contact Theory, Cheng et al. 2016); pure.
+//! - [`error`]: the kind every module's errors share (bad input or runtime), which picks the exit code.
 //! - [`input`]: every source of hands (mouse, TUIO, gesture files, scripts).
 //! - [`pipeline`]: the contact image, vision, the paper's techniques, and the rapier3d world.
 //! - [`session`]: the frame loop that drives the pipeline, and the goal tracker.
@@ -31,6 +32,7 @@
 pub mod app;
 pub mod cli;
 pub mod contact;
+pub mod error;
 pub mod harness;
 pub mod input;
 pub mod pipeline;

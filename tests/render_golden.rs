@@ -32,7 +32,10 @@ const TOLERANCE: Tolerance = Tolerance { per_pixel: 12, max_differing_share: 0.0
 
 fn gpu() -> &'static GpuContext {
     static GPU: OnceLock<GpuContext> = OnceLock::new();
-    GPU.get_or_init(|| GpuContext::new_headless().unwrap_or_else(|e| panic!("this test needs a GPU adapter: {e}")))
+    GPU.get_or_init(|| {
+        GpuContext::new_headless()
+            .unwrap_or_else(|e| panic!("this test needs a GPU adapter: {}", surfacelab::error::chain(&e)))
+    })
 }
 
 /// Golden images are rendered with 4x MSAA, as a GPU shows them (software
@@ -53,7 +56,7 @@ fn snapshots() -> SnapshotDir {
 
 fn check(name: &str, image: &RgbaImage) {
     if let Err(e) = snapshots().check(name, image, TOLERANCE) {
-        panic!("{e} (adapter: {})", gpu().summary());
+        panic!("{} (adapter: {})", surfacelab::error::chain(&e), gpu().summary());
     }
 }
 
@@ -287,7 +290,7 @@ fn invalid_draw_lists_are_errors_not_panics() {
 
 #[test]
 fn adapter_is_reported() {
-    let summary = surfacelab::render::probe_adapter().unwrap_or_else(|e| panic!("{e}"));
+    let summary = surfacelab::render::probe_adapter().unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
     assert!(!summary.name.is_empty());
     assert!(summary.to_string().contains(&summary.name));
 }

@@ -25,7 +25,8 @@ fn root(p: &str) -> String {
 }
 
 fn gpu() -> GpuContext {
-    GpuContext::new_headless().unwrap_or_else(|e| panic!("these tests need a GPU adapter: {e}"))
+    GpuContext::new_headless()
+        .unwrap_or_else(|e| panic!("these tests need a GPU adapter: {}", surfacelab::error::chain(&e)))
 }
 
 fn snapshots() -> SnapshotDir {
@@ -77,7 +78,9 @@ fn each_task_scene_matches_its_golden_image() {
         let s = session_at(&format!("tasks/{task}.toml"), TechniqueKind::Proxy, None, 0.25);
         let img = render::render_to_image(&gpu, &scene_view::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1)
             .expect("render");
-        snapshots().check(&format!("task_{task}"), &img, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
+        snapshots()
+            .check(&format!("task_{task}"), &img, TOLERANCE)
+            .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
     }
 }
 
@@ -115,7 +118,9 @@ fn feedback_on_and_off_differ_exactly_by_red_feedback_for_every_technique() {
             assert!(differing > 20, "{kind}: feedback changed only {differing} pixels");
             assert!(red * 100 >= differing * 90, "{kind}: {red} of {differing} changed pixels are red");
         }
-        snapshots().check(&format!("feedback_{kind}"), &on, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
+        snapshots()
+            .check(&format!("feedback_{kind}"), &on, TOLERANCE)
+            .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
     }
 }
 
@@ -151,7 +156,9 @@ fn the_contact_overlay_shadows_where_the_hands_are() {
         }
     }
     assert!(sensed > 100 && darker * 100 >= sensed * 60, "{darker} of {sensed} sensed pixels darker");
-    snapshots().check("contact_overlay", &shadow, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
+    snapshots()
+        .check("contact_overlay", &shadow, TOLERANCE)
+        .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
 }
 
 /// Issue 18: the hands are on the glass, so a fingertip pressing on a box

@@ -23,7 +23,8 @@ fn root(p: &str) -> String {
 }
 
 fn gpu() -> GpuContext {
-    GpuContext::new_headless().unwrap_or_else(|e| panic!("these tests need a GPU adapter: {e}"))
+    GpuContext::new_headless()
+        .unwrap_or_else(|e| panic!("these tests need a GPU adapter: {}", surfacelab::error::chain(&e)))
 }
 
 fn session_at(task: &str, gesture: Option<&str>, at: f64) -> Session {
@@ -41,7 +42,9 @@ fn the_crumpled_cloth_matches_its_golden_image() {
     assert_eq!(list.deformables.len(), 1, "one cloth");
     assert_eq!(list.deformables[0].positions.len(), 16 * 16);
     let img = render::render_to_image(&gpu(), &list, SIZE.0, SIZE.1).expect("render");
-    SnapshotDir::new(root("tests/snapshots")).check("soft_cloth", &img, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
+    SnapshotDir::new(root("tests/snapshots"))
+        .check("soft_cloth", &img, TOLERANCE)
+        .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
 }
 
 #[test]
@@ -53,5 +56,7 @@ fn the_torn_paper_draws_both_pieces() {
     let list = scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true });
     assert!(list.deformables.len() >= 2, "every piece is drawn: {}", list.deformables.len());
     let img = render::render_to_image(&gpu(), &list, SIZE.0, SIZE.1).expect("render");
-    SnapshotDir::new(root("tests/snapshots")).check("soft_tear", &img, TOLERANCE).unwrap_or_else(|e| panic!("{e}"));
+    SnapshotDir::new(root("tests/snapshots"))
+        .check("soft_tear", &img, TOLERANCE)
+        .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
 }

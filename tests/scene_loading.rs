@@ -88,7 +88,7 @@ fn the_good_template_loads() {
 fn unknown_shape_names_line_and_field() {
     let e = bad(&GOOD.replace("shape = \"box\"", "shape = \"pyramid\""));
     assert!(e.contains("bad.toml"), "{e}");
-    assert!(e.contains("pyramid") && e.contains("line 8"), "{e}");
+    assert!(e.starts_with("bad.toml:8:") && e.contains("pyramid"), "{e}");
 }
 
 #[test]
@@ -114,7 +114,7 @@ fn missing_field_is_named() {
 #[test]
 fn unknown_effect_names_line() {
     let e = bad(&GOOD.replace("[\"gravity\"]", "[\"gravity\", \"magnetism\"]"));
-    assert!(e.contains("magnetism") && e.contains("line 3"), "{e}");
+    assert!(e.starts_with("bad.toml:3:") && e.contains("magnetism"), "{e}");
 }
 
 #[test]

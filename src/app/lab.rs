@@ -310,7 +310,7 @@ impl Lab {
             .and_then(|image| render::save_png(&image, &path));
         self.say(match result {
             Ok(()) => format!("screenshot: {}", path.display()),
-            Err(e) => format!("screenshot failed: {e}"),
+            Err(e) => format!("screenshot failed: {}", crate::error::chain(&e)),
         });
     }
 

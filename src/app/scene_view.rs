@@ -9,10 +9,7 @@ use crate::scene::{Goal, Scene, Shape};
 use crate::session::Session;
 use glam::{Mat4, Vec2, Vec3};
 
-/// The paper's colours: waypoints blue, the target red; feedback red.
-pub const WAYPOINT_BLUE: Rgba = [0.15, 0.35, 0.95, 1.0];
-pub const TARGET_RED: Rgba = [0.9, 0.12, 0.1, 1.0];
-pub const FEEDBACK_RED: Rgba = [0.95, 0.05, 0.05, 1.0];
+pub use crate::render::palette::{FEEDBACK_RED, TARGET_RED, WAYPOINT_BLUE};
 
 /// What to show besides the scene.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

@@ -5,7 +5,7 @@ use crate::harness::behaviour::{Verdict, cases, cells, markdown, run_suite, suit
 use std::process::ExitCode;
 use std::time::Instant;
 
-pub fn run(args: &BehavioursArgs) -> anyhow::Result<ExitCode> {
+pub fn run(args: &BehavioursArgs) -> super::Outcome {
     let kinds = args.techniques.clone().unwrap_or_else(suite_kinds);
     let all = cases();
     let chosen: Vec<_> = all.into_iter().filter(|c| args.case.as_deref().is_none_or(|f| c.name.contains(f))).collect();

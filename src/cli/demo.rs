@@ -28,7 +28,7 @@ impl Default for DemoArgs {
     }
 }
 
-pub fn run(args: &DemoArgs) -> anyhow::Result<ExitCode> {
+pub fn run(args: &DemoArgs) -> super::Outcome {
     let options = match options(args) {
         Ok(o) => o,
         Err(message) => {
@@ -52,7 +52,7 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
     o.out_dir.clone_from(&args.out);
     o.tuio = args.tuio.map(|port| SocketAddr::new(args.tuio_bind.unwrap_or(IpAddr::V4(Ipv4Addr::LOCALHOST)), port));
     if let Some(path) = &args.script {
-        o.script = Some(Gesture::load(path).map_err(|e| format!("--script: {e}"))?);
+        o.script = Some(Gesture::load(path).map_err(|e| format!("--script: {}", crate::error::chain(&e)))?);
     }
     if let Some(values) = &args.screenshot_after {
         let [seconds, path] = values.as_slice() else {

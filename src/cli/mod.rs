@@ -7,6 +7,7 @@ mod contact;
 mod demo;
 mod display;
 mod doctor;
+mod failure;
 mod run;
 mod screenshot;
 mod study;
@@ -17,6 +18,8 @@ use crate::pipeline::technique::TechniqueKind;
 use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
+
+pub use failure::{EXIT_USAGE, Failure, Outcome};
 
 /// Tabletop physics on a (synthetic) vision-based surface, with a study harness.
 #[derive(Debug, Parser)]
@@ -291,9 +294,6 @@ pub struct BehavioursArgs {
     pub check: bool,
 }
 
-/// Exit code for bad input and for features that have not landed yet.
-pub const EXIT_USAGE: u8 = 2;
-
 /// Parses the command line and runs it.
 pub fn main() -> ExitCode {
     init_tracing();
@@ -302,22 +302,10 @@ pub fn main() -> ExitCode {
     match run(command) {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("surfacelab: error: {e:#}");
-            if is_bad_input(&e) { ExitCode::from(EXIT_USAGE) } else { ExitCode::FAILURE }
+            eprintln!("surfacelab: error: {e}");
+            e.exit_code()
         }
     }
-}
-
-/// Bad input (a scene, gesture or config file) exits 2, like a usage error.
-fn is_bad_input(e: &anyhow::Error) -> bool {
-    e.chain().any(|c| {
-        c.is::<crate::scene::SceneError>()
-            || c.is::<crate::input::GestureError>()
-            || c.is::<crate::pipeline::technique::ConfigError>()
-            || c.is::<crate::harness::study::StudyError>()
-            || c.is::<crate::render::RenderError>()
-            || matches!(c.downcast_ref::<crate::session::SessionError>(), Some(crate::session::SessionError::Config(_)))
-    })
 }
 
 fn init_tracing() {
@@ -326,7 +314,7 @@ fn init_tracing() {
     let _ = tracing_subscriber::fmt().with_env_filter(filter).with_writer(std::io::stderr).try_init();
 }
 
-fn run(command: Command) -> anyhow::Result<ExitCode> {
+fn run(command: Command) -> Outcome {
     match command {
         Command::Doctor => Ok(doctor::run()),
         Command::Demo(_) if !doctor::has_display() => headless_main(),
@@ -343,7 +331,7 @@ fn run(command: Command) -> anyhow::Result<ExitCode> {
 /// What `surfacelab` does with no display: the headless job, so the
 /// README's main command is useful on a server or in CI — a one-participant
 /// scripted study (18 measured trials) with its CSVs and figure.
-fn headless_main() -> anyhow::Result<ExitCode> {
+fn headless_main() -> Outcome {
     eprintln!("surfacelab: no display, so no demo window; running a small scripted study headless instead");
     let _ = doctor::run();
     let stamp = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());

@@ -8,7 +8,7 @@ use anyhow::Context;
 use std::process::ExitCode;
 use std::time::Instant;
 
-pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
+pub fn run(args: &RunArgs) -> super::Outcome {
     let scene = scene::load(&args.task)?;
     let gesture = Gesture::load(&args.gesture)?;
     let options = SessionOptions { measure_penetration: true, ..SessionOptions::default() };
@@ -22,7 +22,7 @@ pub fn run(args: &RunArgs) -> anyhow::Result<ExitCode> {
         &args.gesture.display().to_string(),
         t0.elapsed().as_secs_f64(),
     );
-    let json = serde_json::to_string_pretty(&report)?;
+    let json = serde_json::to_string_pretty(&report).context("writing the JSON report")?;
     match &args.report {
         Some(path) => {
             if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {

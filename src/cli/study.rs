@@ -4,6 +4,7 @@
 //! run.toml in one folder; with `--seeds N`, N such folders and findings.csv;
 //! with `--slurm N`, the folders and a Slurm job array that fills them.
 
+use super::Failure;
 use super::{StudyAction, StudyArgs};
 use crate::harness::participant::{ReplayRunner, ScriptedRunner};
 use crate::harness::study::slurm::{self, SlurmJob};
@@ -11,7 +12,7 @@ use crate::harness::study::{self, RunFile, RunOptions, Shard, StudyDesign, Trial
 use anyhow::Context;
 use std::process::ExitCode;
 
-pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
+pub fn run(args: &StudyArgs) -> super::Outcome {
     if let Some(StudyAction::Merge { out, dirs }) = &args.action {
         let m = study::merge(out, dirs)?;
         println!("surfacelab study merge: {m:?}");
@@ -30,8 +31,9 @@ pub fn run(args: &StudyArgs) -> anyhow::Result<ExitCode> {
     }
     let cpu_before = process_cpu_s();
     let outcome = if let Some(dir) = &args.resume {
-        let design =
-            RunFile::load(&dir.join("run.toml")).with_context(|| format!("--resume {}", dir.display()))?.design;
+        let design = RunFile::load(&dir.join("run.toml"))
+            .map_err(|e| Failure::from(e).context(format!("--resume {}", dir.display())))?
+            .design;
         let runner = runner_for(args, design, dir)?;
         study::resume_study(dir, runner.as_ref(), &options)?
     } else {
@@ -99,7 +101,7 @@ fn cpu_since(before: Option<f64>) -> Option<f64> {
 }
 
 /// `--seeds N`: N whole studies, one folder each, then findings.csv.
-fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> anyhow::Result<ExitCode> {
+fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> super::Outcome {
     let base = design_from(args)?;
     base.validate()?;
     if let Some(note) = base.balance_note() {
@@ -132,7 +134,7 @@ pub fn parse_shard(s: &str) -> Result<Shard, String> {
 
 /// `study findings DIR`: findings.csv and seeds.png from `DIR/seed-1`,
 /// `DIR/seed-2`, ... (every consecutive seed folder holding a run.toml).
-fn findings(dir: &std::path::Path) -> anyhow::Result<ExitCode> {
+fn findings(dir: &std::path::Path) -> super::Outcome {
     let dirs: Vec<_> = (1..=u32::MAX)
         .map(|k| study::seeds::seed_dir(dir, k))
         .take_while(|d| d.join(study::output::RUN_TOML).exists())
@@ -151,7 +153,7 @@ fn findings(dir: &std::path::Path) -> anyhow::Result<ExitCode> {
 
 /// `--slurm N`: the design fixed in run.toml files and the two batch scripts
 /// (see `study::slurm`); with `--submit`, both submitted.
-fn run_slurm(args: &StudyArgs, shards: u32) -> anyhow::Result<ExitCode> {
+fn run_slurm(args: &StudyArgs, shards: u32) -> super::Outcome {
     let design = design_from(args)?;
     design.validate()?;
     if let Some(note) = design.balance_note() {
@@ -175,7 +177,7 @@ fn run_slurm(args: &StudyArgs, shards: u32) -> anyhow::Result<ExitCode> {
         time: args.time,
         cpus: args.cpus,
     };
-    slurm::prepare(&job, &design).with_context(|| format!("--out {}", args.out.display()))?;
+    slurm::prepare(&job, &design).map_err(|e| Failure::from(e).context(format!("--out {}", args.out.display())))?;
     let (array, merge) = (job.array_script_path(), job.merge_script_path());
     println!(
         "surfacelab study: {} array tasks ({} shard{} per study{}) and a merge job written:",
@@ -207,21 +209,28 @@ fn run_slurm(args: &StudyArgs, shards: u32) -> anyhow::Result<ExitCode> {
     Ok(ExitCode::SUCCESS)
 }
 
-fn runner_for(args: &StudyArgs, design: StudyDesign, out: &std::path::Path) -> anyhow::Result<Box<dyn TrialRunner>> {
+fn runner_for(args: &StudyArgs, design: StudyDesign, out: &std::path::Path) -> Result<Box<dyn TrialRunner>, Failure> {
     let frames_dir = design.settings.frames.then(|| out.join("frames"));
     let replay = args.replay.clone().or_else(|| design.settings.replay.clone());
     Ok(match replay {
         Some(dir) => {
-            anyhow::ensure!(dir.is_dir(), "--replay {}: not a folder of gesture files", dir.display());
+            if !dir.is_dir() {
+                return Err(Failure::bad_input(anyhow::anyhow!(
+                    "--replay {}: not a folder of gesture files",
+                    dir.display()
+                )));
+            }
             Box::new(ReplayRunner { dir, design })
         }
         None => Box::new(ScriptedRunner::new(design, frames_dir)),
     })
 }
 
-fn design_from(args: &StudyArgs) -> anyhow::Result<StudyDesign> {
+fn design_from(args: &StudyArgs) -> Result<StudyDesign, Failure> {
     let mut d = match &args.from {
-        Some(path) => RunFile::load(path).with_context(|| format!("--from {}", path.display()))?.design,
+        Some(path) => {
+            RunFile::load(path).map_err(|e| Failure::from(e).context(format!("--from {}", path.display())))?.design
+        }
         None => StudyDesign::default(),
     };
     if let Some(n) = args.participants {
@@ -239,7 +248,7 @@ fn design_from(args: &StudyArgs) -> anyhow::Result<StudyDesign> {
     if let Some(ts) = &args.tasks {
         d.tasks.clone_from(ts);
         for t in &d.tasks {
-            crate::scene::load(t).with_context(|| format!("--tasks: task `{t}`"))?;
+            crate::scene::load(t).map_err(|e| Failure::from(e).context(format!("--tasks: task `{t}`")))?;
         }
     }
     if args.no_practice {

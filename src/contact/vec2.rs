@@ -1,8 +1,8 @@
 //! A plain 2D vector in `f64`, the one numeric type of the contact module.
 //!
 //! The module keeps its own small vector rather than borrowing `glam`'s so
-//! that it stays free of the rest of the crate (it is reused by the CLI, the
-//! Joint technique and the trade-off study) and so that every operation the
+//! that it stays free of the rest of the crate (it is reused by the CLI's
+//! `contact` command and the trade-off study) and so that every operation the
 //! geometry relies on (`cross`, `perp`) is spelled out next to its meaning.
 
 use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub, SubAssign};

@@ -48,6 +48,7 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::pipeline::surface::{Hand, HandKind, Pose};
+use crate::scene::{FieldError, FieldReader};
 
 /// The `format` value every gesture file carries.
 pub const FORMAT: &str = "surfacelab-gesture";
@@ -65,14 +66,27 @@ pub enum GestureError {
         #[source]
         source: std::io::Error,
     },
-    #[error("{origin}{}: {message}", at_line(.line.as_ref()))]
-    Syntax { origin: String, line: Option<usize>, message: String },
-    #[error("{origin}{}: field `{field}`: {problem}", at_line(.line.as_ref()))]
-    Field { origin: String, line: Option<usize>, field: String, problem: String },
+    /// Saving a recording failed: the program's fault or the disk's, not the user's.
+    #[error("{origin}: cannot write the gesture file")]
+    Write {
+        origin: String,
+        #[source]
+        source: std::io::Error,
+    },
+    /// Syntax, and values that cannot be used: file, line and field, worded
+    /// as scene errors are.
+    #[error(transparent)]
+    Field(#[from] FieldError),
 }
 
-fn at_line(line: Option<&usize>) -> String {
-    line.map(|l| format!(":{l}")).unwrap_or_default()
+impl crate::error::Kind for GestureError {
+    fn kind(&self) -> crate::error::ErrorKind {
+        match self {
+            GestureError::Io { source, .. } => crate::error::io_kind(source),
+            GestureError::Write { .. } => crate::error::ErrorKind::Runtime,
+            GestureError::Field(_) => crate::error::ErrorKind::BadInput,
+        }
+    }
 }
 
 /// One keyframe of one hand. Values are kept in `f64` exactly as read so
@@ -220,7 +234,7 @@ impl Gesture {
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), GestureError> {
         let path = path.as_ref();
         std::fs::write(path, self.to_string())
-            .map_err(|source| GestureError::Io { origin: path.display().to_string(), source })
+            .map_err(|source| GestureError::Write { origin: path.display().to_string(), source })
     }
 
     pub fn tracks(&self) -> &[Track] {
@@ -315,52 +329,30 @@ struct RawKey {
     pressure: Option<Spanned<f64>>,
 }
 
+/// The gesture's checks; the wording of every error is [`FieldReader`]'s.
 struct Reader<'a> {
-    text: &'a str,
-    origin: &'a str,
+    fields: FieldReader<'a>,
 }
 
 impl Reader<'_> {
-    fn line(&self, offset: usize) -> usize {
-        let end = offset.min(self.text.len());
-        // Pieces between newlines = newlines + 1 = the line number.
-        self.text.as_bytes()[..end].split(|&b| b == b'\n').count()
-    }
-
     fn field<T>(&self, field: impl Into<String>, at: Option<&Spanned<T>>, problem: impl Into<String>) -> GestureError {
-        GestureError::Field {
-            origin: self.origin.to_owned(),
-            line: at.map(|s| self.line(s.span().start)),
-            field: field.into(),
-            problem: problem.into(),
-        }
+        self.fields.error(at.map(|s| s.span().start), field, problem).into()
     }
 
     /// A float field: finite and within `lo..=hi`.
     fn number(&self, field: &str, value: &Spanned<f64>, lo: f64, hi: f64) -> Result<f64, GestureError> {
-        let v = *value.get_ref();
-        if !v.is_finite() {
-            return Err(self.field(field, Some(value), format!("must be a finite number, found {v}")));
-        }
-        if !(lo..=hi).contains(&v) {
-            return Err(self.field(field, Some(value), format!("{v} is out of range {lo}..={hi}")));
-        }
-        Ok(v)
+        Ok(self.fields.number(Some(value.span().start), field, *value.get_ref(), lo, hi)?)
+    }
+
+    /// A float field: finite and greater than 0.
+    fn positive(&self, field: &str, value: &Spanned<f64>) -> Result<f64, GestureError> {
+        Ok(self.fields.positive(Some(value.span().start), field, *value.get_ref())?)
     }
 }
 
 fn parse(text: &str, origin: &str) -> Result<Gesture, GestureError> {
-    let r = Reader { text, origin };
-    let raw: RawFile = toml::from_str(text).map_err(|e| {
-        let line = e.span().map(|s| r.line(s.start));
-        let source_line =
-            line.and_then(|l| text.lines().nth(l - 1)).map(|s| format!(" (at `{}`)", s.trim())).unwrap_or_default();
-        GestureError::Syntax {
-            origin: origin.to_owned(),
-            line,
-            message: format!("{}{source_line}", e.message().trim_end()),
-        }
-    })?;
+    let r = Reader { fields: FieldReader::new(text, origin) };
+    let raw: RawFile = r.fields.parse()?;
 
     match &raw.format {
         None => {
@@ -423,7 +415,7 @@ fn parse(text: &str, origin: &str) -> Result<Gesture, GestureError> {
 fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureError> {
     let path = format!("hands[{i}]");
     let id = u32::try_from(*hand.id.get_ref()).map_err(|_| {
-        r.field(format!("{path}.id"), Some(&hand.id), format!("{} is not in 0..=4294967295", hand.id.get_ref()))
+        r.field(format!("{path}.id"), Some(&hand.id), format!("{} is out of range (0..=4294967295)", hand.id.get_ref()))
     })?;
     let name = hand.kind.get_ref().as_str();
     let mut kind = HandKind::from_name(name).ok_or_else(|| {
@@ -437,7 +429,7 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
     match (&mut kind, &hand.fingers) {
         (HandKind::Fingertips(n), Some(f)) => {
             *n = u8::try_from(*f.get_ref()).ok().filter(|n| (1..=5).contains(n)).ok_or_else(|| {
-                r.field(format!("{path}.fingers"), Some(f), format!("{} is out of range 1..=5", f.get_ref()))
+                r.field(format!("{path}.fingers"), Some(f), format!("{} is out of range (1..=5)", f.get_ref()))
             })?;
         }
         (_, Some(f)) => {
@@ -484,12 +476,16 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
             None => Ok(default),
         };
         let base = previous.unwrap_or(Key { t, pos, angle_deg: 0.0, spread: 1.0, scale: 1.0, pressure: 1.0 });
+        let scale = match &k.scale {
+            Some(v) => r.positive(&at("scale"), v)?,
+            None => base.scale,
+        };
         keys.push(Key {
             t,
             pos,
             angle_deg: or(&k.angle_deg, "angle_deg", f64::MIN, f64::MAX, base.angle_deg)?,
             spread: or(&k.spread, "spread", 0.0, f64::MAX, base.spread)?,
-            scale: or(&k.scale, "scale", f64::MIN_POSITIVE, f64::MAX, base.scale)?,
+            scale,
             pressure: or(&k.pressure, "pressure", 0.0, 1.0, base.pressure)?,
         });
     }

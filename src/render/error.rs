@@ -23,10 +23,28 @@ pub enum RenderError {
     Validation { during: &'static str, message: String },
     #[error("reading the frame back failed: {0}")]
     Readback(String),
-    #[error("could not write {}: {source}", path.display())]
+    #[error("could not write {}", path.display())]
     Png {
         path: PathBuf,
         #[source]
         source: image::ImageError,
     },
+}
+
+impl crate::error::Kind for RenderError {
+    /// Only a PNG path that cannot hold a file and a size the device cannot
+    /// draw are the user's; the rest is the GPU or this module failing.
+    fn kind(&self) -> crate::error::ErrorKind {
+        use crate::error::ErrorKind;
+        match self {
+            RenderError::TargetSize { .. } => ErrorKind::BadInput,
+            RenderError::Png { source: image::ImageError::IoError(io), .. } => crate::error::io_kind(io),
+            RenderError::Gpu(_)
+            | RenderError::InvalidDrawList(_)
+            | RenderError::InvalidOptions(_)
+            | RenderError::Validation { .. }
+            | RenderError::Readback(_)
+            | RenderError::Png { .. } => ErrorKind::Runtime,
+        }
+    }
 }

@@ -22,12 +22,19 @@ pub enum GpuError {
     #[error("no GPU adapter found on backends {backends:?} ({reason}); {hint}", hint = INSTALL_HINT)]
     NoAdapter { backends: wgpu::Backends, reason: String },
     /// An adapter exists but refused to create a device.
-    #[error("adapter \"{adapter}\" could not create a device: {source}")]
+    #[error("adapter \"{adapter}\" could not create a device")]
     RequestDevice {
         adapter: String,
         #[source]
         source: wgpu::RequestDeviceError,
     },
+}
+
+impl crate::error::Kind for GpuError {
+    /// The machine, not the input: no adapter, or one that refused.
+    fn kind(&self) -> crate::error::ErrorKind {
+        crate::error::ErrorKind::Runtime
+    }
 }
 
 /// What `doctor` prints about the adapter rendering will use.

@@ -23,6 +23,7 @@ mod instances;
 pub mod light;
 pub mod mesh;
 mod mesh_library;
+pub mod palette;
 mod pipelines;
 pub mod renderer;
 pub mod samples;

@@ -1,6 +1,6 @@
-//! Hand-made draw lists, defined once and shared by the golden-image tests,
-//! the render benchmark and the demo's "renderer check": one scene, three
-//! uses. Layouts mimic the study's tasks; they are not the
+//! Hand-made draw lists, defined once and shared by the golden-image tests
+//! and the render benchmark: one scene, two uses. Layouts mimic the study's
+//! tasks; they are not the
 //! tasks themselves (those are data under `tasks/`).
 
 use std::f32::consts::{FRAC_PI_2, PI};
@@ -16,10 +16,8 @@ pub mod colors {
     use super::Rgba;
     pub const TABLE: Rgba = [0.56, 0.55, 0.52, 1.0];
     pub const BACKGROUND: Rgba = [0.018, 0.02, 0.026, 1.0];
-    /// Targets and the finish (the caller's choice in the real tasks).
-    pub const TARGET_RED: Rgba = [0.80, 0.03, 0.02, 1.0];
-    pub const WAYPOINT_BLUE: Rgba = [0.03, 0.16, 0.80, 0.9];
-    pub const FEEDBACK_RED: Rgba = [1.0, 0.02, 0.01, 1.0];
+    /// Targets, waypoints and feedback as the demo draws them.
+    pub use crate::render::palette::{FEEDBACK_RED, TARGET_RED, WAYPOINT_BLUE};
     pub const PLATFORM: Rgba = [0.30, 0.31, 0.34, 1.0];
     pub const OBJECTS: [Rgba; 8] = [
         [0.85, 0.40, 0.05, 1.0], // orange

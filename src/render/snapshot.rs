@@ -87,7 +87,7 @@ pub enum SnapshotError {
         new: PathBuf,
         diff: PathBuf,
     },
-    #[error("snapshot {name}: {what} {}: {source}", path.display())]
+    #[error("snapshot {name}: {what} {}", path.display())]
     Io {
         name: String,
         what: &'static str,

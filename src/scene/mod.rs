@@ -5,14 +5,17 @@
 //! benchmarks and the tests all share — one scene definition, many uses.
 
 pub mod builtin;
+mod defaults;
 mod effects;
 mod error;
+pub mod fields;
 mod file;
 mod model;
 mod validate;
 
 pub use effects::{Effect, EffectSet};
 pub use error::SceneError;
+pub use fields::{FieldError, FieldReader};
 pub use model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
     SteeringGoal, Table, Target,

@@ -31,11 +31,6 @@ impl Scene {
         self.objects.iter().position(|o| o.name == name)
     }
 
-    /// Index of the soft body with this name.
-    pub fn soft_body_index(&self, name: &str) -> Option<usize> {
-        self.soft_bodies.iter().position(|o| o.name == name)
-    }
-
     /// True when the table-plane point lies on the table.
     pub fn on_table(&self, p: Vec2) -> bool {
         p.x.abs() <= self.table.width / 2.0 && p.y.abs() <= self.table.depth / 2.0
@@ -268,14 +263,6 @@ impl SoftBodySpec {
             e.insert(Effect::Tearing);
         }
         e
-    }
-
-    /// Rest area of a cloth (m²) or rest volume of a block (m³).
-    pub fn rest_measure(&self) -> f32 {
-        match self.kind {
-            SoftKind::Cloth => self.size.x * self.size.y,
-            SoftKind::Volume => self.size.x * self.size.y * self.size.z,
-        }
     }
 }
 

@@ -1,8 +1,10 @@
 //! From TOML text to a validated [`Scene`]. Input is cleaned once, here, so
 //! everything downstream can trust it.
 
+use super::defaults as default;
 use super::effects::EffectSet;
 use super::error::SceneError;
+use super::fields::FieldReader;
 use super::file::{BodyKindFile, GoalFile, GoalKind, ObjectFile, SceneFile, ShapeKind, SoftBodyFile, SoftKindFile};
 use super::model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
@@ -68,49 +70,37 @@ pub fn load(name_or_path: &str) -> Result<Scene, SceneError> {
 
 /// Parses and validates scene TOML. `origin` names the file in errors.
 pub fn parse(text: &str, origin: &str) -> Result<Scene, SceneError> {
-    let raw: SceneFile = toml::from_str(text)
-        .map_err(|e| SceneError::Parse { origin: origin.to_string(), message: e.to_string().trim_end().to_string() })?;
-    Checker { text, origin }.scene(raw)
+    let fields = FieldReader::new(text, origin);
+    let raw: SceneFile = fields.parse()?;
+    Checker { fields, origin }.scene(raw)
 }
 
+/// The scene's checks; the wording of every error is [`FieldReader`]'s.
 struct Checker<'a> {
-    text: &'a str,
+    fields: FieldReader<'a>,
     origin: &'a str,
 }
 
 impl Checker<'_> {
-    fn line(&self, span: &Range<usize>) -> usize {
-        let end = span.start.min(self.text.len());
-        self.text[..end].bytes().filter(|&b| b == b'\n').count() + 1
-    }
-
     fn err(&self, span: &Range<usize>, field: impl Into<String>, message: impl Into<String>) -> SceneError {
-        SceneError::Invalid {
-            origin: self.origin.to_string(),
-            line: self.line(span),
-            field: field.into(),
-            message: message.into(),
-        }
+        self.fields.error(Some(span.start), field, message).into()
     }
 
     /// A finite number in `lo..=hi` (`hi` may be infinite).
     fn num(&self, span: &Range<usize>, field: &str, v: f32, lo: f32, hi: f32) -> Result<f32, SceneError> {
-        if !v.is_finite() {
-            return Err(self.err(span, field, format!("must be a finite number, got {v}")));
-        }
-        if v < lo || v > hi {
-            let range = if hi.is_finite() { format!("{lo}..={hi}") } else { format!(">= {lo}") };
-            return Err(self.err(span, field, format!("{v} is out of range ({range})")));
-        }
-        Ok(v)
+        Ok(self.fields.number(Some(span.start), field, v, lo, hi)?)
     }
 
     fn positive(&self, span: &Range<usize>, field: &str, v: f32) -> Result<f32, SceneError> {
-        let v = self.num(span, field, v, 0.0, f32::INFINITY)?;
-        if v == 0.0 {
-            return Err(self.err(span, field, "must be greater than 0"));
-        }
-        Ok(v)
+        Ok(self.fields.positive(Some(span.start), field, v)?)
+    }
+
+    /// An integer in `lo..=hi`.
+    fn count<T>(&self, span: &Range<usize>, field: &str, v: T, lo: T, hi: T) -> Result<T, SceneError>
+    where
+        T: Copy + PartialOrd + std::fmt::Display,
+    {
+        Ok(self.fields.in_range(Some(span.start), field, v, lo, hi)?)
     }
 
     fn scene(&self, raw: SceneFile) -> Result<Scene, SceneError> {
@@ -124,15 +114,21 @@ impl Checker<'_> {
             Some(c) => {
                 Color::parse(c).ok_or_else(|| self.err(&tspan, "table.color", format!("unknown colour `{c}`")))?
             }
-            None => Color { rgba: [0.78, 0.80, 0.82, 1.0] },
+            None => Color { rgba: default::TABLE_COLOR },
         };
         let table = Table {
             width,
             depth,
-            friction: self.num(&tspan, "table.friction", t.friction.unwrap_or(0.6), 0.0, 10.0)?,
-            restitution: self.num(&tspan, "table.restitution", t.restitution.unwrap_or(0.1), 0.0, 1.0)?,
+            friction: self.num(&tspan, "table.friction", t.friction.unwrap_or(default::TABLE_FRICTION), 0.0, 10.0)?,
+            restitution: self.num(
+                &tspan,
+                "table.restitution",
+                t.restitution.unwrap_or(default::TABLE_RESTITUTION),
+                0.0,
+                1.0,
+            )?,
             color: table_color,
-            walls: t.walls.unwrap_or(true),
+            walls: t.walls.unwrap_or(default::TABLE_WALLS),
         };
 
         let camera = match raw.camera {
@@ -140,7 +136,7 @@ impl Checker<'_> {
                 let span = c.span();
                 CameraSpec { height: self.positive(&span, "camera.height", c.into_inner().height)? }
             }
-            None => CameraSpec { height: 1.2 },
+            None => CameraSpec { height: default::CAMERA_HEIGHT },
         };
 
         let mut physics = PhysicsSpec::default();
@@ -151,16 +147,10 @@ impl Checker<'_> {
                 physics.dt = 1.0 / self.num(&span, "physics.timestep_hz", hz, 10.0, 10_000.0)?;
             }
             if let Some(n) = p.solver_iterations {
-                if n == 0 || n > 100 {
-                    return Err(self.err(&span, "physics.solver_iterations", format!("{n} is out of range (1..=100)")));
-                }
-                physics.solver_iterations = n;
+                physics.solver_iterations = self.count(&span, "physics.solver_iterations", n, 1, 100)?;
             }
             if let Some(n) = p.pgs_iterations {
-                if n == 0 || n > 100 {
-                    return Err(self.err(&span, "physics.pgs_iterations", format!("{n} is out of range (1..=100)")));
-                }
-                physics.pgs_iterations = n;
+                physics.pgs_iterations = self.count(&span, "physics.pgs_iterations", n, 1, 100)?;
             }
             if let Some(l) = p.length_unit {
                 physics.length_unit = self.positive(&span, "physics.length_unit", l)?;
@@ -182,12 +172,10 @@ impl Checker<'_> {
         }
         for (i, a) in objects.iter().enumerate() {
             if objects[..i].iter().any(|b| b.name == a.name) {
-                return Err(SceneError::Invalid {
-                    origin: self.origin.to_string(),
-                    line: 0,
-                    field: format!("objects.name = \"{}\"", a.name),
-                    message: "duplicate object name".into(),
-                });
+                return Err(self
+                    .fields
+                    .error(None, "objects.name", format!("`{}` is the name of two objects", a.name))
+                    .into());
             }
         }
 
@@ -212,7 +200,7 @@ impl Checker<'_> {
                 let span = s.span();
                 self.positive(&span, "time_limit_s", s.into_inner())?
             }
-            None => 120.0,
+            None => default::TIME_LIMIT_S,
         };
 
         let goal = match raw.goal {
@@ -300,10 +288,8 @@ impl Checker<'_> {
         for (k, v) in base.to_array().iter().enumerate() {
             self.num(&span, &f(&format!("position[{k}]")), *v, -100.0, 100.0)?;
         }
-        let count = o.count.unwrap_or(1);
-        if count == 0 || count > 10_000 {
-            return Err(self.err(&span, f("count"), format!("{count} is out of range (1..=10000)")));
-        }
+        let count =
+            self.count(&span, &f("count"), o.count.unwrap_or(default::OBJECT_COUNT), 1, default::MAX_OBJECT_COUNT)?;
         let step = Vec2::from(o.step.unwrap_or([0.0, 0.0]));
         let per_row = o.per_row.unwrap_or(count).max(1);
         let row_step = Vec2::from(o.row_step.unwrap_or([0.0, 0.0]));
@@ -328,17 +314,29 @@ impl Checker<'_> {
                 name,
                 shape,
                 mass,
-                friction: self.num(&span, &f("friction"), o.friction.unwrap_or(0.5), 0.0, 10.0)?,
-                restitution: self.num(&span, &f("restitution"), o.restitution.unwrap_or(0.1), 0.0, 1.0)?,
+                friction: self.num(&span, &f("friction"), o.friction.unwrap_or(default::OBJECT_FRICTION), 0.0, 10.0)?,
+                restitution: self.num(
+                    &span,
+                    &f("restitution"),
+                    o.restitution.unwrap_or(default::OBJECT_RESTITUTION),
+                    0.0,
+                    1.0,
+                )?,
                 color,
                 position,
                 rotation,
                 body,
-                linear_damping: self.num(&span, &f("linear_damping"), o.linear_damping.unwrap_or(0.0), 0.0, 100.0)?,
+                linear_damping: self.num(
+                    &span,
+                    &f("linear_damping"),
+                    o.linear_damping.unwrap_or(default::OBJECT_DAMPING),
+                    0.0,
+                    100.0,
+                )?,
                 angular_damping: self.num(
                     &span,
                     &f("angular_damping"),
-                    o.angular_damping.unwrap_or(0.0),
+                    o.angular_damping.unwrap_or(default::OBJECT_DAMPING),
                     0.0,
                     100.0,
                 )?,
@@ -379,15 +377,18 @@ impl Checker<'_> {
             &span,
             &f("thickness"),
             b.thickness.unwrap_or(match kind {
-                SoftKind::Cloth => 0.002,
-                SoftKind::Volume => 0.003,
+                SoftKind::Cloth => default::CLOTH_THICKNESS,
+                SoftKind::Volume => default::VOLUME_THICKNESS,
             }),
         )?;
-        if thickness > 0.05 {
-            return Err(self.err(&span, f("thickness"), format!("{thickness} is out of range (up to 0.05 m)")));
+        if thickness > default::MAX_SOFT_THICKNESS {
+            return Err(self.err(
+                &span,
+                f("thickness"),
+                format!("{thickness} is out of range (up to {} m)", default::MAX_SOFT_THICKNESS),
+            ));
         }
-        // About one particle every 2 cm (cloth) or 1.5 cm (volumes) by default.
-        let spacing = if kind == SoftKind::Cloth { 0.02 } else { 0.015 };
+        let spacing = if kind == SoftKind::Cloth { default::CLOTH_SPACING } else { default::VOLUME_SPACING };
         let resolution = if let Some(r) = &b.resolution {
             if r.len() != dims {
                 return Err(self.err(
@@ -397,24 +398,23 @@ impl Checker<'_> {
                 ));
             }
             let mut out = [1usize; 3];
+            let (lo, hi) = default::RESOLUTION_RANGE;
             for (k, n) in r.iter().enumerate() {
-                if !(2..=128).contains(n) {
-                    return Err(self.err(
-                        &span,
-                        f(&format!("resolution[{k}]")),
-                        format!("{n} is out of range (2..=128)"),
-                    ));
-                }
-                out[k] = *n as usize;
+                out[k] = self.count(&span, &f(&format!("resolution[{k}]")), *n, lo, hi)? as usize;
             }
             out
         } else {
-            let n = |l: f32| ((l / spacing).round() as usize + 1).clamp(2, 48);
+            let (lo, hi) = default::AUTO_RESOLUTION;
+            let n = |l: f32| ((l / spacing).round() as usize + 1).clamp(lo, hi);
             [n(size.x), n(size.y), if dims == 3 { n(size.z) } else { 1 }]
         };
         let particles = resolution.iter().product::<usize>();
-        if particles > 8192 {
-            return Err(self.err(&span, f("resolution"), format!("{particles} particles is too many (at most 8192)")));
+        if particles > default::MAX_SOFT_PARTICLES {
+            return Err(self.err(
+                &span,
+                f("resolution"),
+                format!("{particles} particles is too many (at most {})", default::MAX_SOFT_PARTICLES),
+            ));
         }
         let position = match b.position.as_slice() {
             [x, y] => Vec3::new(*x, *y, if kind == SoftKind::Cloth { thickness } else { size.z / 2.0 + thickness }),
@@ -468,15 +468,15 @@ impl Checker<'_> {
             stiffness: self.num(
                 &span,
                 &f("stiffness"),
-                b.stiffness.unwrap_or(DEFAULT_SOFT_STIFFNESS_HZ),
+                b.stiffness.unwrap_or(default::SOFT_STIFFNESS_HZ),
                 0.1,
                 10_000.0,
             )?,
-            bending: self.num(&span, &f("bending"), b.bending.unwrap_or(DEFAULT_CLOTH_BENDING_HZ), 0.0, 10_000.0)?,
+            bending: self.num(&span, &f("bending"), b.bending.unwrap_or(default::CLOTH_BENDING_HZ), 0.0, 10_000.0)?,
             tear_strain,
-            friction: self.num(&span, &f("friction"), b.friction.unwrap_or(0.6), 0.0, 10.0)?,
+            friction: self.num(&span, &f("friction"), b.friction.unwrap_or(default::SOFT_FRICTION), 0.0, 10.0)?,
             thickness,
-            damping: self.num(&span, &f("damping"), b.damping.unwrap_or(0.5), 0.0, 100.0)?,
+            damping: self.num(&span, &f("damping"), b.damping.unwrap_or(default::SOFT_DAMPING), 0.0, 100.0)?,
             crumple: self.num(&span, &f("crumple"), b.crumple.unwrap_or(0.0), 0.0, 0.6)?,
             crease: self.num(&span, &f("crease"), b.crease.unwrap_or(0.0), 0.0, 0.5)?,
             color,
@@ -502,7 +502,7 @@ impl Checker<'_> {
     ) -> Result<Goal, SceneError> {
         let span = g.span();
         let g = g.into_inner();
-        let dwell_s = self.num(&span, "goal.dwell_s", g.dwell_s.unwrap_or(0.5), 0.0, 60.0)?;
+        let dwell_s = self.num(&span, "goal.dwell_s", g.dwell_s.unwrap_or(default::DWELL_S), 0.0, 60.0)?;
         let object_named = |name: &Option<String>, field: &str| -> Result<usize, SceneError> {
             let n = name.as_ref().ok_or_else(|| self.err(&span, field, format!("this goal needs `{field}`")))?;
             objects
@@ -553,7 +553,7 @@ impl Checker<'_> {
                         tolerance: self.positive(
                             &tspan,
                             &format!("goal.targets[{i}].tolerance"),
-                            t.tolerance.unwrap_or(0.015),
+                            t.tolerance.unwrap_or(default::TARGET_TOLERANCE),
                         )?,
                     });
                 }
@@ -598,9 +598,17 @@ impl Checker<'_> {
                     object,
                     platform,
                     waypoints,
-                    waypoint_radius: self.positive(&span, "goal.waypoint_radius", g.waypoint_radius.unwrap_or(0.04))?,
+                    waypoint_radius: self.positive(
+                        &span,
+                        "goal.waypoint_radius",
+                        g.waypoint_radius.unwrap_or(default::WAYPOINT_RADIUS),
+                    )?,
                     finish,
-                    finish_radius: self.positive(&span, "goal.finish_radius", g.finish_radius.unwrap_or(0.04))?,
+                    finish_radius: self.positive(
+                        &span,
+                        "goal.finish_radius",
+                        g.finish_radius.unwrap_or(default::FINISH_RADIUS),
+                    )?,
                 })
             }
             GoalKind::Gather => Goal::Gather {
@@ -614,7 +622,7 @@ impl Checker<'_> {
                     "goal.radius",
                     g.radius.ok_or_else(|| self.err(&span, "goal.radius", "a gather goal needs `radius`"))?,
                 )?,
-                fraction: self.num(&span, "goal.fraction", g.fraction.unwrap_or(0.8), 0.0, 1.0)?,
+                fraction: self.num(&span, "goal.fraction", g.fraction.unwrap_or(default::GATHER_FRACTION), 0.0, 1.0)?,
                 dwell_s,
             },
             GoalKind::Region => {
@@ -653,8 +661,13 @@ impl Checker<'_> {
                     if soft[body].kind != SoftKind::Cloth {
                         return Err(self.err(&span, "goal.body", format!("`{name}` is not a cloth")));
                     }
-                    let min_area_fraction =
-                        self.num(&span, "goal.min_area_fraction", g.min_area_fraction.unwrap_or(0.9), 0.01, 1.0)?;
+                    let min_area_fraction = self.num(
+                        &span,
+                        "goal.min_area_fraction",
+                        g.min_area_fraction.unwrap_or(default::MIN_AREA_FRACTION),
+                        0.01,
+                        1.0,
+                    )?;
                     Goal::ClothFlat { body, min_area_fraction, dwell_s }
                 } else {
                     if soft[body].tear_strain.is_none() {
@@ -664,14 +677,11 @@ impl Checker<'_> {
                             format!("`{name}` cannot tear: give it a `tear_strain`"),
                         ));
                     }
-                    let pieces = g.pieces.unwrap_or(2);
-                    if !(2..=100).contains(&pieces) {
-                        return Err(self.err(&span, "goal.pieces", format!("{pieces} is out of range (2..=100)")));
-                    }
+                    let pieces = self.count(&span, "goal.pieces", g.pieces.unwrap_or(default::TEAR_PIECES), 2, 100)?;
                     let min_piece_fraction = self.num(
                         &span,
                         "goal.min_piece_fraction",
-                        g.min_piece_fraction.unwrap_or(0.1),
+                        g.min_piece_fraction.unwrap_or(default::MIN_PIECE_FRACTION),
                         0.0,
                         1.0 / pieces as f32,
                     )?;
@@ -681,12 +691,6 @@ impl Checker<'_> {
         })
     }
 }
-
-/// Default stretch stiffness of soft bodies (Hz): stiff enough that a sheet
-/// dragged by a hand stretches by a few percent, not by half.
-pub const DEFAULT_SOFT_STIFFNESS_HZ: f32 = 60.0;
-/// Default bending stiffness of cloth (Hz): a sheet that drapes and folds.
-pub const DEFAULT_CLOTH_BENDING_HZ: f32 = 4.0;
 
 fn table_contains(table: &Table, p: Vec2) -> bool {
     p.x.abs() <= table.width / 2.0 + 1e-6 && p.y.abs() <= table.depth / 2.0 + 1e-6

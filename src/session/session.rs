@@ -21,6 +21,15 @@ pub enum SessionError {
     World(#[from] WorldError),
 }
 
+impl crate::error::Kind for SessionError {
+    fn kind(&self) -> crate::error::ErrorKind {
+        match self {
+            SessionError::Config(e) => e.kind(),
+            SessionError::World(e) => e.kind(),
+        }
+    }
+}
+
 /// How a session is set up beyond its scene and technique.
 #[derive(Debug, Clone, PartialEq)]
 pub struct SessionOptions {

@@ -24,6 +24,19 @@ pub enum BehaviourError {
     NoHands { case: String, gesture: String },
 }
 
+impl crate::error::Kind for BehaviourError {
+    /// Cases are data (scene and gesture files): a case that does not fit
+    /// them is bad input, as is any error of the files themselves.
+    fn kind(&self) -> crate::error::ErrorKind {
+        match self {
+            BehaviourError::Scene(e) => e.kind(),
+            BehaviourError::Gesture(e) => e.kind(),
+            BehaviourError::Session(e) => e.kind(),
+            BehaviourError::NoObject { .. } | BehaviourError::NoHands { .. } => crate::error::ErrorKind::BadInput,
+        }
+    }
+}
+
 /// What one run measured.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Outcome {

@@ -178,8 +178,3 @@ pub fn read_anova(path: &Path) -> Result<Vec<AnovaRow>, StudyError> {
     let mut r = csv::Reader::from_path(path).map_err(StudyError::csv(path))?;
     r.deserialize().collect::<Result<_, _>>().map_err(StudyError::csv(path))
 }
-
-pub fn read_pairwise(path: &Path) -> Result<Vec<PairwiseRow>, StudyError> {
-    let mut r = csv::Reader::from_path(path).map_err(StudyError::csv(path))?;
-    r.deserialize().collect::<Result<_, _>>().map_err(StudyError::csv(path))
-}

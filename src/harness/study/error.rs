@@ -10,13 +10,14 @@ pub enum StudyError {
     /// The design cannot be run as given (no participants, duplicate technique, ...).
     #[error("invalid study design: {0}")]
     Design(String),
-    #[error("{}: {source}", path.display())]
+    /// The path alone: the I/O error, its source, follows when the chain is printed.
+    #[error("{}", path.display())]
     Io { path: PathBuf, source: std::io::Error },
-    #[error("{}: {source}", path.display())]
+    #[error("{}", path.display())]
     Csv { path: PathBuf, source: csv::Error },
-    #[error("{}: {source}", path.display())]
+    #[error("{}", path.display())]
     TomlRead { path: PathBuf, source: toml::de::Error },
-    #[error("cannot write run file: {0}")]
+    #[error("cannot write the run file")]
     TomlWrite(#[from] toml::ser::Error),
     /// `--out` names a folder that already holds a run.
     #[error("{} already holds a study run (trials.csv or run.toml); resume it with --resume or pick another folder", path.display())]
@@ -31,6 +32,25 @@ pub enum StudyError {
     Merge(String),
     #[error("{}: drawing the figure failed: {message}", path.display())]
     Plot { path: PathBuf, message: String },
+}
+
+impl crate::error::Kind for StudyError {
+    /// A design, folder or file the user named that is wrong is bad input;
+    /// writing results or drawing figures failing is a run-time failure.
+    fn kind(&self) -> crate::error::ErrorKind {
+        use crate::error::ErrorKind;
+        match self {
+            StudyError::Design(_)
+            | StudyError::Csv { .. }
+            | StudyError::TomlRead { .. }
+            | StudyError::AlreadyExists { .. }
+            | StudyError::Mismatch { .. }
+            | StudyError::Locked { .. }
+            | StudyError::Merge(_) => ErrorKind::BadInput,
+            StudyError::Io { source, .. } => crate::error::io_kind(source),
+            StudyError::TomlWrite(_) | StudyError::Plot { .. } => ErrorKind::Runtime,
+        }
+    }
 }
 
 impl StudyError {

@@ -92,8 +92,3 @@ pub fn summarize_seeds(dir: &Path, runs: &[PathBuf]) -> Result<Vec<FindingsRow>,
     }
     Ok(rows)
 }
-
-pub fn read_findings(path: &Path) -> Result<Vec<FindingsRow>, StudyError> {
-    let mut r = csv::Reader::from_path(path).map_err(StudyError::csv(path))?;
-    r.deserialize().collect::<Result<_, _>>().map_err(StudyError::csv(path))
-}

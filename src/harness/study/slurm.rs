@@ -284,12 +284,19 @@ pub fn prepare(job: &SlurmJob, design: &StudyDesign) -> Result<(), StudyError> {
 /// `sbatch` could not submit.
 #[derive(Debug, thiserror::Error)]
 pub enum SubmitError {
-    #[error("cannot run `sbatch` ({source}); is this a Slurm login node? Submit the scripts in {} yourself", dir.display())]
+    #[error("cannot run `sbatch` (is this a Slurm login node? Submit the scripts in {} yourself)", dir.display())]
     Spawn { dir: PathBuf, source: std::io::Error },
     #[error("`sbatch {args}` failed ({status}): {stderr}")]
     Failed { args: String, status: std::process::ExitStatus, stderr: String },
     #[error("`sbatch {args}` printed `{stdout}`, not a job id")]
     NoJobId { args: String, stdout: String },
+}
+
+impl crate::error::Kind for SubmitError {
+    /// The scripts are written and right; the cluster refused or is absent.
+    fn kind(&self) -> crate::error::ErrorKind {
+        crate::error::ErrorKind::Runtime
+    }
 }
 
 /// The job ids `--submit` got.

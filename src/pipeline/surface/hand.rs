@@ -64,11 +64,6 @@ impl HandKind {
     pub fn from_name(name: &str) -> Option<Self> {
         Self::ALL.into_iter().find(|k| k.name() == name)
     }
-
-    /// A physical object rather than a body part.
-    pub fn is_tangible(self) -> bool {
-        matches!(self, Self::Ruler | Self::Cup | Self::Card)
-    }
 }
 
 /// Where a hand lies: position on the table (metres) and rotation of its

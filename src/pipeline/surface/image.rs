@@ -46,17 +46,4 @@ impl ContactImage {
     pub fn is_blank(&self) -> bool {
         self.pixels.iter().all(|&p| p == 0)
     }
-
-    /// Number of pixels at or above `level`.
-    pub fn count_at_least(&self, level: u8) -> usize {
-        self.pixels.iter().filter(|&&p| p >= level).count()
-    }
-
-    /// The image as a binary PGM (P5) file, for snapshots and debugging
-    /// without an image crate.
-    pub fn to_pgm(&self) -> Vec<u8> {
-        let mut out = format!("P5\n{} {}\n255\n", self.width, self.height).into_bytes();
-        out.extend_from_slice(&self.pixels);
-        out
-    }
 }

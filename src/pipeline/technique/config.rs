@@ -124,6 +124,13 @@ pub struct ConfigError {
     pub message: String,
 }
 
+impl crate::error::Kind for ConfigError {
+    /// The table comes from a scene file the user named.
+    fn kind(&self) -> crate::error::ErrorKind {
+        crate::error::ErrorKind::BadInput
+    }
+}
+
 impl TechniqueConfig {
     /// Defaults overridden by a scene's `[technique]` table.
     pub fn from_scene_table(table: &toml::Table, origin: &str) -> Result<Self, ConfigError> {

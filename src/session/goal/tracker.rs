@@ -1,7 +1,7 @@
 //! [`GoalTracker`]: evaluates a scene goal on the world, step by step.
 
 use crate::pipeline::world::{ObjectPose, World};
-use crate::scene::{Goal, Scene, SteeringGoal};
+use crate::scene::{Goal, Scene, SortingZone, SteeringGoal, Target};
 use glam::{Quat, Vec2, Vec3};
 
 /// Speed (m/s) below which an object counts as resting for a dwell.
@@ -97,60 +97,11 @@ impl GoalTracker {
         let goal = self.goal.clone();
         let done = match &goal {
             Goal::None => false,
-            Goal::Positioning { targets, dwell_s } => {
-                for t in targets {
-                    if self.placed[t.object] {
-                        continue;
-                    }
-                    let p = poses[t.object];
-                    let ok = resting(&p) && (p.position.truncate() - t.position).length() <= t.tolerance;
-                    if self.dwell_step(t.object, ok, dt, *dwell_s) {
-                        self.placed[t.object] = true;
-                        world.remove_object(t.object);
-                    }
-                }
-                self.progress.placed = self.placed.iter().filter(|p| **p).count();
-                self.progress.placed == targets.len()
-            }
-            Goal::Sorting { zones, dwell_s } => {
-                let scene = world.scene();
-                let mut in_place = 0;
-                let mut all = true;
-                let mut oks = Vec::new();
-                for (i, o) in scene.objects.iter().enumerate() {
-                    let mine: Vec<_> = zones.iter().filter(|z| z.color == o.color).collect();
-                    if mine.is_empty() {
-                        continue;
-                    }
-                    let p = poses[i];
-                    let ok = resting(&p) && mine.iter().any(|z| z.contains(p.position.truncate()));
-                    oks.push((i, ok));
-                }
-                for (i, ok) in oks {
-                    let settled = self.dwell_step(i, ok, dt, *dwell_s);
-                    if settled {
-                        in_place += 1;
-                    } else {
-                        all = false;
-                    }
-                }
-                self.progress.placed = in_place;
-                all
-            }
+            Goal::Positioning { targets, dwell_s } => self.position(world, targets, *dwell_s, &poses),
+            Goal::Sorting { zones, dwell_s } => self.sort(world, zones, *dwell_s, &poses),
             Goal::Steering(g) => self.steer(world, g, &poses),
             Goal::Gather { center, radius, fraction, dwell_s } => {
-                let dynamic: Vec<usize> = (0..poses.len())
-                    .filter(|&i| world.scene().objects[i].body == crate::scene::BodyKind::Dynamic)
-                    .collect();
-                let mut inside = 0;
-                for &i in &dynamic {
-                    let ok = (poses[i].position.truncate() - *center).length() <= *radius && resting(&poses[i]);
-                    if self.dwell_step(i, ok, dt, *dwell_s) {
-                        inside += 1;
-                    }
-                }
-                self.progress.placed = inside;
-                !dynamic.is_empty() && inside as f32 >= fraction * dynamic.len() as f32
+                self.gather(world, (*center, *radius), *fraction, *dwell_s, &poses)
             }
             Goal::Region { object, min, max, max_height, dwell_s } => {
                 let p = poses[*object].position;
@@ -168,16 +119,12 @@ impl GoalTracker {
                 let ok = world.soft_center(*body).is_some_and(|c| {
                     c.x >= min.x && c.x <= max.x && c.y >= min.y && c.y <= max.y && c.z <= *max_height
                 }) && world.soft_max_speed(*body) < SOFT_REST_SPEED;
-                let done = self.soft_dwell_step(ok, dt, *dwell_s);
-                self.progress.placed = usize::from(done);
-                done
+                self.soft_done(ok, dt, *dwell_s)
             }
             Goal::ClothFlat { body, min_area_fraction, dwell_s } => {
                 let ok =
                     world.soft_max_speed(*body) < SOFT_REST_SPEED && world.soft_coverage(*body) >= *min_area_fraction;
-                let done = self.soft_dwell_step(ok, dt, *dwell_s);
-                self.progress.placed = usize::from(done);
-                done
+                self.soft_done(ok, dt, *dwell_s)
             }
             Goal::Torn { body, pieces, min_piece_fraction } => {
                 let masses = world.soft_piece_masses(*body);
@@ -192,6 +139,87 @@ impl GoalTracker {
             self.progress.completed_at = Some(world.time());
         }
         self.progress
+    }
+
+    /// Positioning: each object that rests on its target for the dwell is
+    /// placed and vanishes; done when all are.
+    fn position(&mut self, world: &mut World, targets: &[Target], dwell_s: f32, poses: &[ObjectPose]) -> bool {
+        let dt = world.dt();
+        for t in targets {
+            if self.placed[t.object] {
+                continue;
+            }
+            let p = poses[t.object];
+            let ok = resting(&p) && (p.position.truncate() - t.position).length() <= t.tolerance;
+            if self.dwell_step(t.object, ok, dt, dwell_s) {
+                self.placed[t.object] = true;
+                world.remove_object(t.object);
+            }
+        }
+        self.progress.placed = self.placed.iter().filter(|p| **p).count();
+        self.progress.placed == targets.len()
+    }
+
+    /// Sorting: every object with a zone of its colour rests in one for
+    /// the dwell; objects without a zone do not matter.
+    fn sort(&mut self, world: &World, zones: &[SortingZone], dwell_s: f32, poses: &[ObjectPose]) -> bool {
+        let dt = world.dt();
+        let oks: Vec<(usize, bool)> = world
+            .scene()
+            .objects
+            .iter()
+            .enumerate()
+            .filter_map(|(i, o)| {
+                let mine: Vec<_> = zones.iter().filter(|z| z.color == o.color).collect();
+                if mine.is_empty() {
+                    return None;
+                }
+                let p = poses[i];
+                Some((i, resting(&p) && mine.iter().any(|z| z.contains(p.position.truncate()))))
+            })
+            .collect();
+        let mut in_place = 0;
+        let mut all = true;
+        for (i, ok) in oks {
+            if self.dwell_step(i, ok, dt, dwell_s) {
+                in_place += 1;
+            } else {
+                all = false;
+            }
+        }
+        self.progress.placed = in_place;
+        all
+    }
+
+    /// Gather: at least `fraction` of the dynamic objects rest within the
+    /// circle `(center, radius)` for the dwell.
+    fn gather(
+        &mut self,
+        world: &World,
+        (center, radius): (Vec2, f32),
+        fraction: f32,
+        dwell_s: f32,
+        poses: &[ObjectPose],
+    ) -> bool {
+        let dt = world.dt();
+        let dynamic: Vec<usize> =
+            (0..poses.len()).filter(|&i| world.scene().objects[i].body == crate::scene::BodyKind::Dynamic).collect();
+        let mut inside = 0;
+        for &i in &dynamic {
+            let ok = (poses[i].position.truncate() - center).length() <= radius && resting(&poses[i]);
+            if self.dwell_step(i, ok, dt, dwell_s) {
+                inside += 1;
+            }
+        }
+        self.progress.placed = inside;
+        !dynamic.is_empty() && inside as f32 >= fraction * dynamic.len() as f32
+    }
+
+    /// A soft goal met for the dwell counts as its one placed item.
+    fn soft_done(&mut self, ok: bool, dt: f32, dwell_s: f32) -> bool {
+        let done = self.soft_dwell_step(ok, dt, dwell_s);
+        self.progress.placed = usize::from(done);
+        done
     }
 
     /// Advances one object's dwell timer; true once it has held for `need` s.
@@ -245,4 +273,196 @@ impl GoalTracker {
 
 fn resting(p: &ObjectPose) -> bool {
     p.active && p.linvel.length() < REST_SPEED
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene;
+
+    /// Steps the world and the tracker together `n` times.
+    fn run(world: &mut World, tracker: &mut GoalTracker, n: usize) -> Progress {
+        for _ in 0..n {
+            world.step();
+            tracker.update(world);
+        }
+        tracker.progress()
+    }
+
+    fn setup(toml: &str) -> (World, GoalTracker) {
+        let scene = scene::parse(toml, "test.toml").unwrap_or_else(|e| panic!("{e}"));
+        (World::new(&scene), GoalTracker::new(&scene))
+    }
+
+    /// A 5 cm cube at the table centre and its target 20 cm away; dwell 0.5 s
+    /// at 60 Hz is 30 steps.
+    const POSITIONING: &str = r#"name = "p"
+effects = ["gravity", "friction"]
+[table]
+size = [1.0, 0.75]
+[[objects]]
+name = "cube"
+shape = "box"
+size = [0.05, 0.05, 0.05]
+mass = 0.1
+color = "red"
+position = [0.0, 0.0]
+[goal]
+kind = "positioning"
+dwell_s = 0.5
+[[goal.targets]]
+object = "cube"
+position = [0.2, 0.1]
+tolerance = 0.015
+"#;
+
+    fn put(world: &mut World, i: usize, x: f32, y: f32) {
+        let z = world.scene().objects[i].position.z;
+        world.place_object(i, Vec3::new(x, y, z), Quat::IDENTITY);
+    }
+
+    #[test]
+    fn an_object_counts_once_it_has_rested_on_its_target_for_the_dwell() {
+        let (mut world, mut tracker) = setup(POSITIONING);
+        assert_eq!(tracker.progress().total, 1);
+        let p = run(&mut world, &mut tracker, 60);
+        assert_eq!((p.placed, p.complete), (0, false), "resting away from the target does not count");
+        put(&mut world, 0, 0.2, 0.1);
+        let p = run(&mut world, &mut tracker, 25);
+        assert_eq!((p.placed, p.complete), (0, false), "25 steps (0.42 s) is short of the 0.5 s dwell");
+        let p = run(&mut world, &mut tracker, 10);
+        assert_eq!((p.placed, p.complete), (1, true), "35 steps (0.58 s) is past it");
+        assert!(tracker.is_placed(0) && !world.is_active(0), "a placed object vanishes");
+        // 60 steps away, then 30 or 31 steps of dwell (0.5 s in f32 sums of 1/60).
+        let at = p.completed_at.expect("completion time");
+        assert!((90.0 / 60.0..=91.5 / 60.0).contains(&at), "completed at {at} s");
+    }
+
+    #[test]
+    fn leaving_the_target_restarts_the_dwell() {
+        let (mut world, mut tracker) = setup(POSITIONING);
+        put(&mut world, 0, 0.2, 0.1);
+        run(&mut world, &mut tracker, 25);
+        // Just outside the tolerance for one step: the 25 steps are lost.
+        put(&mut world, 0, 0.2 + 0.03, 0.1);
+        run(&mut world, &mut tracker, 1);
+        put(&mut world, 0, 0.2, 0.1);
+        let p = run(&mut world, &mut tracker, 25);
+        assert!(!p.complete, "the dwell started again");
+        let p = run(&mut world, &mut tracker, 10);
+        assert!(p.complete);
+    }
+
+    #[test]
+    fn sorting_counts_only_objects_in_a_zone_of_their_colour() {
+        let (mut world, mut tracker) = setup(
+            r#"name = "s"
+effects = ["gravity", "friction"]
+[table]
+size = [1.0, 0.75]
+[[objects]]
+name = "r"
+shape = "box"
+size = [0.04, 0.04, 0.04]
+mass = 0.1
+color = "red"
+position = [-0.3, -0.2]
+[[objects]]
+name = "b"
+shape = "box"
+size = [0.04, 0.04, 0.04]
+mass = 0.1
+color = "blue"
+position = [-0.3, 0.2]
+[goal]
+kind = "sorting"
+dwell_s = 0.25
+[[goal.zones]]
+color = "red"
+min = [0.1, 0.1]
+max = [0.3, 0.3]
+"#,
+        );
+        assert_eq!(tracker.progress().total, 1, "only the red object has a zone");
+        put(&mut world, 1, 0.2, 0.2);
+        let p = run(&mut world, &mut tracker, 60);
+        assert_eq!((p.placed, p.complete), (0, false), "blue in the red zone does not count");
+        put(&mut world, 0, 0.15, 0.15);
+        let p = run(&mut world, &mut tracker, 20);
+        assert_eq!((p.placed, p.complete), (1, true));
+        assert!(world.is_active(0), "sorted objects stay on the table");
+    }
+
+    const STEERING: &str = r#"name = "st"
+effects = ["gravity", "friction"]
+[table]
+size = [1.0, 0.75]
+[[objects]]
+name = "platform"
+shape = "box"
+body = "fixed"
+size = [0.8, 0.5, 0.05]
+color = "grey"
+position = [0.0, 0.0]
+[[objects]]
+name = "puck"
+shape = "cylinder"
+radius = 0.02
+height = 0.02
+mass = 0.05
+color = "red"
+position = [0.3, 0.0, 0.061]
+[goal]
+kind = "steering"
+object = "puck"
+platform = "platform"
+waypoints = [[0.1, 0.0], [-0.1, 0.0]]
+waypoint_radius = 0.04
+finish = [-0.3, 0.0]
+finish_radius = 0.04
+"#;
+
+    fn put_on_platform(world: &mut World, x: f32, y: f32) {
+        world.place_object(1, Vec3::new(x, y, 0.061), Quat::IDENTITY);
+    }
+
+    #[test]
+    fn steering_passes_waypoints_in_order_then_the_finish() {
+        let (mut world, mut tracker) = setup(STEERING);
+        assert_eq!(tracker.progress().total, 3, "two waypoints and the finish");
+        assert_eq!(tracker.next_waypoint(), Some(Vec2::new(0.1, 0.0)));
+        // The finish before the waypoints does not count, nor does the second waypoint first.
+        put_on_platform(&mut world, -0.3, 0.0);
+        let p = run(&mut world, &mut tracker, 5);
+        assert_eq!((p.waypoints_passed, p.complete), (0, false));
+        put_on_platform(&mut world, -0.1, 0.0);
+        assert_eq!(run(&mut world, &mut tracker, 5).waypoints_passed, 0);
+        put_on_platform(&mut world, 0.11, 0.01);
+        assert_eq!(run(&mut world, &mut tracker, 5).waypoints_passed, 1);
+        assert_eq!(tracker.next_waypoint(), Some(Vec2::new(-0.1, 0.0)));
+        put_on_platform(&mut world, -0.1, 0.02);
+        let p = run(&mut world, &mut tracker, 5);
+        assert_eq!((p.waypoints_passed, p.placed, p.complete), (2, 2, false));
+        assert_eq!(tracker.next_waypoint(), Some(Vec2::new(-0.3, 0.0)));
+        put_on_platform(&mut world, -0.3, 0.0);
+        let p = run(&mut world, &mut tracker, 1);
+        assert_eq!((p.placed, p.complete, p.restarts), (3, true, 0));
+    }
+
+    #[test]
+    fn dropping_the_steered_object_restarts_from_the_start() {
+        let (mut world, mut tracker) = setup(STEERING);
+        put_on_platform(&mut world, 0.1, 0.0);
+        assert_eq!(run(&mut world, &mut tracker, 5).waypoints_passed, 1);
+        // Off the platform's edge, on the table: 5 cm below its top.
+        world.place_object(1, Vec3::new(0.45, 0.3, 0.011), Quat::IDENTITY);
+        let p = run(&mut world, &mut tracker, 1);
+        assert_eq!((p.restarts, p.waypoints_passed, p.complete), (1, 0, false));
+        let back = world.object_pose(1).position;
+        assert!((back - Vec3::new(0.3, 0.0, 0.061)).length() < 0.01, "back at the start: {back}");
+        assert_eq!(tracker.next_waypoint(), Some(Vec2::new(0.1, 0.0)));
+        // Resting on the platform is no drop.
+        let p = run(&mut world, &mut tracker, 60);
+        assert_eq!(p.restarts, 1);
+    }
 }

@@ -1,0 +1,178 @@
+//! Reading the fields of a TOML file with errors that name the file, the
+//! line and the field. Every format the crate reads by hand (scenes,
+//! gestures) checks its values here, so they are worded one way:
+//!
+//! ```text
+//! tasks/x.toml:16: field `objects[0].mass`: -0.12 is out of range (>= 0)
+//! g.toml:9: unknown field `postion`, expected one of `t`, `pos`, ... (at `postion = [0.0, 0.0]`)
+//! ```
+
+use serde::de::DeserializeOwned;
+use std::fmt::Display;
+
+/// A file whose text does not parse, or whose values make no sense.
+#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
+pub enum FieldError {
+    /// TOML syntax, or text that does not fit the format (an unknown key, a
+    /// wrong type, a missing field): toml's message and the line it points at.
+    #[error("{origin}{}: {message}", at_line(*.line))]
+    Syntax { origin: String, line: Option<usize>, message: String },
+    /// A value that parses but cannot be used.
+    #[error("{origin}{}: field `{field}`: {problem}", at_line(*.line))]
+    Value { origin: String, line: Option<usize>, field: String, problem: String },
+}
+
+fn at_line(line: Option<usize>) -> String {
+    line.map(|l| format!(":{l}")).unwrap_or_default()
+}
+
+/// One file's text and the name its errors carry.
+#[derive(Debug, Clone, Copy)]
+pub struct FieldReader<'a> {
+    text: &'a str,
+    origin: &'a str,
+}
+
+impl<'a> FieldReader<'a> {
+    pub fn new(text: &'a str, origin: &'a str) -> Self {
+        Self { text, origin }
+    }
+
+    pub fn origin(&self) -> &'a str {
+        self.origin
+    }
+
+    /// Deserializes the whole file; syntax and shape errors name the line
+    /// and quote it.
+    pub fn parse<T: DeserializeOwned>(&self) -> Result<T, FieldError> {
+        toml::from_str(self.text).map_err(|e| {
+            let line = e.span().map(|s| self.line(s.start));
+            let quoted = line
+                .and_then(|l| self.text.lines().nth(l - 1))
+                .map(str::trim)
+                .filter(|s| !s.is_empty())
+                .map(|s| format!(" (at `{s}`)"))
+                .unwrap_or_default();
+            FieldError::Syntax {
+                origin: self.origin.to_owned(),
+                line,
+                message: format!("{}{quoted}", e.message().trim_end()),
+            }
+        })
+    }
+
+    /// The 1-based line of a byte offset.
+    pub fn line(&self, offset: usize) -> usize {
+        let end = offset.min(self.text.len());
+        // Pieces between newlines = newlines + 1 = the line number.
+        self.text.as_bytes()[..end].split(|&b| b == b'\n').count()
+    }
+
+    /// An error about `field`, at the line of byte offset `at` when known.
+    pub fn error(&self, at: Option<usize>, field: impl Into<String>, problem: impl Into<String>) -> FieldError {
+        FieldError::Value {
+            origin: self.origin.to_owned(),
+            line: at.map(|o| self.line(o)),
+            field: field.into(),
+            problem: problem.into(),
+        }
+    }
+
+    /// A value (a count, an index) within `lo..=hi`.
+    pub fn in_range<T>(&self, at: Option<usize>, field: &str, v: T, lo: T, hi: T) -> Result<T, FieldError>
+    where
+        T: Copy + PartialOrd + Display,
+    {
+        if v >= lo && v <= hi {
+            return Ok(v);
+        }
+        Err(self.error(at, field, format!("{v} is out of range ({lo}..={hi})")))
+    }
+
+    /// A finite number within `lo..=hi`. A bound at or beyond `f32::MAX`
+    /// in size counts as no bound: the message then says `>= lo` or `<= hi`.
+    pub fn number<T>(&self, at: Option<usize>, field: &str, v: T, lo: T, hi: T) -> Result<T, FieldError>
+    where
+        T: Copy + PartialOrd + Display + Into<f64>,
+    {
+        if !v.into().is_finite() {
+            return Err(self.error(at, field, format!("must be a finite number, got {v}")));
+        }
+        if v >= lo && v <= hi {
+            return Ok(v);
+        }
+        let unbounded = |b: T| b.into().abs() >= f64::from(f32::MAX);
+        let range = match (unbounded(lo), unbounded(hi)) {
+            (false, false) => format!("{lo}..={hi}"),
+            (false, true) => format!(">= {lo}"),
+            (true, false) => format!("<= {hi}"),
+            (true, true) => unreachable!("a finite number lies within unbounded limits"),
+        };
+        Err(self.error(at, field, format!("{v} is out of range ({range})")))
+    }
+
+    /// A finite number greater than 0.
+    pub fn positive<T>(&self, at: Option<usize>, field: &str, v: T) -> Result<T, FieldError>
+    where
+        T: Copy + PartialOrd + Display + Into<f64>,
+    {
+        if !v.into().is_finite() {
+            return Err(self.error(at, field, format!("must be a finite number, got {v}")));
+        }
+        if v.into() <= 0.0 {
+            return Err(self.error(at, field, format!("{v} must be greater than 0")));
+        }
+        Ok(v)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TEXT: &str = "a = 1\nb = 2.5\n";
+
+    #[test]
+    fn errors_name_file_line_and_field() {
+        let r = FieldReader::new(TEXT, "f.toml");
+        let at = Some(TEXT.find("b =").expect("b"));
+        assert_eq!(
+            r.number(at, "b", 2.5_f64, 0.0, 1.0).expect_err("out").to_string(),
+            "f.toml:2: field `b`: 2.5 is out of range (0..=1)"
+        );
+        assert_eq!(
+            r.number(at, "b", -1.0_f32, 0.0, f32::INFINITY).expect_err("out").to_string(),
+            "f.toml:2: field `b`: -1 is out of range (>= 0)"
+        );
+        assert_eq!(
+            r.number(at, "b", -1.0_f64, 0.0, f64::MAX).expect_err("out").to_string(),
+            "f.toml:2: field `b`: -1 is out of range (>= 0)"
+        );
+        assert_eq!(
+            r.number(None, "b", f64::NAN, 0.0, 1.0).expect_err("nan").to_string(),
+            "f.toml: field `b`: must be a finite number, got NaN"
+        );
+        assert_eq!(
+            r.positive(at, "b", 0.0_f32).expect_err("zero").to_string(),
+            "f.toml:2: field `b`: 0 must be greater than 0"
+        );
+        assert_eq!(
+            r.in_range(at, "n", 0_u32, 1, 100).expect_err("n").to_string(),
+            "f.toml:2: field `n`: 0 is out of range (1..=100)"
+        );
+        assert_eq!(r.number(at, "b", 0.5_f64, 0.0, 1.0), Ok(0.5));
+    }
+
+    #[test]
+    fn syntax_errors_quote_the_line() {
+        #[derive(serde::Deserialize, Debug)]
+        #[serde(deny_unknown_fields)]
+        #[allow(dead_code)]
+        struct F {
+            a: i64,
+        }
+        let e = FieldReader::new(TEXT, "f.toml").parse::<F>().expect_err("b is unknown").to_string();
+        assert!(e.starts_with("f.toml:2: unknown field `b`"), "{e}");
+        assert!(e.ends_with("(at `b = 2.5`)"), "{e}");
+    }
+}

@@ -1,0 +1,327 @@
+//! One negative test per class of scene-validator error: each breaks one
+//! field of a scene that loads, and checks that the message names the file,
+//! the line where the validator knows it, the field, and what was wrong.
+
+use surfacelab::scene;
+
+/// A positioning scene that loads; every test breaks one thing in it.
+const OBJECTS: &str = r#"name = "t"
+effects = ["gravity"]
+[table]
+size = [1.0, 0.75]
+[[objects]]
+name = "a"
+shape = "box"
+size = [0.1, 0.1, 0.1]
+mass = 1.0
+color = "red"
+position = [0.0, 0.0]
+[[objects]]
+name = "ball"
+shape = "sphere"
+radius = 0.03
+mass = 0.1
+color = "blue"
+position = [0.2, 0.0]
+[goal]
+kind = "positioning"
+[[goal.targets]]
+object = "a"
+position = [0.2, 0.1]
+"#;
+
+/// A cloth that may tear, with a goal on it.
+const SOFT: &str = r#"name = "s"
+effects = ["gravity", "cloth", "tearing"]
+[table]
+size = [1.0, 0.75]
+[[soft_bodies]]
+name = "paper"
+kind = "cloth"
+size = [0.3, 0.2]
+resolution = [16, 11]
+position = [0.0, 0.0]
+mass = 0.03
+tear_strain = 0.25
+color = "white"
+[goal]
+kind = "torn"
+body = "paper"
+"#;
+
+/// A steering scene: an object, a platform, waypoints and a finish.
+const STEER: &str = r#"name = "st"
+effects = ["gravity"]
+[table]
+size = [1.0, 0.75]
+[[objects]]
+name = "puck"
+shape = "cylinder"
+radius = 0.025
+height = 0.02
+mass = 0.05
+color = "red"
+position = [0.3, 0.2]
+[goal]
+kind = "steering"
+object = "puck"
+waypoints = [[0.1, 0.18]]
+finish = [-0.3, -0.2]
+"#;
+
+/// `text` with `from` replaced by `to`; `from` must occur, so a test cannot
+/// silently stop breaking anything.
+fn with(text: &str, from: &str, to: &str) -> String {
+    assert!(text.contains(from), "`{from}` is not in the template");
+    text.replacen(from, to, 1)
+}
+
+fn error(text: &str) -> String {
+    match scene::parse(text, "bad.toml") {
+        Ok(_) => panic!("should not load:\n{text}"),
+        Err(e) => e.to_string(),
+    }
+}
+
+/// The error names the file, the line (when given), the field and `what`.
+fn assert_names(e: &str, line: Option<usize>, field: &str, what: &str) {
+    let prefix = line.map_or_else(|| "bad.toml: ".to_owned(), |l| format!("bad.toml:{l}: "));
+    assert!(e.starts_with(&prefix), "expected `{prefix}` first: {e}");
+    assert!(e.contains(&format!("`{field}`")), "expected field `{field}`: {e}");
+    assert!(e.contains(what), "expected `{what}`: {e}");
+}
+
+#[test]
+fn the_templates_load() {
+    for t in [OBJECTS, SOFT, STEER] {
+        scene::parse(t, "good.toml").unwrap_or_else(|e| panic!("{e}\n{t}"));
+    }
+}
+
+#[test]
+fn an_unknown_key_is_named_with_its_line() {
+    let e = error(&with(OBJECTS, "mass = 1.0\n", "mass = 1.0\nmas = 2.0\n"));
+    assert_names(&e, Some(10), "mas", "unknown field");
+    assert!(e.ends_with("(at `mas = 2.0`)"), "{e}");
+}
+
+#[test]
+fn a_wrong_type_is_named_with_its_line() {
+    let e = error(&with(OBJECTS, "radius = 0.03", "radius = \"big\""));
+    assert!(e.starts_with("bad.toml:15: invalid type: string \"big\", expected f32"), "{e}");
+}
+
+#[test]
+fn an_unknown_name_in_a_closed_list_is_named() {
+    let e = error(&with(OBJECTS, "shape = \"box\"", "shape = \"pyramid\""));
+    assert_names(&e, Some(7), "pyramid", "unknown variant");
+    let e = error(&with(OBJECTS, "[\"gravity\"]", "[\"gravity\", \"magnetism\"]"));
+    assert_names(&e, Some(2), "magnetism", "unknown variant");
+    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"juggling\""));
+    assert_names(&e, Some(20), "juggling", "unknown variant");
+}
+
+#[test]
+fn a_missing_required_field_is_named() {
+    let e = error(&with(OBJECTS, "name = \"t\"\n", ""));
+    assert!(e.starts_with("bad.toml") && e.contains("missing field `name`"), "{e}");
+}
+
+#[test]
+fn a_missing_field_a_shape_or_body_needs_is_named() {
+    let e = error(&with(OBJECTS, "size = [0.1, 0.1, 0.1]\n", ""));
+    assert_names(&e, Some(5), "objects[0].size", "a box needs `size = [x, y, z]`");
+    let e = error(&with(OBJECTS, "radius = 0.03\n", ""));
+    assert_names(&e, Some(12), "objects[1].radius", "a sphere needs `radius`");
+    let e = error(&with(OBJECTS, "mass = 0.1\n", ""));
+    assert_names(&e, Some(12), "objects[1].mass", "a dynamic object needs `mass`");
+    let e = error(&with(SOFT, "mass = 0.03\n", ""));
+    assert_names(&e, Some(5), "soft_bodies[0].mass", "needs `mass` (kg) or `density`");
+}
+
+#[test]
+fn a_missing_field_a_goal_needs_is_named() {
+    let e = error(&with(STEER, "finish = [-0.3, -0.2]\n", ""));
+    assert_names(&e, Some(13), "goal.finish", "a steering goal needs `finish`");
+    let e = error(&with(STEER, "object = \"puck\"\n", ""));
+    assert_names(&e, Some(13), "goal.object", "this goal needs `goal.object`");
+    let e = error(&with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", ""));
+    assert_names(&e, Some(19), "goal.targets", "at least one [[goal.targets]]");
+    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"sorting\""));
+    assert_names(&e, Some(19), "goal.zones", "at least one [[goal.zones]]");
+    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"gather\""));
+    assert_names(&e, Some(19), "goal.center", "a gather goal needs `center`");
+    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"region\""));
+    assert_names(&e, Some(19), "goal.min", "a region goal needs `min`");
+    let e = error(&with(SOFT, "body = \"paper\"\n", ""));
+    assert_names(&e, Some(14), "goal.body", "this goal needs `body`");
+}
+
+#[test]
+fn a_value_out_of_range_is_named_with_its_range() {
+    let e = error(&with(OBJECTS, "mass = 1.0", "mass = -2.0"));
+    assert_names(&e, Some(5), "objects[0].mass", "-2 must be greater than 0");
+    let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1.0, 0.75]\nrestitution = 1.5"));
+    assert_names(&e, Some(3), "table.restitution", "1.5 is out of range (0..=1)");
+    let e = error(&with(OBJECTS, "position = [0.0, 0.0]", "position = [0.0, 0.0]\nrotation_deg = [0.0, 0.0, 400.0]"));
+    assert_names(&e, Some(5), "objects[0].rotation_deg[2]", "400 is out of range (-360..=360)");
+    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"positioning\"\ndwell_s = 100.0"));
+    assert_names(&e, Some(19), "goal.dwell_s", "100 is out of range (0..=60)");
+    let e = error(&format!("{OBJECTS}[physics]\ntimestep_hz = 5.0\n"));
+    assert_names(&e, Some(24), "physics.timestep_hz", "5 is out of range (10..=10000)");
+    let e = error(&with(SOFT, "mass = 0.03", "mass = 0.03\ncrumple = 0.9"));
+    assert_names(&e, Some(5), "soft_bodies[0].crumple", "0.9 is out of range (0..=0.6)");
+    let e = error(&with(SOFT, "mass = 0.03", "mass = 0.03\nthickness = 0.1"));
+    assert_names(&e, Some(5), "soft_bodies[0].thickness", "out of range (up to 0.05 m)");
+}
+
+#[test]
+fn a_size_that_must_be_positive_is_named() {
+    let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [0.0, 0.75]"));
+    assert_names(&e, Some(3), "table.size[0]", "0 must be greater than 0");
+    let e = error(&with(OBJECTS, "radius = 0.03", "radius = 0.0"));
+    assert_names(&e, Some(12), "objects[1].radius", "must be greater than 0");
+    let e = error(&with(OBJECTS, "effects = [\"gravity\"]", "effects = [\"gravity\"]\ntime_limit_s = 0"));
+    assert!(e.starts_with("bad.toml"), "{e}");
+    assert!(e.contains("time_limit_s"), "{e}");
+}
+
+#[test]
+fn a_count_out_of_range_is_named() {
+    let e = error(&format!("{OBJECTS}[physics]\nsolver_iterations = 0\n"));
+    assert_names(&e, Some(24), "physics.solver_iterations", "0 is out of range (1..=100)");
+    let e = error(&with(OBJECTS, "position = [0.2, 0.0]", "position = [0.2, 0.0]\ncount = 0"));
+    assert_names(&e, Some(12), "objects[1].count", "0 is out of range (1..=10000)");
+    let e = error(&with(SOFT, "resolution = [16, 11]", "resolution = [16, 1]"));
+    assert_names(&e, Some(5), "soft_bodies[0].resolution[1]", "1 is out of range (2..=128)");
+    let e = error(&format!("{SOFT}pieces = 1\n"));
+    assert_names(&e, Some(14), "goal.pieces", "1 is out of range (2..=100)");
+    let e = error(&with(SOFT, "resolution = [16, 11]", "resolution = [128, 128]"));
+    assert_names(&e, Some(5), "soft_bodies[0].resolution", "16384 particles is too many");
+}
+
+#[test]
+fn a_number_that_is_not_finite_is_named() {
+    let e = error(&with(OBJECTS, "mass = 1.0", "mass = nan"));
+    assert_names(&e, Some(5), "objects[0].mass", "must be a finite number, got NaN");
+    let e = error(&with(OBJECTS, "position = [0.0, 0.0]", "position = [inf, 0.0]"));
+    assert_names(&e, Some(5), "objects[0].position[0]", "must be a finite number, got inf");
+    let e = error(&with(OBJECTS, "position = [0.2, 0.1]", "position = [nan, 0.1]"));
+    assert_names(&e, Some(21), "goal.targets[0].position", "must be finite");
+}
+
+#[test]
+fn an_array_of_the_wrong_length_is_named() {
+    let e = error(&with(OBJECTS, "position = [0.0, 0.0]", "position = [0.0, 0.0, 0.0, 0.0]"));
+    assert_names(&e, Some(5), "objects[0].position", "must be [x, y] or [x, y, z]");
+    let e = error(&with(SOFT, "size = [0.3, 0.2]", "size = [0.3, 0.2, 0.1]"));
+    assert_names(&e, Some(5), "soft_bodies[0].size", "a cloth needs `size = [x, y]`");
+    let e = error(&with(SOFT, "resolution = [16, 11]", "resolution = [16]"));
+    assert_names(&e, Some(5), "soft_bodies[0].resolution", "needs 2 entries, one per side, got 1");
+}
+
+#[test]
+fn a_place_off_the_table_is_named() {
+    let e = error(&with(OBJECTS, "position = [0.2, 0.0]", "position = [0.9, 0.0]"));
+    assert_names(&e, Some(12), "objects[1].position", "(0.900, 0.000) lies off the table (±0.500 × ±0.375)");
+    let e = error(&with(OBJECTS, "position = [0.2, 0.1]", "position = [0.9, 0.1]"));
+    assert_names(&e, Some(21), "goal.targets[0].position", "lies off the table");
+    let e = error(&with(SOFT, "position = [0.0, 0.0]", "position = [0.0, 0.5]"));
+    assert_names(&e, Some(5), "soft_bodies[0].position", "lies off the table");
+    let e = error(&with(STEER, "waypoints = [[0.1, 0.18]]", "waypoints = [[0.1, 0.18], [0.1, 0.5]]"));
+    assert_names(&e, Some(13), "goal.waypoints[1]", "lies off the table");
+}
+
+#[test]
+fn an_unknown_colour_is_named() {
+    let e = error(&with(OBJECTS, "color = \"red\"", "color = \"reddish\""));
+    assert_names(&e, Some(5), "objects[0].color", "unknown colour `reddish` (use #rrggbb or one of red, blue");
+    let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1.0, 0.75]\ncolor = \"plaid\""));
+    assert_names(&e, Some(3), "table.color", "unknown colour `plaid`");
+    let e = error(&with(SOFT, "color = \"white\"", "color = \"#12345\""));
+    assert_names(&e, Some(5), "soft_bodies[0].color", "unknown colour `#12345`");
+    let zone = "kind = \"sorting\"\n[[goal.zones]]\ncolor = \"mauvish\"\nmin = [0.1, 0.1]\nmax = [0.3, 0.3]\n";
+    let e = error(&with(
+        &with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", ""),
+        "kind = \"positioning\"\n",
+        zone,
+    ));
+    assert_names(&e, Some(21), "goal.zones[0].color", "unknown colour `mauvish`");
+}
+
+#[test]
+fn an_inverted_zone_is_named() {
+    let zone = "kind = \"sorting\"\n[[goal.zones]]\ncolor = \"red\"\nmin = [0.3, 0.1]\nmax = [0.1, 0.3]\n";
+    let e = error(&with(
+        &with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", ""),
+        "kind = \"positioning\"\n",
+        zone,
+    ));
+    assert_names(&e, Some(21), "goal.zones[0]", "min must be below max on both axes");
+}
+
+#[test]
+fn a_duplicate_name_is_named() {
+    let e = error(&with(OBJECTS, "name = \"ball\"", "name = \"a\""));
+    assert_names(&e, None, "objects.name", "`a` is the name of two objects");
+    let e = error(&with(
+        &with(
+            SOFT,
+            "[goal]",
+            "[[objects]]\nname = \"paper\"\nshape = \"sphere\"\nradius = 0.02\nmass = 0.1\ncolor = \"red\"\nposition = [0.3, 0.2]\n[goal]",
+        ),
+        "[[soft_bodies]]",
+        "[[soft_bodies]]",
+    ));
+    assert_names(&e, Some(5), "soft_bodies[0].name", "`paper` is already the name of an object or soft body");
+}
+
+#[test]
+fn a_reference_to_nothing_is_named() {
+    let e = error(&with(OBJECTS, "object = \"a\"", "object = \"b\""));
+    assert_names(&e, Some(21), "goal.targets[0].object", "no object named `b`");
+    let e = error(&with(STEER, "object = \"puck\"", "object = \"disc\""));
+    assert_names(&e, Some(13), "goal.object", "no object named `disc`");
+    let e = error(&with(STEER, "object = \"puck\"", "object = \"puck\"\nplatform = \"stage\""));
+    assert_names(&e, Some(13), "goal.platform", "no object named `stage`");
+    let e = error(&with(SOFT, "body = \"paper\"", "body = \"napkin\""));
+    assert_names(&e, Some(14), "goal.body", "no soft body named `napkin`");
+    let e = error(&with(SOFT, "tear_strain = 0.25\n", ""));
+    assert_names(&e, Some(13), "goal.body", "`paper` cannot tear: give it a `tear_strain`");
+    let e = error(
+        &with(SOFT, "kind = \"torn\"", "kind = \"cloth_flat\"")
+            .replace("kind = \"cloth\"", "kind = \"volume\"")
+            .replace("size = [0.3, 0.2]", "size = [0.3, 0.2, 0.05]")
+            .replace("resolution = [16, 11]\n", "")
+            .replace("tear_strain = 0.25\n", "")
+            .replace("\"cloth\", \"tearing\"", "\"soft_bodies\""),
+    );
+    assert_names(&e, Some(12), "goal.body", "`paper` is not a cloth");
+}
+
+#[test]
+fn fields_that_do_not_go_together_are_named() {
+    let e = error(&with(SOFT, "mass = 0.03", "mass = 0.03\ndensity = 0.5"));
+    assert_names(&e, Some(5), "soft_bodies[0].density", "give `mass` or `density`, not both");
+    let volume = with(
+        &with(&with(SOFT, "kind = \"cloth\"", "kind = \"volume\""), "size = [0.3, 0.2]", "size = [0.3, 0.2, 0.05]"),
+        "resolution = [16, 11]",
+        "resolution = [16, 11, 4]",
+    )
+    .replace("\"cloth\", \"tearing\"", "\"soft_bodies\", \"tearing\"");
+    scene::parse(&volume, "volume.toml").unwrap_or_else(|e| panic!("the volume loads: {e}"));
+    let e = error(&with(&volume, "mass = 0.03", "mass = 0.03\nbending = 2.0"));
+    assert_names(&e, Some(5), "soft_bodies[0].bending", "only a cloth has bending springs");
+    let e = error(&with(&volume, "mass = 0.03", "mass = 0.03\ncrumple = 0.2"));
+    assert_names(&e, Some(5), "soft_bodies[0].crumple", "only a cloth can start crumpled");
+    let e = error(&with(&volume, "mass = 0.03", "mass = 0.03\ncrease = 0.2"));
+    assert_names(&e, Some(5), "soft_bodies[0].crease", "only a cloth creases");
+}
+
+#[test]
+fn an_effect_a_body_needs_but_the_scene_lacks_is_named() {
+    let e = error(&with(SOFT, "\"cloth\", \"tearing\"", "\"cloth\""));
+    assert_names(&e, Some(5), "soft_bodies[0].tear_strain", "tearing needs the `tearing` effect: add it to `effects`");
+    let e = error(&with(SOFT, "\"cloth\", \"tearing\"", "\"tearing\""));
+    assert_names(&e, Some(5), "soft_bodies[0].kind", "a cloth needs the `cloth` effect");
+}
