@@ -54,6 +54,7 @@ pub fn draw_list(session: &Session, options: ViewOptions) -> DrawList {
     if options.feedback {
         let f = session.feedback();
         feedback.extend(f.lines.iter().map(|(a, b)| FeedbackDraw::Line { a: *a, b: *b, color: FEEDBACK_RED }));
+        feedback.extend(f.edges.iter().map(|(a, b)| FeedbackDraw::Line { a: *a, b: *b, color: FEEDBACK_RED }));
         feedback.extend(f.cubes.iter().map(|(c, h)| FeedbackDraw::Cube { center: *c, half: *h, color: FEEDBACK_RED }));
     }
 

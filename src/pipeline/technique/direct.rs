@@ -123,7 +123,7 @@ impl Technique for DirectForce {
     }
 
     fn feedback(&self, _world: &World) -> Feedback {
-        Feedback { lines: Vec::new(), cubes: self.touched.iter().map(|p| (*p, 0.006)).collect() }
+        Feedback { lines: Vec::new(), edges: Vec::new(), cubes: self.touched.iter().map(|p| (*p, 0.006)).collect() }
     }
 
     fn counts(&self) -> TechniqueCounts {

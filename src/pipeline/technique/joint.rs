@@ -400,12 +400,9 @@ impl Technique for JointTechnique {
         }));
         // The side-collision prisms are what a sweep pushes with: without
         // their outline a Joint sweep looks like an invisible wall.
-        for p in self.pushers.values() {
-            if let Some(col) = world.technique_collider(p.body) {
-                lines.extend(prism_edges(col));
-            }
-        }
-        Feedback { lines, cubes: Vec::new() }
+        let edges =
+            self.pushers.values().filter_map(|p| world.technique_collider(p.body)).flat_map(prism_edges).collect();
+        Feedback { lines, edges, cubes: Vec::new() }
     }
 
     fn counts(&self) -> TechniqueCounts {

@@ -368,7 +368,7 @@ impl Technique for ParticleTechnique {
     fn feedback(&self, _world: &World) -> Feedback {
         let half = self.config.particle_radius;
         let all = self.positions.iter().chain(&self.sensed_only);
-        Feedback { lines: Vec::new(), cubes: all.map(|p| (*p, half)).collect() }
+        Feedback { lines: Vec::new(), edges: Vec::new(), cubes: all.map(|p| (*p, half)).collect() }
     }
 
     fn counts(&self) -> TechniqueCounts {

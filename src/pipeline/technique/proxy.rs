@@ -185,7 +185,7 @@ impl Technique for ProxyTechnique {
             .filter_map(|p| world.technique_body(p.body))
             .map(|b| (b.translation(), self.config.proxy_size))
             .collect();
-        Feedback { lines: Vec::new(), cubes }
+        Feedback { lines: Vec::new(), edges: Vec::new(), cubes }
     }
 
     fn counts(&self) -> TechniqueCounts {
