@@ -340,7 +340,7 @@ fn built_in_scenes_and_gestures_work_from_any_folder() {
             .output()
             .expect("runs")
     };
-    for task in ["positioning", "tasks/cases/one_box.toml"] {
+    for task in ["positioning", "cases/one_box", "tasks/cases/one_box.toml"] {
         let o = run(task);
         assert!(o.status.success(), "{task}: {}", text(&o));
         let json = std::fs::read_to_string(&report).expect("report");

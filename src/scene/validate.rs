@@ -57,11 +57,14 @@ pub fn load(name_or_path: &str) -> Result<Scene, SceneError> {
             parse(&text, &path.display().to_string())
         }
         Err(not_found) => {
-            let file = scene_file(name_or_path);
-            let tasks = Path::new("tasks").join(&file);
-            let rel = if Path::new(&file).components().count() > 1 { PathBuf::from(&file) } else { tasks };
-            match super::builtin::file(&rel) {
-                Some(text) => parse(text, &format!("{} (built in)", rel.display())),
+            // As on disk: the path itself, then under `tasks/`
+            // (`positioning`, `cases/one_box`, `tasks/cases/one_box.toml`).
+            let file = PathBuf::from(scene_file(name_or_path));
+            let found = [file.clone(), Path::new("tasks").join(&file)]
+                .into_iter()
+                .find_map(|rel| super::builtin::file(&rel).map(|text| (rel, text)));
+            match found {
+                Some((rel, text)) => parse(text, &format!("{} (built in)", rel.display())),
                 None => Err(not_found),
             }
         }
