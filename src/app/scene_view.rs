@@ -53,8 +53,10 @@ pub fn draw_list(session: &Session, options: ViewOptions) -> DrawList {
     let mut feedback = Vec::new();
     if options.feedback {
         let f = session.feedback();
-        feedback.extend(f.lines.iter().map(|(a, b)| FeedbackDraw::Line { a: *a, b: *b, color: FEEDBACK_RED }));
-        feedback.extend(f.edges.iter().map(|(a, b)| FeedbackDraw::Line { a: *a, b: *b, color: FEEDBACK_RED }));
+        // Joint lines and prism edges look alike; only the participant
+        // model tells them apart.
+        let segments = f.lines.iter().chain(&f.edges);
+        feedback.extend(segments.map(|(a, b)| FeedbackDraw::Line { a: *a, b: *b, color: FEEDBACK_RED }));
         feedback.extend(f.cubes.iter().map(|(c, h)| FeedbackDraw::Cube { center: *c, half: *h, color: FEEDBACK_RED }));
     }
 
