@@ -26,13 +26,23 @@ struct Case<'a> {
     speed_limit: f32,
     /// Steps before penetration is judged (overlap recovery needs a few).
     settle_steps: usize,
+    /// Deepest overlap allowed between scene bodies (m).
+    max_penetration: f32,
     config: Option<TechniqueConfig>,
     sensor_px: (u32, u32),
 }
 
 impl<'a> Case<'a> {
     fn new(task: &'a str, kind: TechniqueKind, speed_limit: f32) -> Self {
-        Case { task, kind, speed_limit, settle_steps: 0, config: None, sensor_px: (640, 480) }
+        Case {
+            task,
+            kind,
+            speed_limit,
+            settle_steps: 0,
+            max_penetration: MAX_PENETRATION,
+            config: None,
+            sensor_px: (640, 480),
+        }
     }
 }
 
@@ -90,7 +100,7 @@ fn run_with(
         st.max_speed_seen,
         case.speed_limit
     );
-    assert!(worst_pen < MAX_PENETRATION, "{} {}: penetration {worst_pen}", case.task, case.kind);
+    assert!(worst_pen < case.max_penetration, "{} {}: penetration {worst_pen}", case.task, case.kind);
     s
 }
 
@@ -118,7 +128,11 @@ fn two_joints_pulling_one_box_apart() {
 fn four_joints_pulling_one_box_apart() {
     // When one of four stretched joints breaks, the other three yank the box:
     // the paper's own "breaking joints fling objects". Bounded, not exploding.
-    let case = Case::new("tasks/cases/one_box.toml", TechniqueKind::Joint, 5.0);
+    // The last joint slings the box, spinning at 5 rad/s, into the rim wall:
+    // its corner arrives at 0.5 m/s (8 mm a step) and rapier's soft contact
+    // lets it in 14.7 mm for one step, 10.3 and 7.2 the next two, then out
+    // (measured). Two steps of that corner's travel bound it.
+    let case = Case { max_penetration: 0.02, ..Case::new("tasks/cases/one_box.toml", TechniqueKind::Joint, 5.0) };
     let dirs = [Vec2::X, Vec2::NEG_X, Vec2::Y, Vec2::NEG_Y];
     run(&case, STEPS, |k, _| {
         dirs.iter().enumerate().map(|(i, d)| tip(i as u32 + 1, lerp(*d * 0.045, *d * 0.3, k, 90))).collect()
