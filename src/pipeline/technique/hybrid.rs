@@ -83,7 +83,9 @@ impl HybridTechnique {
         // pinched ball pushed it out of the grip and threw it on release
         // (strayed 1.6 cm, 0.099 m/s after the fingers opened;
         // `tests/hybrid.rs`).
-        let particles = ParticleTechnique::new(TechniqueConfig { particle_capsules: false, ..config });
+        let mut config = config;
+        config.particle_capsules = false;
+        let particles = ParticleTechnique::new(config);
         HybridTechnique { particles, held: BTreeMap::new(), grip_positions: Vec::new() }
     }
 
