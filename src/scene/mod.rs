@@ -4,6 +4,7 @@
 //! plain [`Scene`] value that the world, the renderer, the study harness, the
 //! benchmarks and the tests all share — one scene definition, many uses.
 
+pub mod bounds;
 pub mod builtin;
 mod defaults;
 mod effects;
@@ -11,6 +12,7 @@ mod error;
 pub mod fields;
 mod file;
 mod model;
+mod read;
 mod validate;
 
 pub use effects::{Effect, EffectSet};
@@ -20,4 +22,5 @@ pub use model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
     SteeringGoal, Table, Target,
 };
+pub use read::{read_capped, read_capped_str};
 pub use validate::{load, parse, resolve_path};

@@ -197,7 +197,7 @@ impl RunFile {
 
     /// Reads and validates a run file (format and design).
     pub fn load(path: &Path) -> Result<RunFile, StudyError> {
-        let text = std::fs::read_to_string(path).map_err(StudyError::io(path))?;
+        let text = crate::scene::read_capped(path).map_err(StudyError::io(path))?;
         let run: RunFile =
             toml::from_str(&text).map_err(|source| StudyError::TomlRead { path: path.to_owned(), source })?;
         if run.format != RUN_FORMAT {

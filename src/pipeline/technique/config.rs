@@ -141,37 +141,48 @@ impl TechniqueConfig {
         Ok(cfg)
     }
 
-    /// Checks ranges; the message names the field.
+    /// Checks ranges against `scene::bounds`; the message names the field
+    /// and the bound.
     pub fn validate(&self) -> Result<(), String> {
-        let pos = [
-            ("proxy_mass", self.proxy_mass),
-            ("proxy_size", self.proxy_size),
-            ("particle_radius", self.particle_radius),
-            ("particle_mass", self.particle_mass),
-            ("proxy_weight", self.proxy_weight),
-            ("particle_weight", self.particle_weight),
-            ("max_contact_speed", self.max_contact_speed),
-            ("joint_break_force", self.joint_break_force),
+        use crate::scene::bounds as b;
+        let ranged = [
+            ("proxy_size", self.proxy_size, b::TECHNIQUE_SIZE_M),
+            ("particle_radius", self.particle_radius, b::TECHNIQUE_SIZE_M),
+            ("proxy_mass", self.proxy_mass, b::TECHNIQUE_MASS_KG),
+            ("particle_mass", self.particle_mass, b::TECHNIQUE_MASS_KG),
+            ("proxy_weight", self.proxy_weight, b::TECHNIQUE_WEIGHT_N),
+            ("particle_weight", self.particle_weight, b::TECHNIQUE_WEIGHT_N),
+            ("max_contact_speed", self.max_contact_speed, b::MAX_SPEED_M_S),
+            ("joint_break_force", self.joint_break_force, (b::TECHNIQUE_MIN_FORCE_N, b::TECHNIQUE_GAIN)),
+            ("direct_gain", self.direct_gain, (0.0, b::TECHNIQUE_GAIN)),
+            ("joint_stiffness", self.joint_stiffness, (0.0, b::TECHNIQUE_GAIN)),
+            ("joint_damping", self.joint_damping, (0.0, b::TECHNIQUE_GAIN)),
+            ("friction", self.friction, (0.0, b::TECHNIQUE_GAIN)),
+            ("particle_edge_threshold", self.particle_edge_threshold, (0.0, b::TECHNIQUE_GAIN)),
         ];
-        for (name, v) in pos {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(format!("`{name}` must be a positive number, got {v}"));
+        let human = crate::scene::fields::human;
+        for (name, v, (lo, hi)) in ranged {
+            if !v.is_finite() {
+                return Err(format!("`{name}` must be a finite number, got {v}"));
+            }
+            if !(lo..=hi).contains(&v) {
+                return Err(format!(
+                    "`{name}` = {} is out of range ({}..={})",
+                    human(f64::from(v)),
+                    human(f64::from(lo)),
+                    human(f64::from(hi))
+                ));
             }
         }
-        let nonneg = [
-            ("direct_gain", self.direct_gain),
-            ("joint_stiffness", self.joint_stiffness),
-            ("joint_damping", self.joint_damping),
-            ("friction", self.friction),
-            ("particle_edge_threshold", self.particle_edge_threshold),
-        ];
-        for (name, v) in nonneg {
-            if !(v.is_finite() && v >= 0.0) {
-                return Err(format!("`{name}` must be a finite number >= 0, got {v}"));
-            }
+        if !(1..=b::PARTICLE_STRIDE).contains(&self.particle_stride) {
+            return Err(format!(
+                "`particle_stride` = {} is out of range (1..={})",
+                self.particle_stride,
+                b::PARTICLE_STRIDE
+            ));
         }
-        if self.particle_stride == 0 {
-            return Err("`particle_stride` must be at least 1".into());
+        if self.particle_cap > b::PARTICLE_CAP {
+            return Err(format!("`particle_cap` = {} is out of range (0..={})", self.particle_cap, b::PARTICLE_CAP));
         }
         Ok(())
     }
@@ -195,5 +206,26 @@ mod tests {
         let t: toml::Table = toml::from_str("proxy_mass = -1.0").expect("toml");
         let e = TechniqueConfig::from_scene_table(&t, "x.toml").expect_err("negative");
         assert!(e.to_string().contains("proxy_mass"), "{e}");
+    }
+
+    #[test]
+    fn a_parameter_past_its_bound_names_the_bound() {
+        let err = |text: &str| {
+            let t: toml::Table = toml::from_str(text).expect("toml");
+            TechniqueConfig::from_scene_table(&t, "x.toml").expect_err(text).to_string()
+        };
+        assert_eq!(
+            err("particle_radius = 1e30"),
+            "x.toml: [technique]: `particle_radius` = 1e30 is out of range (0.0005..=0.1)"
+        );
+        assert_eq!(
+            err("proxy_mass = 1e-30"),
+            "x.toml: [technique]: `proxy_mass` = 1e-30 is out of range (0.001..=1000)"
+        );
+        assert_eq!(
+            err("particle_cap = 1000000000"),
+            "x.toml: [technique]: `particle_cap` = 1000000000 is out of range (0..=100000)"
+        );
+        assert_eq!(err("direct_gain = nan"), "x.toml: [technique]: `direct_gain` must be a finite number, got NaN");
     }
 }
