@@ -474,3 +474,36 @@ fn inputs_past_a_bound_exit_2_instead_of_hanging_or_aborting() {
     );
     assert!(!text(&o).contains("panicked"), "{}", text(&o));
 }
+
+/// Output files are written atomically: a write that fails exits 1 naming
+/// the path and the OS error, keeps the earlier file whole and leaves no
+/// temporary file behind.
+#[test]
+fn a_report_that_cannot_be_written_exits_1_and_leaves_the_folder_clean() {
+    let dir = tmp("atomic");
+    let run = |report: &Path| {
+        bin()
+            .args(["run", "--task", "cases/one_box", "--technique", "joint", "--gesture", "assets/gestures/flick.toml"])
+            .args(["--settle", "0", "--report"])
+            .arg(report)
+            .output()
+            .expect("runs")
+    };
+    let report = dir.join("r.json");
+    let o = run(&report);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o));
+    let first = std::fs::read(&report).expect("report");
+    assert!(first.starts_with(b"{"), "a JSON report");
+    // A folder where the report should go: the rename fails.
+    let blocked = dir.join("blocked.json");
+    std::fs::create_dir_all(blocked.join("keep")).expect("dir");
+    let o = run(&blocked);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o));
+    assert!(text(&o).contains("writing report") && text(&o).contains("blocked.json"), "{}", text(&o));
+    assert!(text(&o).contains("Is a directory") || text(&o).contains("os error"), "{}", text(&o));
+    let mut names: Vec<String> =
+        std::fs::read_dir(&dir).expect("list").map(|e| e.expect("entry").file_name().to_string_lossy().into()).collect();
+    names.sort();
+    assert_eq!(names, ["blocked.json", "r.json"], "no temporary file left");
+    assert_eq!(std::fs::read(&report).expect("report"), first, "the earlier report is untouched");
+}

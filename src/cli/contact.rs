@@ -19,7 +19,7 @@ pub fn run(args: &ContactArgs) -> ExitCode {
         }
         s
     } else {
-        match crate::scene::read_capped_str(&args.input) {
+        match crate::files::read_capped_str(&args.input) {
             Ok(s) => s,
             Err(e) => {
                 eprintln!("surfacelab contact: cannot read {}: {e}", args.input);

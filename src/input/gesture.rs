@@ -222,7 +222,7 @@ impl Gesture {
     pub fn load(path: impl AsRef<Path>) -> Result<Self, GestureError> {
         let path = path.as_ref();
         let origin = path.display().to_string();
-        match crate::scene::read_capped(path) {
+        match crate::files::read_capped(path) {
             Ok(text) => parse(&text, &origin),
             Err(source) if source.kind() == std::io::ErrorKind::NotFound => match crate::scene::builtin::file(path) {
                 Some(text) => parse(text, &format!("{origin} (built in)")),
@@ -235,7 +235,7 @@ impl Gesture {
     /// Writes the gesture in the version-1 format.
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), GestureError> {
         let path = path.as_ref();
-        std::fs::write(path, self.to_string())
+        crate::files::write_atomic(path, self.to_string().as_bytes())
             .map_err(|source| GestureError::Write { origin: path.display().to_string(), source })
     }
 

@@ -80,11 +80,9 @@ pub const MAX_REPETITIONS: u32 = 100;
 /// 864 GB).
 pub const MAX_TRIALS: u64 = 1_000_000;
 
-/// Bytes read from any input file (scene, gesture, contact JSON, run.toml,
-/// trials.csv excepted): the largest recording (a 25 s sorting gesture) is
-/// about 200 kB. A larger file, or `/dev/urandom`, is refused after this
-/// many bytes instead of read without end.
-pub const MAX_INPUT_BYTES: u64 = 64 * 1024 * 1024;
+/// Bytes read from any input file: defined where files are read
+/// (`files` depends on nothing), listed here with the other bounds.
+pub use crate::files::MAX_INPUT_BYTES;
 
 /// Technique parameters in a scene's `[technique]` table. Sizes (m) as an
 /// object's; particle and proxy sizes at most 10 cm (a fingertip is 1 cm,

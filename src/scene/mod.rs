@@ -12,7 +12,6 @@ mod error;
 pub mod fields;
 mod file;
 mod model;
-mod read;
 mod validate;
 
 pub use effects::{Effect, EffectSet};
@@ -22,5 +21,4 @@ pub use model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
     SteeringGoal, Table, Target,
 };
-pub use read::{read_capped, read_capped_str};
 pub use validate::{load, parse, resolve_path};

@@ -53,7 +53,8 @@ fn scene_file(name_or_path: &str) -> String {
 pub fn load(name_or_path: &str) -> Result<Scene, SceneError> {
     match resolve_path(name_or_path) {
         Ok(path) => {
-            let text = super::read_capped(&path).map_err(|source| SceneError::Io { path: path.clone(), source })?;
+            let text =
+                crate::files::read_capped(&path).map_err(|source| SceneError::Io { path: path.clone(), source })?;
             parse(&text, &path.display().to_string())
         }
         Err(not_found) => {

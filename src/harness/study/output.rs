@@ -197,7 +197,7 @@ impl RunFile {
 
     /// Reads and validates a run file (format and design).
     pub fn load(path: &Path) -> Result<RunFile, StudyError> {
-        let text = crate::scene::read_capped(path).map_err(StudyError::io(path))?;
+        let text = crate::files::read_capped(path).map_err(StudyError::io(path))?;
         let run: RunFile =
             toml::from_str(&text).map_err(|source| StudyError::TomlRead { path: path.to_owned(), source })?;
         if run.format != RUN_FORMAT {
@@ -357,14 +357,7 @@ pub fn log_error(dir: &Path, line: &str) -> Result<(), StudyError> {
 
 /// Temporary file beside `path`, fsync, rename: readers see the old file or
 /// the new one, never half of one.
+/// (`files::write_atomic`; a failure leaves no temporary file.)
 pub(crate) fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), StudyError> {
-    let mut tmp_name = path.file_name().map(std::ffi::OsStr::to_os_string).unwrap_or_default();
-    tmp_name.push(".tmp");
-    let tmp = path.with_file_name(tmp_name);
-    {
-        let mut f = File::create(&tmp).map_err(StudyError::io(&tmp))?;
-        f.write_all(bytes).map_err(StudyError::io(&tmp))?;
-        f.sync_all().map_err(StudyError::io(&tmp))?;
-    }
-    std::fs::rename(&tmp, path).map_err(StudyError::io(path))
+    crate::files::write_atomic(path, bytes).map_err(StudyError::io(path))
 }
