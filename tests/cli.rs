@@ -501,8 +501,10 @@ fn a_report_that_cannot_be_written_exits_1_and_leaves_the_folder_clean() {
     assert_eq!(o.status.code(), Some(1), "{}", text(&o));
     assert!(text(&o).contains("writing report") && text(&o).contains("blocked.json"), "{}", text(&o));
     assert!(text(&o).contains("Is a directory") || text(&o).contains("os error"), "{}", text(&o));
-    let mut names: Vec<String> =
-        std::fs::read_dir(&dir).expect("list").map(|e| e.expect("entry").file_name().to_string_lossy().into()).collect();
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .expect("list")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into())
+        .collect();
     names.sort();
     assert_eq!(names, ["blocked.json", "r.json"], "no temporary file left");
     assert_eq!(std::fs::read(&report).expect("report"), first, "the earlier report is untouched");

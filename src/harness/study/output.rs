@@ -175,6 +175,12 @@ pub struct RunFile {
     /// The version that created the folder (rows carry their own).
     pub version: String,
     pub design: StudyDesign,
+    /// [`design_hash`] of `design` when the folder was made: resume
+    /// refuses a run.toml whose design was edited since (rows of two
+    /// designs would share one file). Absent in folders made before it
+    /// existed; those resume with a note.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub design_hash: Option<String>,
     /// `None` for a whole run (or a merged one).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shard: Option<Shard>,
@@ -188,7 +194,29 @@ pub struct RunFile {
 impl RunFile {
     pub fn new(design: StudyDesign, shard: Option<Shard>) -> RunFile {
         let plan = design.plan();
-        RunFile { format: RUN_FORMAT.to_owned(), version: VERSION.to_owned(), design, shard, plan }
+        let design_hash = Some(design_hash(&design));
+        RunFile { format: RUN_FORMAT.to_owned(), version: VERSION.to_owned(), design, design_hash, shard, plan }
+    }
+
+    /// Whether `design` is still the one the folder was made with: `Ok(true)`
+    /// when the recorded hash matches, `Ok(false)` when the file predates
+    /// the hash (nothing to check), an error naming the file when it was
+    /// edited.
+    pub fn check_unedited(&self, path: &Path) -> Result<bool, StudyError> {
+        let Some(recorded) = &self.design_hash else { return Ok(false) };
+        let now = design_hash(&self.design);
+        if *recorded == now {
+            return Ok(true);
+        }
+        Err(StudyError::mismatch(
+            path,
+            format!(
+                "the design was edited after the run started (design_hash {recorded}, the design now hashes to {now}); \
+                 resuming would mix rows of two designs in one trials.csv. To run the edited design, start a new \
+                 folder: study --from {} --out NEW_FOLDER",
+                path.display()
+            ),
+        ))
     }
 
     pub fn to_toml(&self) -> Result<String, StudyError> {
@@ -221,6 +249,16 @@ impl RunFile {
     pub fn save(&self, path: &Path) -> Result<(), StudyError> {
         write_atomically(path, self.to_toml()?.as_bytes())
     }
+}
+
+/// A stable hash of a design (FNV-1a, 64 bits, over its TOML text), as 16
+/// hex digits: the same design gives the same hash on every machine and
+/// build, so a shard made on a cluster node resumes anywhere.
+pub fn design_hash(design: &StudyDesign) -> String {
+    use std::hash::Hasher as _;
+    let mut h = fnv::FnvHasher::default();
+    h.write(toml::to_string(design).unwrap_or_default().as_bytes());
+    format!("{:016x}", h.finish())
 }
 
 /// Appends rows to `trials.csv`, one fsync'ed write per row.
