@@ -248,7 +248,13 @@ impl Checker<'_> {
             objects,
             soft_bodies,
             goal,
-            technique: raw.technique.unwrap_or_default(),
+            technique: raw.technique.iter().flatten().map(|(k, v)| (k.clone(), v.get_ref().clone())).collect(),
+            technique_lines: raw
+                .technique
+                .iter()
+                .flatten()
+                .map(|(k, v)| (k.clone(), self.fields.line(v.span().start)))
+                .collect(),
         })
     }
 
