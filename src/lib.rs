@@ -21,6 +21,7 @@
 //! - [`scene`]: scene/task files (table, camera, objects, goals, declared effects) as data.
 //! - [`contact`]: exact 2D contact geometry (Contact Theory, Cheng et al. 2016); pure.
 //! - [`error`]: the kind every module's errors share (bad input or runtime), which picks the exit code.
+//! - [`files`]: input files read with a size cap, output files written atomically.
 //! - [`input`]: every source of hands (mouse, TUIO, gesture files, scripts).
 //! - [`pipeline`]: the contact image, vision, the paper's techniques, and the rapier3d world.
 //! - [`session`]: the frame loop that drives the pipeline, and the goal tracker.
@@ -33,6 +34,7 @@ pub mod app;
 pub mod cli;
 pub mod contact;
 pub mod error;
+pub mod files;
 pub mod harness;
 pub mod input;
 pub mod pipeline;

@@ -409,3 +409,121 @@ fn bad_flag_values_exit_2_and_name_the_flag() {
         assert!(text(&o).contains(flag), "{}", text(&o));
     }
 }
+
+/// Inputs that used to hang, abort or panic: each is refused at once with
+/// exit 2, naming the flag or the file and field, and the bound.
+#[test]
+fn inputs_past_a_bound_exit_2_instead_of_hanging_or_aborting() {
+    let dir = tmp("bounds");
+    // A design of a billion participants asked for 864 GB before; now it
+    // is refused before anything is planned or written.
+    for (flag, value, bound) in [("--participants", "1000000000", "1..=1000"), ("--reps", "1000000000", "1..=100")] {
+        let o = bin()
+            .args(["study", "--no-progress", "--out"])
+            .arg(dir.join("never"))
+            .args([flag, value])
+            .output()
+            .expect("runs");
+        assert_eq!(o.status.code(), Some(2), "{flag}: {}", text(&o));
+        assert!(text(&o).contains(flag) && text(&o).contains(value) && text(&o).contains(bound), "{}", text(&o));
+    }
+    assert!(!dir.join("never").exists(), "nothing was run");
+
+    // Durations: --settle, --at and --time-limit are bounded by 600 s.
+    let run = |extra: &[&str]| {
+        bin()
+            .args(["run", "--task", "positioning", "--technique", "joint", "--gesture", "assets/gestures/flick.toml"])
+            .args(extra)
+            .output()
+            .expect("runs")
+    };
+    let o = run(&["--settle", "1e30"]);
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("--settle") && text(&o).contains("0..=600"), "{}", text(&o));
+    let o = bin()
+        .args(["screenshot", "--gesture", "assets/gestures/flick.toml", "--at", "1e30", "--out"])
+        .arg(dir.join("x.png"))
+        .output()
+        .expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("--at") && text(&o).contains("0..=600"), "{}", text(&o));
+    let o = bin()
+        .args(["study", "--no-progress", "--time-limit", "1e9", "--out"])
+        .arg(dir.join("never"))
+        .output()
+        .expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("--time-limit"), "{}", text(&o));
+
+    // A gesture key a billion seconds in, and a file that never ends.
+    let g = dir.join("late.toml");
+    std::fs::write(&g, "format = \"surfacelab-gesture\"\nversion = 1\n[[hands]]\nid = 1\nkind = \"fist\"\n[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\n[[hands.keys]]\nt = 1e9\n").expect("write");
+    let o = bin()
+        .args(["run", "--task", "positioning", "--technique", "joint", "--gesture"])
+        .arg(&g)
+        .output()
+        .expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(
+        text(&o).contains("late.toml:10") && text(&o).contains("hands[0].keys[1].t") && text(&o).contains("0..=600"),
+        "{}",
+        text(&o)
+    );
+    let o = bin()
+        .args(["run", "--task", "positioning", "--technique", "joint", "--gesture", "/dev/urandom"])
+        .output()
+        .expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("/dev/urandom") && text(&o).contains("64 MiB"), "{}", text(&o));
+
+    // A cylinder of 1e30 m reached parry and panicked in epa3.rs.
+    let scene = dir.join("huge.toml");
+    std::fs::write(&scene, "name = \"x\"\neffects = [\"gravity\"]\n[table]\nsize = [1.0, 0.75]\n[[objects]]\nname = \"a\"\nshape = \"cylinder\"\nradius = 1e30\nheight = 0.1\nmass = 1.0\ncolor = \"red\"\nposition = [0.0, 0.0]\n").expect("write");
+    let o = bin()
+        .args(["run", "--technique", "joint", "--gesture", "assets/gestures/flick.toml", "--task"])
+        .arg(&scene)
+        .output()
+        .expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(
+        text(&o).contains("huge.toml:5: field `objects[0].radius`: 1e30 is out of range (0.001..=10)"),
+        "{}",
+        text(&o)
+    );
+    assert!(!text(&o).contains("panicked"), "{}", text(&o));
+}
+
+/// Output files are written atomically: a write that fails exits 1 naming
+/// the path and the OS error, keeps the earlier file whole and leaves no
+/// temporary file behind.
+#[test]
+fn a_report_that_cannot_be_written_exits_1_and_leaves_the_folder_clean() {
+    let dir = tmp("atomic");
+    let run = |report: &Path| {
+        bin()
+            .args(["run", "--task", "cases/one_box", "--technique", "joint", "--gesture", "assets/gestures/flick.toml"])
+            .args(["--settle", "0", "--report"])
+            .arg(report)
+            .output()
+            .expect("runs")
+    };
+    let report = dir.join("r.json");
+    let o = run(&report);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o));
+    let first = std::fs::read(&report).expect("report");
+    assert!(first.starts_with(b"{"), "a JSON report");
+    // A folder where the report should go: the rename fails.
+    let blocked = dir.join("blocked.json");
+    std::fs::create_dir_all(blocked.join("keep")).expect("dir");
+    let o = run(&blocked);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o));
+    assert!(text(&o).contains("writing report") && text(&o).contains("blocked.json"), "{}", text(&o));
+    assert!(text(&o).contains("Is a directory") || text(&o).contains("os error"), "{}", text(&o));
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .expect("list")
+        .map(|e| e.expect("entry").file_name().to_string_lossy().into())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["blocked.json", "r.json"], "no temporary file left");
+    assert_eq!(std::fs::read(&report).expect("report"), first, "the earlier report is untouched");
+}

@@ -2,6 +2,7 @@
 //! field of a scene that loads, and checks that the message names the file,
 //! the line where the validator knows it, the field, and what was wrong.
 
+use std::fmt::Write as _;
 use surfacelab::scene;
 
 /// A positioning scene that loads; every test breaks one thing in it.
@@ -160,7 +161,7 @@ fn a_missing_field_a_goal_needs_is_named() {
 #[test]
 fn a_value_out_of_range_is_named_with_its_range() {
     let e = error(&with(OBJECTS, "mass = 1.0", "mass = -2.0"));
-    assert_names(&e, Some(5), "objects[0].mass", "-2 must be greater than 0");
+    assert_names(&e, Some(5), "objects[0].mass", "-2 is out of range (0.001..=1000)");
     let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1.0, 0.75]\nrestitution = 1.5"));
     assert_names(&e, Some(3), "table.restitution", "1.5 is out of range (0..=1)");
     let e = error(&with(OBJECTS, "position = [0.0, 0.0]", "position = [0.0, 0.0]\nrotation_deg = [0.0, 0.0, 400.0]"));
@@ -178,9 +179,9 @@ fn a_value_out_of_range_is_named_with_its_range() {
 #[test]
 fn a_size_that_must_be_positive_is_named() {
     let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [0.0, 0.75]"));
-    assert_names(&e, Some(3), "table.size[0]", "0 must be greater than 0");
+    assert_names(&e, Some(3), "table.size[0]", "0 is out of range (0.05..=10)");
     let e = error(&with(OBJECTS, "radius = 0.03", "radius = 0.0"));
-    assert_names(&e, Some(12), "objects[1].radius", "must be greater than 0");
+    assert_names(&e, Some(12), "objects[1].radius", "0 is out of range (0.001..=10)");
     let e = error(&with(OBJECTS, "effects = [\"gravity\"]", "effects = [\"gravity\"]\ntime_limit_s = 0"));
     assert!(e.starts_with("bad.toml"), "{e}");
     assert!(e.contains("time_limit_s"), "{e}");
@@ -191,7 +192,7 @@ fn a_count_out_of_range_is_named() {
     let e = error(&format!("{OBJECTS}[physics]\nsolver_iterations = 0\n"));
     assert_names(&e, Some(24), "physics.solver_iterations", "0 is out of range (1..=100)");
     let e = error(&with(OBJECTS, "position = [0.2, 0.0]", "position = [0.2, 0.0]\ncount = 0"));
-    assert_names(&e, Some(12), "objects[1].count", "0 is out of range (1..=10000)");
+    assert_names(&e, Some(12), "objects[1].count", "0 is out of range (1..=1000)");
     let e = error(&with(SOFT, "resolution = [16, 11]", "resolution = [16, 1]"));
     assert_names(&e, Some(5), "soft_bodies[0].resolution[1]", "1 is out of range (2..=128)");
     let e = error(&format!("{SOFT}pieces = 1\n"));
@@ -263,7 +264,7 @@ fn an_inverted_zone_is_named() {
 #[test]
 fn a_duplicate_name_is_named() {
     let e = error(&with(OBJECTS, "name = \"ball\"", "name = \"a\""));
-    assert_names(&e, None, "objects.name", "`a` is the name of two objects");
+    assert_names(&e, Some(12), "objects[1].name", "`a` is the name of two objects");
     let e = error(&with(
         &with(
             SOFT,
@@ -324,4 +325,94 @@ fn an_effect_a_body_needs_but_the_scene_lacks_is_named() {
     assert_names(&e, Some(5), "soft_bodies[0].tear_strain", "tearing needs the `tearing` effect: add it to `effects`");
     let e = error(&with(SOFT, "\"cloth\", \"tearing\"", "\"tearing\""));
     assert_names(&e, Some(5), "soft_bodies[0].kind", "a cloth needs the `cloth` effect");
+}
+
+/// A scene that loads must hold nothing a solver cannot take: every number
+/// is checked against its bound in `scene::bounds`, and the error names the
+/// file, line, field and the bound.
+#[test]
+fn a_number_past_its_documented_bound_is_named_with_the_bound() {
+    // Copies of a fixed body stepped by NaN, inf or 1e30: each copy's position.
+    let fixed = |step: &str| {
+        with(
+            &with(OBJECTS, "mass = 1.0\n", "body = \"fixed\"\ncount = 3\n"),
+            "position = [0.0, 0.0]\n",
+            &format!("position = [0.0, 0.0]\nstep = {step}\n"),
+        )
+    };
+    let e = error(&fixed("[nan, 0.0]"));
+    assert_names(&e, Some(5), "objects[0].step[0]", "must be a finite number, got NaN");
+    let e = error(&fixed("[0.0, inf]"));
+    assert_names(&e, Some(5), "objects[0].step[1]", "must be a finite number, got inf");
+    let e = error(&fixed("[1e30, 0.0]"));
+    assert_names(&e, Some(5), "objects[0].step[0]", "1e30 is out of range (-100..=100)");
+    let e = error(&fixed("[60.0, 0.0]"));
+    assert_names(&e, Some(5), "objects[0].position", "copy 3 lies at (120, 0), farther than 100 m");
+
+    let e = error(&with(OBJECTS, "mass = 1.0", "mass = 1e-30"));
+    assert_names(&e, Some(5), "objects[0].mass", "1e-30 is out of range (0.001..=1000)");
+    let e = error(&with(OBJECTS, "size = [0.1, 0.1, 0.1]", "size = [0.1, 1e30, 0.1]"));
+    assert_names(&e, Some(5), "objects[0].size[1]", "1e30 is out of range (0.001..=10)");
+    let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1e30, 0.75]"));
+    assert_names(&e, Some(3), "table.size[0]", "1e30 is out of range (0.05..=10)");
+    let e = error(&with(OBJECTS, "effects = [\"gravity\"]", "effects = [\"gravity\"]\ntime_limit_s = 1e9"));
+    assert_names(&e, Some(3), "time_limit_s", "1e9 is out of range (at most 600)");
+    let e = error(&format!("{OBJECTS}[physics]\nccd_substeps = 1000000\n"));
+    assert_names(&e, Some(24), "physics.ccd_substeps", "1000000 is out of range (0..=16)");
+
+    // Cylinders and capsules of 1e30 used to reach parry and panic in epa3.rs.
+    let e = error(&with(STEER, "height = 0.02", "height = 1e30"));
+    assert_names(&e, Some(5), "objects[0].height", "1e30 is out of range (0.001..=10)");
+    let e = error(&with(STEER, "radius = 0.025", "radius = 1e30"));
+    assert_names(&e, Some(5), "objects[0].radius", "1e30 is out of range (0.001..=10)");
+    let capsule = with(&with(STEER, "shape = \"cylinder\"", "shape = \"capsule\""), "height = 0.02", "height = 1e30");
+    assert_names(&error(&capsule), Some(5), "objects[0].height", "1e30 is out of range (0..=10)");
+
+    let e = error(&with(SOFT, "size = [0.3, 0.2]", "size = [0.3, 1e30]"));
+    assert_names(&e, Some(5), "soft_bodies[0].size[1]", "1e30 is out of range (0.001..=10)");
+    let e = error(&with(SOFT, "mass = 0.03", "mass = 1e-30"));
+    assert_names(&e, Some(5), "soft_bodies[0].mass", "1e-30 is out of range (0.001..=1000)");
+    let e = error(&with(SOFT, "mass = 0.03", "density = 19000.0"));
+    assert_names(&e, Some(5), "soft_bodies[0].density", "gives a mass of 1140 kg, out of range (0.001..=1000 kg)");
+    let e = error(&with(STEER, "finish = [-0.3, -0.2]", "finish = [-0.3, -0.2]\nfinish_radius = 1e30"));
+    assert_names(&e, Some(13), "goal.finish_radius", "1e30 is out of range (at most 10)");
+}
+
+#[test]
+fn too_many_objects_or_copies_at_one_spot_are_refused_before_anything_is_built() {
+    let no_goal =
+        with(OBJECTS, "[goal]\nkind = \"positioning\"\n[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", "");
+    let many = |count: u32, step: &str| {
+        with(
+            &with(&no_goal, "mass = 1.0\n", &format!("mass = 1.0\ncount = {count}\n")),
+            "position = [0.0, 0.0]\n",
+            &format!("position = [-0.45, -0.3]\nstep = {step}\nper_row = 30\nrow_step = [0.0, 0.02]\n"),
+        )
+    };
+    // 1000 is the bound for the whole scene; the ball after them makes 1001.
+    let e = error(&many(1000, "[0.03, 0.0]"));
+    assert_names(&e, Some(16), "objects[1].count", "1 would make 1001 objects; a scene may have at most 1000");
+    let e = error(&many(10_000, "[0.03, 0.0]"));
+    assert_names(&e, Some(5), "objects[0].count", "10000 is out of range (1..=1000)");
+    let e = error(&many(40, "[0.0, 0.0]"));
+    assert_names(&e, Some(5), "objects[0].step", "40 copies need a `step` that is not [0, 0]");
+    assert!(scene::parse(&many(999, "[0.03, 0.0]"), "ok.toml").is_ok_and(|s| s.objects.len() == 1000));
+}
+
+#[test]
+fn a_duplicate_among_the_most_objects_a_scene_may_have_is_named_at_its_line() {
+    // The largest legal scene (1000 entries, the bound) with one repeated name.
+    let mut text = String::from("name = \"many\"\neffects = [\"gravity\"]\n[table]\nsize = [10.0, 10.0]\n");
+    for k in 0..1000 {
+        let name = if k == 999 { 500 } else { k };
+        let (x, y) = (f64::from(k % 40) * 0.2 - 4.0, f64::from(k / 40) * 0.2 - 4.0);
+        writeln!(
+            text,
+            "[[objects]]\nname = \"o{name}\"\nshape = \"sphere\"\nradius = 0.05\nmass = 0.1\ncolor = \"red\"\nposition = [{x}, {y}]"
+        )
+        .expect("write to a String");
+    }
+    let e = error(&text);
+    let line = 5 + 999 * 7;
+    assert_names(&e, Some(line), "objects[999].name", "`o500` is the name of two objects");
 }

@@ -377,3 +377,78 @@ fn flood(steps: usize) {
     let bodies = most.max(s.counts().bodies);
     assert!(bodies > 15_000, "flood reached only {bodies} particles");
 }
+
+// ---------------------------------------------------------------------------
+// Scenes at the documented bounds (`scene::bounds`, README "Bounds"): the
+// largest objects, the smallest masses, the most objects. Each is written
+// from the bound constants, so a bound that moves is tested where it moves
+// to; each runs 10,000 steps with hands pushing and must stay finite.
+
+use surfacelab::scene::bounds;
+
+/// Runs `text` for [`STEPS`] with `hands`; every active pose stays finite
+/// and the world counts no NaN. Returns the session.
+fn run_at_bound(text: &str, kind: TechniqueKind, hands: impl Fn(usize) -> Vec<Hand>) -> Session {
+    let scene = scene::parse(text, "bound.toml").unwrap_or_else(|e| panic!("a scene at the bounds loads: {e}"));
+    let mut s = Session::new(&scene, kind, SessionOptions::default()).expect("session");
+    for k in 0..STEPS {
+        s.step(&hands(k)).expect("step");
+        if k % 100 == 99 {
+            for (i, p) in s.world().object_poses().iter().enumerate() {
+                assert!(p.position.is_finite() && p.rotation.is_finite(), "{kind}: object {i} non-finite at step {k}");
+            }
+        }
+    }
+    assert_eq!(s.world().stats().nan_count, 0, "{kind}: NaN");
+    s
+}
+
+#[test]
+fn the_largest_objects_on_the_largest_table_stay_finite() {
+    let (side, size) = (bounds::TABLE_SIDE_M.1, bounds::OBJECT_SIZE_M.1);
+    let mass = bounds::MASS_KG.1;
+    let text = format!(
+        "name = \"largest\"\neffects = [\"gravity\", \"friction\", \"joints\"]\n[table]\nsize = [{side}, {side}]\n\
+         [[objects]]\nname = \"box\"\nshape = \"box\"\nsize = [{size}, {size}, {size}]\nmass = {mass}\ncolor = \"red\"\nposition = [0.0, 0.0]\n\
+         [[objects]]\nname = \"cyl\"\nshape = \"cylinder\"\nradius = {size}\nheight = {size}\nmass = {mass}\ncolor = \"blue\"\nposition = [0.0, 0.0, {}]\n\
+         [[objects]]\nname = \"cap\"\nshape = \"capsule\"\nradius = {size}\nheight = {size}\nmass = {mass}\ncolor = \"green\"\nposition = [0.0, 0.0, {}]\n",
+        size * 1.5,
+        size * 4.0
+    );
+    for kind in [TechniqueKind::Joint, TechniqueKind::Proxy] {
+        run_at_bound(&text, kind, |k| vec![tip(1, lerp(Vec2::new(-1.0, 0.0), Vec2::new(3.0, 2.0), k, 600))]);
+    }
+}
+
+#[test]
+fn the_smallest_and_lightest_objects_under_a_pressing_hand_stay_finite() {
+    let (size, mass) = (bounds::OBJECT_SIZE_M.0, bounds::MASS_KG.0);
+    let text = format!(
+        "name = \"lightest\"\neffects = [\"gravity\", \"friction\"]\n[table]\nsize = [1.0, 0.75]\n\
+         [[objects]]\nname = \"crumb\"\nshape = \"box\"\nsize = [{size}, {size}, {size}]\nmass = {mass}\ncolor = \"red\"\n\
+         position = [-0.02, -0.02]\ncount = 25\nstep = [0.01, 0.0]\nper_row = 5\nrow_step = [0.0, 0.01]\n\
+         [[objects]]\nname = \"bead\"\nshape = \"sphere\"\nradius = 0.01\nmass = {mass}\ncolor = \"blue\"\nposition = [0.05, 0.0]\n"
+    );
+    for kind in [TechniqueKind::Particle, TechniqueKind::Proxy] {
+        run_at_bound(&text, kind, |k| {
+            let x = lerp(Vec2::new(-0.05, 0.0), Vec2::new(0.1, 0.02), k, 900);
+            vec![Hand::new(1, HandKind::FlatHand, x.x, x.y).with_pressure(1.0)]
+        });
+    }
+}
+
+#[test]
+fn the_most_objects_a_scene_may_have_stay_finite() {
+    let n = bounds::MAX_OBJECTS;
+    let per_row = 40;
+    let text = format!(
+        "name = \"most\"\neffects = [\"gravity\", \"friction\"]\n[table]\nsize = [2.0, 2.0]\n\
+         [[objects]]\nname = \"piece\"\nshape = \"box\"\nsize = [0.03, 0.03, 0.02]\nmass = 0.01\ncolor = \"red\"\n\
+         position = [-0.9, -0.9]\ncount = {n}\nstep = [0.045, 0.0]\nper_row = {per_row}\nrow_step = [0.0, 0.06]\n"
+    );
+    let s = run_at_bound(&text, TechniqueKind::Proxy, |k| {
+        let p = lerp(Vec2::new(-0.9, -0.9), Vec2::new(0.9, 0.6), k, 3000);
+        vec![Hand::new(1, HandKind::Edge, p.x, p.y).with_pressure(1.0)]
+    });
+    assert_eq!(s.world().object_poses().len(), n);
+}

@@ -155,3 +155,63 @@ fn a_running_study_locks_its_folder_and_a_killed_one_does_not() {
     // 2 participants x 3 tasks x 3 techniques x 2 feedback x (2 reps + 1 practice).
     assert_eq!(keys.len(), 108);
 }
+
+/// `--resume` runs exactly the recorded design: edited designs and
+/// conflicting flags are refused (exit 2, naming the flag or the file), a
+/// torn last row is reported when dropped, a folder without run.toml gets a
+/// way forward, and a run.toml from before the design hash still resumes.
+#[test]
+fn resume_refuses_a_changed_design_and_says_what_it_drops() {
+    let out = tmp("resume").join("run");
+    let o = tiny(&out).output().expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let run_toml = out.join("run.toml");
+    let original = std::fs::read_to_string(&run_toml).expect("run.toml");
+    assert!(original.contains("design_hash = \""), "{original}");
+    let resume = |extra: &[&str]| {
+        let mut c = bin();
+        c.args(["study", "--no-progress", "--jobs", "2", "--resume"]).arg(&out).args(extra);
+        c.output().expect("runs")
+    };
+
+    // Flags that would change the design.
+    for (flag, value) in [("--seed", "99"), ("--participants", "2"), ("--time-limit", "9"), ("--replay", "assets")] {
+        let o = resume(&[flag, value]);
+        assert_eq!(o.status.code(), Some(2), "{flag}: {}", text(&o));
+        assert!(text(&o).contains(&format!("{flag} {value} conflicts with the run being resumed")), "{}", text(&o));
+    }
+    // The same value as recorded is no conflict.
+    let o = resume(&["--participants", "1", "--time-limit", "5"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o));
+
+    // A hand-edited design.
+    std::fs::write(&run_toml, original.replace("time_limit_override = 5.0", "time_limit_override = 7.0"))
+        .expect("edit");
+    let o = resume(&[]);
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("run.toml: the design was edited after the run started"), "{}", text(&o));
+
+    // A run.toml from before the hash resumes, with a note; a torn last row
+    // is dropped, said, and its trial run again.
+    let old: Vec<&str> = original.lines().filter(|l| !l.starts_with("design_hash")).collect();
+    let old = old.join("\n") + "\n";
+    std::fs::write(&run_toml, old).expect("old run.toml");
+    let csv = out.join("trials.csv");
+    let whole = std::fs::read(&csv).expect("trials.csv");
+    let last_start = whole[..whole.len() - 1].iter().rposition(|&b| b == b'\n').expect("rows") + 1;
+    std::fs::write(&csv, &whole[..last_start + 10]).expect("tear the last row");
+    let o = resume(&[]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o));
+    assert!(text(&o).contains("written before run.toml carried a design hash"), "{}", text(&o));
+    assert!(text(&o).contains("ended in a torn row (10 bytes"), "{}", text(&o));
+    assert_eq!(std::fs::read(&csv).expect("trials.csv"), whole, "the torn trial ran again to the same row");
+
+    // run.toml gone: resume and a fresh run both say what to do.
+    std::fs::remove_file(&run_toml).expect("remove");
+    let o = resume(&[]);
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("run.toml is missing") && text(&o).contains("trials.csv.orphan"), "{}", text(&o));
+    let o = tiny(&out).output().expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("Its run.toml is gone") && text(&o).contains("trials.csv.orphan"), "{}", text(&o));
+}

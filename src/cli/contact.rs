@@ -7,14 +7,19 @@ use std::process::ExitCode;
 
 pub fn run(args: &ContactArgs) -> ExitCode {
     let input = if args.input == "-" {
+        let cap = crate::scene::bounds::MAX_INPUT_BYTES;
         let mut s = String::new();
-        if let Err(e) = std::io::stdin().read_to_string(&mut s) {
+        if let Err(e) = std::io::stdin().take(cap + 1).read_to_string(&mut s) {
             eprintln!("surfacelab contact: cannot read standard input: {e}");
+            return ExitCode::from(EXIT_USAGE);
+        }
+        if s.len() as u64 > cap {
+            eprintln!("surfacelab contact: standard input is larger than the {} MiB an input may have", cap >> 20);
             return ExitCode::from(EXIT_USAGE);
         }
         s
     } else {
-        match std::fs::read_to_string(&args.input) {
+        match crate::files::read_capped_str(&args.input) {
             Ok(s) => s,
             Err(e) => {
                 eprintln!("surfacelab contact: cannot read {}: {e}", args.input);

@@ -130,10 +130,16 @@ fn parse_task_name(s: &str) -> Result<String, String> {
     if t.is_empty() { Err("empty task name".into()) } else { Ok(t.to_owned()) }
 }
 
-/// A finite, non-negative number of seconds.
+/// A finite number of seconds in `0..=scene::bounds::DURATION_S`: a
+/// longer run would simulate for hours (`--settle 1e30` never ended).
 fn parse_seconds(s: &str) -> Result<f32, String> {
     let v: f32 = s.parse().map_err(|_| format!("`{s}` is not a number of seconds"))?;
-    if v.is_finite() && v >= 0.0 { Ok(v) } else { Err(format!("`{s}` must be a finite number >= 0")) }
+    let max = crate::scene::bounds::DURATION_S;
+    if v.is_finite() && (0.0..=max).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!("`{s}` is out of range (a number of seconds, 0..={max})"))
+    }
 }
 
 #[derive(Debug, Args)]

@@ -25,10 +25,9 @@ pub fn run(args: &RunArgs) -> super::Outcome {
     let json = serde_json::to_string_pretty(&report).context("writing the JSON report")?;
     match &args.report {
         Some(path) => {
-            if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-                std::fs::create_dir_all(dir).with_context(|| format!("creating {}", dir.display()))?;
-            }
-            std::fs::write(path, json + "\n").with_context(|| format!("writing report {}", path.display()))?;
+            // Atomic: a full disk leaves the earlier report whole, not truncated.
+            crate::files::write_atomic(path, (json + "\n").as_bytes())
+                .with_context(|| format!("writing report {}", path.display()))?;
             eprintln!(
                 "surfacelab run: {} steps, complete: {}, max speed {:.2} m/s, NaN {}; report in {}",
                 report.steps,

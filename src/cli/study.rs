@@ -31,10 +31,25 @@ pub fn run(args: &StudyArgs) -> super::Outcome {
     }
     let cpu_before = process_cpu_s();
     let outcome = if let Some(dir) = &args.resume {
-        let design = RunFile::load(&dir.join("run.toml"))
-            .map_err(|e| Failure::from(e).context(format!("--resume {}", dir.display())))?
-            .design;
-        let runner = runner_for(args, design, dir)?;
+        let run_toml = dir.join(study::output::RUN_TOML);
+        if !run_toml.exists() && dir.join(study::output::TRIALS_CSV).exists() {
+            return Err(Failure::bad_input(anyhow::anyhow!(
+                "--resume {}: {} is missing{}",
+                dir.display(),
+                run_toml.display(),
+                study::error::orphan_advice(dir)
+            )));
+        }
+        let run =
+            RunFile::load(&run_toml).map_err(|e| Failure::from(e).context(format!("--resume {}", dir.display())))?;
+        refuse_conflicts(args, &run.design, &run_toml)?;
+        if run.design_hash.is_none() {
+            eprintln!(
+                "note: {} was written before run.toml carried a design hash: resuming without checking that its design was not edited",
+                run_toml.display()
+            );
+        }
+        let runner = runner_for(args, run.design, dir)?;
         study::resume_study(dir, runner.as_ref(), &options)?
     } else {
         let design = design_from(args)?;
@@ -45,6 +60,13 @@ pub fn run(args: &StudyArgs) -> super::Outcome {
         let runner = runner_for(args, design.clone(), &args.out)?;
         study::run_study(&design, &args.out, runner.as_ref(), &options)?
     };
+    if outcome.dropped_bytes > 0 {
+        eprintln!(
+            "note: {}/trials.csv ended in a torn row ({} bytes, cut off when the run was interrupted): dropped, and its trial ran again",
+            outcome.dir.display(),
+            outcome.dropped_bytes
+        );
+    }
     print_outcome(&outcome, cpu_since(cpu_before));
     if outcome.reported {
         println!(
@@ -264,4 +286,58 @@ fn design_from(args: &StudyArgs) -> Result<StudyDesign, Failure> {
         d.settings.frames = true;
     }
     Ok(d)
+}
+
+/// `--resume` runs the design in run.toml: a design flag given with it
+/// that says otherwise is refused (exit 2, naming the flag), not ignored.
+/// A flag that repeats the recorded value is fine.
+fn refuse_conflicts(args: &StudyArgs, design: &StudyDesign, run_toml: &std::path::Path) -> Result<(), Failure> {
+    let mut conflicts: Vec<(&str, String, String)> = Vec::new();
+    if let Some(n) = args.participants.filter(|&n| n != design.participants) {
+        conflicts.push(("--participants", n.to_string(), design.participants.to_string()));
+    }
+    if let Some(s) = args.seed.filter(|&s| s != design.seed) {
+        conflicts.push(("--seed", s.to_string(), design.seed.to_string()));
+    }
+    if let Some(r) = args.reps.filter(|&r| r != design.repetitions) {
+        conflicts.push(("--reps", r.to_string(), design.repetitions.to_string()));
+    }
+    if let Some(ts) = args.techniques.as_ref().filter(|ts| **ts != design.techniques) {
+        let names = |v: &[crate::pipeline::technique::TechniqueKind]| {
+            v.iter().map(ToString::to_string).collect::<Vec<_>>().join(",")
+        };
+        conflicts.push(("--techniques", names(ts), names(&design.techniques)));
+    }
+    if let Some(ts) = args.tasks.as_ref().filter(|ts| **ts != design.tasks) {
+        conflicts.push(("--tasks", ts.join(","), design.tasks.join(",")));
+    }
+    if args.no_practice && design.practice {
+        conflicts.push(("--no-practice", "given".into(), "practice = true".into()));
+    }
+    if let Some(t) = args.time_limit.filter(|&t| Some(f64::from(t)) != design.time_limit_override) {
+        conflicts.push((
+            "--time-limit",
+            t.to_string(),
+            design.time_limit_override.map_or("none".into(), |v| v.to_string()),
+        ));
+    }
+    if let Some(r) = args.replay.as_ref().filter(|r| Some(*r) != design.settings.replay.as_ref()) {
+        conflicts.push((
+            "--replay",
+            r.display().to_string(),
+            design.settings.replay.as_ref().map_or("none (scripted participants)".into(), |p| p.display().to_string()),
+        ));
+    }
+    if args.frames && !design.settings.frames {
+        conflicts.push(("--frames", "given".into(), "frames = false".into()));
+    }
+    match conflicts.first() {
+        None => Ok(()),
+        Some((flag, given, recorded)) => Err(Failure::bad_input(anyhow::anyhow!(
+            "{flag} {given} conflicts with the run being resumed ({} records {recorded}); --resume runs the recorded \
+             design: drop {flag}, or start a new folder with --from {} --out NEW_FOLDER {flag} ...",
+            run_toml.display(),
+            run_toml.display()
+        ))),
+    }
 }

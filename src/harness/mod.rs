@@ -9,5 +9,6 @@
 pub mod behaviour;
 pub mod participant;
 pub mod plot_font;
+pub mod plot_png;
 pub mod study;
 pub mod tradeoff;

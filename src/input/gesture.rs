@@ -14,11 +14,11 @@
 //! fingers = 2                     # fingertips only: 1..=5 (default 1)
 //!
 //! [[hands.keys]]                  # keyframes, strictly increasing t
-//! t = 0.0                         # seconds from the gesture start, >= 0
-//! pos = [-0.05, 0.0]              # table metres (x right, y away); required in the first key
-//! angle_deg = 0.0                 # degrees counter-clockwise, 0 = fingers to +y
-//! spread = 1.0                    # >= 0; 0 = fingers together, 1 = relaxed
-//! scale = 1.0                     # > 0; 1 = adult size
+//! t = 0.0                         # seconds from the gesture start, 0..=600
+//! pos = [-0.05, 0.0]              # table metres (x right, y away), within ±100; required in the first key
+//! angle_deg = 0.0                 # degrees counter-clockwise, 0 = fingers to +y; within ±36000
+//! spread = 1.0                    # 0..=10; 0 = fingers together, 1 = relaxed
+//! scale = 1.0                     # > 0, <= 10; 1 = adult size
 //! pressure = 1.0                  # 0..=1, the grey level of the touch
 //! ```
 //!
@@ -48,6 +48,8 @@ use serde::Deserialize;
 use toml::Spanned;
 
 use crate::pipeline::surface::{Hand, HandKind, Pose};
+use crate::scene::bounds;
+use crate::scene::fields::human;
 use crate::scene::{FieldError, FieldReader};
 
 /// The `format` value every gesture file carries.
@@ -220,7 +222,7 @@ impl Gesture {
     pub fn load(path: impl AsRef<Path>) -> Result<Self, GestureError> {
         let path = path.as_ref();
         let origin = path.display().to_string();
-        match std::fs::read_to_string(path) {
+        match crate::files::read_capped(path) {
             Ok(text) => parse(&text, &origin),
             Err(source) if source.kind() == std::io::ErrorKind::NotFound => match crate::scene::builtin::file(path) {
                 Some(text) => parse(text, &format!("{origin} (built in)")),
@@ -233,7 +235,7 @@ impl Gesture {
     /// Writes the gesture in the version-1 format.
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), GestureError> {
         let path = path.as_ref();
-        std::fs::write(path, self.to_string())
+        crate::files::write_atomic(path, self.to_string().as_bytes())
             .map_err(|source| GestureError::Write { origin: path.display().to_string(), source })
     }
 
@@ -449,7 +451,7 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
     let mut keys: Vec<Key> = Vec::with_capacity(raw_keys.len());
     for (j, k) in raw_keys.iter().enumerate() {
         let at = |name: &str| format!("{path}.keys[{j}].{name}");
-        let t = r.number(&at("t"), &k.t, 0.0, f64::MAX)?;
+        let t = r.number(&at("t"), &k.t, 0.0, f64::from(bounds::DURATION_S))?;
         let previous = keys.last().copied();
         if let Some(p) = previous
             && t <= p.t
@@ -466,6 +468,18 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
                 if !v.iter().all(|c| c.is_finite()) {
                     return Err(r.field(at("pos"), Some(p), format!("must be finite, found [{}, {}]", v[0], v[1])));
                 }
+                let far = f64::from(bounds::POSITION_M);
+                if v.iter().any(|c| c.abs() > far) {
+                    return Err(r.field(
+                        at("pos"),
+                        Some(p),
+                        format!(
+                            "[{}, {}] is out of range (within ±{far} m of the table centre)",
+                            human(v[0]),
+                            human(v[1])
+                        ),
+                    ));
+                }
                 v
             }
             (None, Some(prev)) => prev.pos,
@@ -477,14 +491,23 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
         };
         let base = previous.unwrap_or(Key { t, pos, angle_deg: 0.0, spread: 1.0, scale: 1.0, pressure: 1.0 });
         let scale = match &k.scale {
-            Some(v) => r.positive(&at("scale"), v)?,
+            Some(v) => {
+                r.positive(&at("scale"), v)?;
+                r.number(&at("scale"), v, 0.0, bounds::GESTURE_SCALE)?
+            }
             None => base.scale,
         };
         keys.push(Key {
             t,
             pos,
-            angle_deg: or(&k.angle_deg, "angle_deg", f64::MIN, f64::MAX, base.angle_deg)?,
-            spread: or(&k.spread, "spread", 0.0, f64::MAX, base.spread)?,
+            angle_deg: or(
+                &k.angle_deg,
+                "angle_deg",
+                -bounds::GESTURE_ANGLE_DEG,
+                bounds::GESTURE_ANGLE_DEG,
+                base.angle_deg,
+            )?,
+            spread: or(&k.spread, "spread", 0.0, bounds::GESTURE_SPREAD, base.spread)?,
             scale,
             pressure: or(&k.pressure, "pressure", 0.0, 1.0, base.pressure)?,
         });

@@ -171,10 +171,10 @@ pub fn render_to_image(gpu: &GpuContext, list: &DrawList, width: u32, height: u3
 pub fn save_png(image: &RgbaImage, path: impl AsRef<Path>) -> Result<(), RenderError> {
     let path = path.as_ref();
     let error = |source| RenderError::Png { path: path.to_path_buf(), source };
-    if let Some(parent) = path.parent().filter(|p| !p.as_os_str().is_empty()) {
-        std::fs::create_dir_all(parent).map_err(|e| error(image::ImageError::IoError(e)))?;
-    }
-    image.save_with_format(path, image::ImageFormat::Png).map_err(error)
+    let mut png = std::io::Cursor::new(Vec::new());
+    image.write_to(&mut png, image::ImageFormat::Png).map_err(error)?;
+    // Atomic: a full disk leaves no 0-byte PNG and no temporary file.
+    crate::files::write_atomic(path, png.get_ref()).map_err(|e| error(image::ImageError::IoError(e)))
 }
 
 #[cfg(test)]

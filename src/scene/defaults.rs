@@ -26,8 +26,7 @@ pub const OBJECT_RESTITUTION: f32 = 0.1;
 pub const OBJECT_DAMPING: f32 = 0.0;
 /// One object per `[[objects]]` entry unless `count` repeats it.
 pub const OBJECT_COUNT: u32 = 1;
-/// The largest `count`: far above the gather scene's few hundred pieces.
-pub const MAX_OBJECT_COUNT: u32 = 10_000;
+// The largest `count` is `bounds::MAX_OBJECTS`, all objects together.
 
 /// Soft-body thickness (m): a sheet of paper or cloth is about 2 mm, the
 /// skin around a volume 3 mm.

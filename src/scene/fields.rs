@@ -102,13 +102,14 @@ impl<'a> FieldReader<'a> {
             return Ok(v);
         }
         let unbounded = |b: T| b.into().abs() >= f64::from(f32::MAX);
+        let (lo_h, hi_h) = (human(lo.into()), human(hi.into()));
         let range = match (unbounded(lo), unbounded(hi)) {
-            (false, false) => format!("{lo}..={hi}"),
-            (false, true) => format!(">= {lo}"),
-            (true, false) => format!("<= {hi}"),
+            (false, false) => format!("{lo_h}..={hi_h}"),
+            (false, true) => format!(">= {lo_h}"),
+            (true, false) => format!("<= {hi_h}"),
             (true, true) => unreachable!("a finite number lies within unbounded limits"),
         };
-        Err(self.error(at, field, format!("{v} is out of range ({range})")))
+        Err(self.error(at, field, format!("{} is out of range ({range})", human(v.into()))))
     }
 
     /// A finite number greater than 0.
@@ -120,9 +121,26 @@ impl<'a> FieldReader<'a> {
             return Err(self.error(at, field, format!("must be a finite number, got {v}")));
         }
         if v.into() <= 0.0 {
-            return Err(self.error(at, field, format!("{v} must be greater than 0")));
+            return Err(self.error(at, field, format!("{} must be greater than 0", human(v.into()))));
         }
         Ok(v)
+    }
+}
+
+/// A number as people read it: as written for ordinary magnitudes
+/// (`0.5`, `120`), in scientific notation past them (`1e30`, `1e-30`),
+/// never hundreds of digits. An `f32` widened to `f64` is first rounded
+/// back to the `f32`'s own shortest digits (`0.1`, not `0.10000000149`).
+pub fn human(v: f64) -> String {
+    #[expect(clippy::cast_possible_truncation, reason = "only to test whether v is an f32 widened")]
+    let narrow = v as f32;
+    let a = v.abs();
+    let scientific = a != 0.0 && !(1e-4..1e7).contains(&a);
+    match (f64::from(narrow) == v, scientific) {
+        (true, true) => format!("{narrow:e}"),
+        (true, false) => format!("{narrow}"),
+        (false, true) => format!("{v:e}"),
+        (false, false) => format!("{v}"),
     }
 }
 
@@ -161,6 +179,14 @@ mod tests {
             "f.toml:2: field `n`: 0 is out of range (1..=100)"
         );
         assert_eq!(r.number(at, "b", 0.5_f64, 0.0, 1.0), Ok(0.5));
+        assert_eq!(
+            r.number(at, "b", 1e30_f32, 0.001, 10.0).expect_err("huge").to_string(),
+            "f.toml:2: field `b`: 1e30 is out of range (0.001..=10)"
+        );
+        assert_eq!(
+            r.positive(at, "b", -1e-30_f64).expect_err("tiny").to_string(),
+            "f.toml:2: field `b`: -1e-30 must be greater than 0"
+        );
     }
 
     #[test]

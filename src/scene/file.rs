@@ -31,7 +31,8 @@ pub struct SceneFile {
     pub goal: Option<Spanned<GoalFile>>,
     /// Technique parameter overrides, validated by the technique module.
     #[serde(default)]
-    pub technique: Option<toml::Table>,
+    /// Each key with its place in the file, so errors name the line.
+    pub technique: Option<std::collections::BTreeMap<String, Spanned<toml::Value>>>,
 }
 
 #[derive(Debug, Deserialize)]

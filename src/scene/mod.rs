@@ -4,6 +4,7 @@
 //! plain [`Scene`] value that the world, the renderer, the study harness, the
 //! benchmarks and the tests all share — one scene definition, many uses.
 
+pub mod bounds;
 pub mod builtin;
 mod defaults;
 mod effects;

@@ -23,6 +23,8 @@ pub struct Scene {
     pub goal: Goal,
     /// Technique overrides (`[technique]`), checked by the technique config.
     pub technique: toml::Table,
+    /// The 1-based line of each key of `technique`, for its errors.
+    pub technique_lines: std::collections::BTreeMap<String, usize>,
 }
 
 impl Scene {

@@ -115,7 +115,7 @@ impl Session {
     pub fn new(scene: &Scene, kind: TechniqueKind, options: SessionOptions) -> Result<Session, SessionError> {
         let config = match options.config {
             Some(c) => c,
-            None => TechniqueConfig::from_scene_table(&scene.technique, &scene.origin)?,
+            None => TechniqueConfig::from_scene(scene)?,
         };
         let effects = scene.effects.union(kind.required_effects());
         let world = World::with_effects(scene, effects);

@@ -50,6 +50,7 @@
 use super::error::StudyError;
 use super::trial::TrialSpec;
 use crate::pipeline::technique::TechniqueKind;
+use crate::scene::bounds;
 use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
 
@@ -169,13 +170,40 @@ impl StudyDesign {
         if self.repetitions == 0 {
             return fail("at least one repetition is needed".into());
         }
+        if self.participants > bounds::MAX_PARTICIPANTS {
+            return fail(format!(
+                "participants (--participants, or `participants` in run.toml): {} is out of range (1..={})",
+                self.participants,
+                bounds::MAX_PARTICIPANTS
+            ));
+        }
+        if self.repetitions > bounds::MAX_REPETITIONS {
+            return fail(format!(
+                "repetitions (--reps, or `repetitions` in run.toml): {} is out of range (1..={})",
+                self.repetitions,
+                bounds::MAX_REPETITIONS
+            ));
+        }
+        // Checked before `trials()` allocates the plan.
+        let trials = u64::from(self.participants).saturating_mul(self.trials_per_participant() as u64);
+        if trials > bounds::MAX_TRIALS {
+            return fail(format!(
+                "{trials} trials ({} participants x {} each) is more than a study may have ({})",
+                self.participants,
+                self.trials_per_participant(),
+                bounds::MAX_TRIALS
+            ));
+        }
         if self.seed > i64::MAX as u64 {
             return fail(format!("seed {} does not fit a TOML integer (max {})", self.seed, i64::MAX));
         }
         if let Some(limit) = self.time_limit_override
-            && !(limit.is_finite() && limit > 0.0)
+            && !(limit.is_finite() && limit > 0.0 && limit <= f64::from(bounds::DURATION_S))
         {
-            return fail(format!("time limit must be a positive number of seconds, got {limit}"));
+            return fail(format!(
+                "time limit (--time-limit): {limit} is out of range (a number of seconds, > 0 and <= {})",
+                bounds::DURATION_S
+            ));
         }
         if let Some(delay) = self.settings.perception_delay_s
             && !(delay.is_finite() && delay >= 0.0)

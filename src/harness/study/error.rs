@@ -20,7 +20,7 @@ pub enum StudyError {
     #[error("cannot write the run file")]
     TomlWrite(#[from] toml::ser::Error),
     /// `--out` names a folder that already holds a run.
-    #[error("{} already holds a study run (trials.csv or run.toml); resume it with --resume or pick another folder", path.display())]
+    #[error("{} already holds a study run (trials.csv or run.toml); resume it with --resume or pick another folder{}", path.display(), orphan_advice(path))]
     AlreadyExists { path: PathBuf },
     /// A folder's contents do not belong to the design that should have made them.
     #[error("{}: {message}", path.display())]
@@ -65,4 +65,19 @@ impl StudyError {
     pub(crate) fn mismatch(path: &Path, message: impl Into<String>) -> StudyError {
         StudyError::Mismatch { path: path.to_owned(), message: message.into() }
     }
+}
+
+/// What to do with a `trials.csv` whose `run.toml` is gone: its design is
+/// unknown, so it cannot be resumed; the same flags reproduce its rows.
+pub(crate) fn orphan_advice(dir: &std::path::Path) -> String {
+    if dir.join(super::output::RUN_TOML).exists() || !dir.join(super::output::TRIALS_CSV).exists() {
+        return String::new();
+    }
+    format!(
+        ". Its run.toml is gone, so the design of its trials.csv is unknown and it cannot be resumed: \
+         restore run.toml, or move trials.csv aside (mv {0}/trials.csv {0}/trials.csv.orphan) and run \
+         `study --out {0}` again with the flags the run was started with; the same flags and seed reproduce \
+         the same rows",
+        dir.display()
+    )
 }

@@ -32,6 +32,7 @@ const FEEDBACK_OFF: RGBColor = RGBColor(255, 127, 14);
 /// Colour of the failure counts over the bars.
 const FAILED: RGBColor = RGBColor(200, 20, 20);
 use crate::harness::plot_font::FONT;
+use crate::harness::plot_png;
 pub(super) const PANEL_WIDTH: u32 = 440;
 pub(super) const HEIGHT: u32 = 600;
 /// The title and the failure note at their sizes need about 880 px.
@@ -51,9 +52,10 @@ pub fn write_figure(design: &StudyDesign, summary: &[SummaryRow], png: &Path, sv
         let path = path.to_owned();
         move |message: String| StudyError::Plot { path, message }
     };
-    draw(&BitMapBackend::new(png, size).into_drawing_area(), design, summary).map_err(plot_err(png))?;
-    draw(&SVGBackend::new(svg, size).into_drawing_area(), design, summary).map_err(plot_err(svg))?;
-    Ok(())
+    let png_bytes = plot_png::png_bytes(size, |area| draw(area, design, summary)).map_err(plot_err(png))?;
+    let svg_text = plot_png::svg_text(size, |area| draw(area, design, summary)).map_err(plot_err(svg))?;
+    super::output::write_atomically(png, &png_bytes)?;
+    super::output::write_atomically(svg, svg_text.as_bytes())
 }
 
 /// One panel per task, but never narrower than the title and the note need.

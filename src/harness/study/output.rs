@@ -175,6 +175,12 @@ pub struct RunFile {
     /// The version that created the folder (rows carry their own).
     pub version: String,
     pub design: StudyDesign,
+    /// [`design_hash`] of `design` when the folder was made: resume
+    /// refuses a run.toml whose design was edited since (rows of two
+    /// designs would share one file). Absent in folders made before it
+    /// existed; those resume with a note.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub design_hash: Option<String>,
     /// `None` for a whole run (or a merged one).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shard: Option<Shard>,
@@ -188,7 +194,29 @@ pub struct RunFile {
 impl RunFile {
     pub fn new(design: StudyDesign, shard: Option<Shard>) -> RunFile {
         let plan = design.plan();
-        RunFile { format: RUN_FORMAT.to_owned(), version: VERSION.to_owned(), design, shard, plan }
+        let design_hash = Some(design_hash(&design));
+        RunFile { format: RUN_FORMAT.to_owned(), version: VERSION.to_owned(), design, design_hash, shard, plan }
+    }
+
+    /// Whether `design` is still the one the folder was made with: `Ok(true)`
+    /// when the recorded hash matches, `Ok(false)` when the file predates
+    /// the hash (nothing to check), an error naming the file when it was
+    /// edited.
+    pub fn check_unedited(&self, path: &Path) -> Result<bool, StudyError> {
+        let Some(recorded) = &self.design_hash else { return Ok(false) };
+        let now = design_hash(&self.design);
+        if *recorded == now {
+            return Ok(true);
+        }
+        Err(StudyError::mismatch(
+            path,
+            format!(
+                "the design was edited after the run started (design_hash {recorded}, the design now hashes to {now}); \
+                 resuming would mix rows of two designs in one trials.csv. To run the edited design, start a new \
+                 folder: study --from {} --out NEW_FOLDER",
+                path.display()
+            ),
+        ))
     }
 
     pub fn to_toml(&self) -> Result<String, StudyError> {
@@ -197,7 +225,7 @@ impl RunFile {
 
     /// Reads and validates a run file (format and design).
     pub fn load(path: &Path) -> Result<RunFile, StudyError> {
-        let text = std::fs::read_to_string(path).map_err(StudyError::io(path))?;
+        let text = crate::files::read_capped(path).map_err(StudyError::io(path))?;
         let run: RunFile =
             toml::from_str(&text).map_err(|source| StudyError::TomlRead { path: path.to_owned(), source })?;
         if run.format != RUN_FORMAT {
@@ -221,6 +249,16 @@ impl RunFile {
     pub fn save(&self, path: &Path) -> Result<(), StudyError> {
         write_atomically(path, self.to_toml()?.as_bytes())
     }
+}
+
+/// A stable hash of a design (FNV-1a, 64 bits, over its TOML text), as 16
+/// hex digits: the same design gives the same hash on every machine and
+/// build, so a shard made on a cluster node resumes anywhere.
+pub fn design_hash(design: &StudyDesign) -> String {
+    use std::hash::Hasher as _;
+    let mut h = fnv::FnvHasher::default();
+    h.write(toml::to_string(design).unwrap_or_default().as_bytes());
+    format!("{:016x}", h.finish())
 }
 
 /// Appends rows to `trials.csv`, one fsync'ed write per row.
@@ -357,14 +395,7 @@ pub fn log_error(dir: &Path, line: &str) -> Result<(), StudyError> {
 
 /// Temporary file beside `path`, fsync, rename: readers see the old file or
 /// the new one, never half of one.
+/// (`files::write_atomic`; a failure leaves no temporary file.)
 pub(crate) fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), StudyError> {
-    let mut tmp_name = path.file_name().map(std::ffi::OsStr::to_os_string).unwrap_or_default();
-    tmp_name.push(".tmp");
-    let tmp = path.with_file_name(tmp_name);
-    {
-        let mut f = File::create(&tmp).map_err(StudyError::io(&tmp))?;
-        f.write_all(bytes).map_err(StudyError::io(&tmp))?;
-        f.sync_all().map_err(StudyError::io(&tmp))?;
-    }
-    std::fs::rename(&tmp, path).map_err(StudyError::io(path))
+    crate::files::write_atomic(path, bytes).map_err(StudyError::io(path))
 }

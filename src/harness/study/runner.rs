@@ -117,6 +117,7 @@ pub fn run_study(
 pub fn resume_study(dir: &Path, runner: &dyn TrialRunner, options: &RunOptions) -> Result<RunOutcome, StudyError> {
     let _lock = if dir.is_dir() { Some(RunLock::acquire(dir)?) } else { None };
     let run = RunFile::load(&dir.join(RUN_TOML))?;
+    run.check_unedited(&dir.join(RUN_TOML))?;
     if let Some(shard) = options.shard
         && Some(shard) != run.shard
     {

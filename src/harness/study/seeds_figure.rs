@@ -18,8 +18,9 @@ use std::path::Path;
 pub fn write_seeds_figure(design: &StudyDesign, per_seed: &[Vec<SummaryRow>], png: &Path) -> Result<(), StudyError> {
     ensure_font(png)?;
     let size = (figure_width(design.tasks.len()), HEIGHT);
-    draw(&BitMapBackend::new(png, size).into_drawing_area(), design, per_seed)
-        .map_err(|message| StudyError::Plot { path: png.to_owned(), message })
+    let bytes = crate::harness::plot_png::png_bytes(size, |area| draw(area, design, per_seed))
+        .map_err(|message| StudyError::Plot { path: png.to_owned(), message })?;
+    super::output::write_atomically(png, &bytes)
 }
 
 fn draw<DB: DrawingBackend>(

@@ -276,7 +276,7 @@ pub fn prepare(job: &SlurmJob, design: &StudyDesign) -> Result<(), StudyError> {
     std::fs::create_dir_all(&slurm).map_err(StudyError::io(&slurm))?;
     for (path, text) in [(job.array_script_path(), job.array_script()?), (job.merge_script_path(), job.merge_script()?)]
     {
-        std::fs::write(&path, text).map_err(StudyError::io(&path))?;
+        super::output::write_atomically(&path, text.as_bytes())?;
     }
     Ok(())
 }

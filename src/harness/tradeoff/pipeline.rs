@@ -100,10 +100,7 @@ fn base() -> anyhow::Result<Setup> {
 }
 
 fn with_config(mut s: Setup, f: impl FnOnce(&mut TechniqueConfig)) -> Setup {
-    let mut c =
-        s.options.config.clone().unwrap_or_else(|| {
-            TechniqueConfig::from_scene_table(&s.scene.technique, &s.scene.origin).unwrap_or_default()
-        });
+    let mut c = s.options.config.clone().unwrap_or_else(|| TechniqueConfig::from_scene(&s.scene).unwrap_or_default());
     f(&mut c);
     s.options.config = Some(c);
     s

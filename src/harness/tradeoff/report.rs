@@ -10,6 +10,7 @@ use crate::harness::plot_font::{FONT, ensure_font};
 use crate::input::Gesture;
 use anyhow::Context;
 use indicatif::{ProgressBar, ProgressStyle};
+use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -54,7 +55,8 @@ pub fn run_tradeoff(options: &TradeoffOptions) -> anyhow::Result<Vec<Row>> {
         let of: Vec<&Row> = rows.iter().filter(|r| r.knob == knob).collect();
         plot(&options.out.join(format!("{knob}.png")), &knob, &of)?;
     }
-    std::fs::write(options.out.join("tradeoff.md"), summary(&rows)).context("writing tradeoff.md")?;
+    crate::files::write_atomic(&options.out.join("tradeoff.md"), summary(&rows).as_bytes())
+        .context("writing tradeoff.md")?;
     Ok(rows)
 }
 
@@ -96,12 +98,12 @@ fn group_of(r: &Row) -> String {
 }
 
 fn write_csv(path: &Path, rows: &[Row]) -> anyhow::Result<()> {
-    let mut w = csv::Writer::from_path(path).with_context(|| format!("writing {}", path.display()))?;
+    let mut w = csv::Writer::from_writer(Vec::new());
     for r in rows {
         w.serialize(r)?;
     }
-    w.flush()?;
-    Ok(())
+    let bytes = w.into_inner().map_err(|e| anyhow::anyhow!("{}", e.error()))?;
+    crate::files::write_atomic(path, &bytes).with_context(|| format!("writing {}", path.display()))
 }
 
 /// The README-ready table: what each knob costs and buys.
@@ -135,8 +137,13 @@ pub fn summary(rows: &[Row]) -> String {
 
 fn plot(path: &Path, knob: &str, rows: &[&Row]) -> anyhow::Result<()> {
     anyhow::ensure!(ensure_font(), "the bundled plot font did not load");
-    let area = BitMapBackend::new(path, (900, 640)).into_drawing_area();
-    let e = |e: DrawingAreaErrorKind<_>| anyhow::anyhow!("plotting {}: {e}", path.display());
+    let png = crate::harness::plot_png::png_bytes((900, 640), |area| draw(area, knob, rows))
+        .map_err(|m| anyhow::anyhow!("plotting {}: {m}", path.display()))?;
+    crate::files::write_atomic(path, &png).with_context(|| format!("writing {}", path.display()))
+}
+
+fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, knob: &str, rows: &[&Row]) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     area.fill(&WHITE).map_err(e)?;
     let (tmin, tmax) = rows.iter().fold((f64::MAX, f64::MIN), |(a, b), r| (a.min(r.time), b.max(r.time)));
     let (emin, emax) = rows.iter().fold((f64::MAX, f64::MIN), |(a, b), r| (a.min(r.error), b.max(r.error)));
@@ -148,7 +155,7 @@ fn plot(path: &Path, knob: &str, rows: &[&Row]) -> anyhow::Result<()> {
     let (y0, y1) = pad(emin.min(0.0), emax);
     let unit_t = rows.first().map_or("", |r| r.time_unit.as_str());
     let unit_e = rows.first().map_or("", |r| r.error_unit.as_str());
-    let mut chart = ChartBuilder::on(&area)
+    let mut chart = ChartBuilder::on(area)
         .caption(format!("{knob}: time against error"), (FONT, 30))
         .margin(20)
         .x_label_area_size(55)
@@ -186,6 +193,5 @@ fn plot(path: &Path, knob: &str, rows: &[&Row]) -> anyhow::Result<()> {
         let label = if r.default { format!("{} (default)", r.value) } else { r.value.clone() };
         chart.draw_series(std::iter::once(Text::new(label, (r.time, r.error), (FONT, 20).into_font()))).map_err(e)?;
     }
-    area.present().map_err(e)?;
     Ok(())
 }

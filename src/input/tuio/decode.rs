@@ -528,6 +528,16 @@ fn check_nesting(bytes: &[u8], depth: usize) -> Result<(), TuioError> {
     Ok(())
 }
 
+/// An OSC argument for an error message. rosc's `Display` of a time tag
+/// converts it to a `SystemTime` and panics on one before 1970 or past
+/// 2106 (found by `tests/fuzz.rs`), so time tags are shown raw.
+fn shown(a: &rosc::OscType) -> String {
+    match a {
+        rosc::OscType::Time(t) => format!("time tag {}.{}", t.seconds, t.fractional),
+        other => other.to_string(),
+    }
+}
+
 fn op(m: &rosc::OscMessage) -> Result<Op, TuioError> {
     let kind = match m.addr.as_str() {
         "/tuio/2Dcur" => Kind::Cursor,
@@ -539,7 +549,7 @@ fn op(m: &rosc::OscMessage) -> Result<Op, TuioError> {
         return Err(bad("no command (expected source, alive, set or fseq)".into()));
     };
     let rosc::OscType::String(command) = command else {
-        return Err(bad(format!("the first argument must be the command string, found {command}")));
+        return Err(bad(format!("the first argument must be the command string, found {}", shown(command))));
     };
     let args = &m.args[1..];
     match command.as_str() {
@@ -549,12 +559,14 @@ fn op(m: &rosc::OscMessage) -> Result<Op, TuioError> {
         },
         "alive" => {
             let ids = args.iter().enumerate().map(|(i, a)| {
-                int(a).ok_or_else(|| bad(format!("alive: argument {i} is not an int32 session id ({a})")))
+                int(a).ok_or_else(|| bad(format!("alive: argument {i} is not an int32 session id ({})", shown(a))))
             });
             Ok(Op::Alive(kind, ids.collect::<Result<_, _>>()?))
         }
         "fseq" => match args {
-            [a] => int(a).map(|f| Op::Fseq(kind, f)).ok_or_else(|| bad(format!("fseq: {a} is not an int32 frame id"))),
+            [a] => int(a)
+                .map(|f| Op::Fseq(kind, f))
+                .ok_or_else(|| bad(format!("fseq: {} is not an int32 frame id", shown(a)))),
             _ => Err(bad(format!("fseq takes one frame id, found {} arguments", args.len()))),
         },
         "set" => {
@@ -566,11 +578,13 @@ fn op(m: &rosc::OscMessage) -> Result<Op, TuioError> {
                     args.len()
                 )));
             }
-            let session = int(&args[0]).ok_or_else(|| bad(format!("set: session id {} is not an int32", args[0])))?;
+            let session =
+                int(&args[0]).ok_or_else(|| bad(format!("set: session id {} is not an int32", shown(&args[0]))))?;
             let mut v = [0.0f32; 5];
             for (i, slot) in v.iter_mut().enumerate().take(need - 1) {
-                *slot = float(&args[i + 1])
-                    .ok_or_else(|| bad(format!("set: argument {} ({}) is not a finite number", i + 1, args[i + 1])))?;
+                *slot = float(&args[i + 1]).ok_or_else(|| {
+                    bad(format!("set: argument {} ({}) is not a finite number", i + 1, shown(&args[i + 1])))
+                })?;
             }
             let coord_ok = |c: f32| (-COORD_MARGIN..=1.0 + COORD_MARGIN).contains(&c);
             if !coord_ok(v[0]) || !coord_ok(v[1]) {

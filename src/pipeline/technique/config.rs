@@ -121,11 +121,14 @@ impl Default for TechniqueConfig {
     }
 }
 
-/// A `[technique]` table that does not fit [`TechniqueConfig`].
+/// A `[technique]` table that does not fit [`TechniqueConfig`]: the file,
+/// and where known the line and the field, worded as scene errors are.
 #[derive(Debug, thiserror::Error)]
-#[error("{origin}: [technique]: {message}")]
+#[error("{origin}{}: {}{message}", line.map(|l| format!(":{l}")).unwrap_or_default(), field.as_ref().map_or_else(|| "[technique]: ".into(), |f| format!("field `technique.{f}`: ")))]
 pub struct ConfigError {
     pub origin: String,
+    pub line: Option<usize>,
+    pub field: Option<String>,
     pub message: String,
 }
 
@@ -137,46 +140,95 @@ impl crate::error::Kind for ConfigError {
 }
 
 impl TechniqueConfig {
-    /// Defaults overridden by a scene's `[technique]` table.
+    /// Defaults overridden by a scene's `[technique]` table; errors name
+    /// the scene file, the line and the field.
+    pub fn from_scene(scene: &crate::scene::Scene) -> Result<Self, ConfigError> {
+        Self::from_table_at(&scene.technique, &scene.origin, &scene.technique_lines)
+    }
+
+    /// Defaults overridden by a `[technique]` table whose key lines are unknown.
     pub fn from_scene_table(table: &toml::Table, origin: &str) -> Result<Self, ConfigError> {
-        let cfg: TechniqueConfig = toml::Value::Table(table.clone()).try_into().map_err(|e: toml::de::Error| {
-            ConfigError { origin: origin.to_string(), message: e.message().to_string() }
+        Self::from_table_at(table, origin, &std::collections::BTreeMap::new())
+    }
+
+    fn from_table_at(
+        table: &toml::Table,
+        origin: &str,
+        lines: &std::collections::BTreeMap<String, usize>,
+    ) -> Result<Self, ConfigError> {
+        let error = |field: Option<&str>, message: String| ConfigError {
+            origin: origin.to_string(),
+            line: field.and_then(|f| lines.get(f).copied()),
+            field: field.map(str::to_owned),
+            message,
+        };
+        let parse =
+            |t: &toml::Table| -> Result<TechniqueConfig, toml::de::Error> { toml::Value::Table(t.clone()).try_into() };
+        let cfg = parse(table).map_err(|whole| {
+            // toml names the bad value but not its key: try the keys one
+            // at a time to find it.
+            let bad = table.iter().find_map(|(k, v)| {
+                let one: toml::Table = std::iter::once((k.clone(), v.clone())).collect();
+                parse(&one).err().map(|e| (k.as_str(), e))
+            });
+            match bad {
+                Some((k, e)) => error(Some(k), e.message().to_string()),
+                None => error(None, whole.message().to_string()),
+            }
         })?;
-        cfg.validate().map_err(|message| ConfigError { origin: origin.to_string(), message })?;
+        cfg.check().map_err(|(field, message)| error(Some(field), message))?;
         Ok(cfg)
     }
 
-    /// Checks ranges; the message names the field.
+    /// Checks ranges against `scene::bounds`; the message names the field
+    /// and the bound.
     pub fn validate(&self) -> Result<(), String> {
-        let pos = [
-            ("proxy_mass", self.proxy_mass),
-            ("proxy_size", self.proxy_size),
-            ("particle_radius", self.particle_radius),
-            ("particle_mass", self.particle_mass),
-            ("proxy_weight", self.proxy_weight),
-            ("particle_weight", self.particle_weight),
-            ("max_contact_speed", self.max_contact_speed),
-            ("joint_break_force", self.joint_break_force),
+        self.check().map_err(|(field, message)| format!("`{field}`: {message}"))
+    }
+
+    /// [`Self::validate`], with the field apart.
+    fn check(&self) -> Result<(), (&'static str, String)> {
+        use crate::scene::bounds as b;
+        let ranged = [
+            ("proxy_size", self.proxy_size, b::TECHNIQUE_SIZE_M),
+            ("particle_radius", self.particle_radius, b::TECHNIQUE_SIZE_M),
+            ("proxy_mass", self.proxy_mass, b::TECHNIQUE_MASS_KG),
+            ("particle_mass", self.particle_mass, b::TECHNIQUE_MASS_KG),
+            ("proxy_weight", self.proxy_weight, b::TECHNIQUE_WEIGHT_N),
+            ("particle_weight", self.particle_weight, b::TECHNIQUE_WEIGHT_N),
+            ("max_contact_speed", self.max_contact_speed, b::MAX_SPEED_M_S),
+            ("joint_break_force", self.joint_break_force, (b::TECHNIQUE_MIN_FORCE_N, b::TECHNIQUE_GAIN)),
+            ("direct_gain", self.direct_gain, (0.0, b::TECHNIQUE_GAIN)),
+            ("joint_stiffness", self.joint_stiffness, (0.0, b::TECHNIQUE_GAIN)),
+            ("joint_damping", self.joint_damping, (0.0, b::TECHNIQUE_GAIN)),
+            ("friction", self.friction, (0.0, b::TECHNIQUE_GAIN)),
+            ("particle_edge_threshold", self.particle_edge_threshold, (0.0, b::TECHNIQUE_GAIN)),
         ];
-        for (name, v) in pos {
-            if !(v.is_finite() && v > 0.0) {
-                return Err(format!("`{name}` must be a positive number, got {v}"));
+        let human = crate::scene::fields::human;
+        for (name, v, (lo, hi)) in ranged {
+            if !v.is_finite() {
+                return Err((name, format!("must be a finite number, got {v}")));
+            }
+            if !(lo..=hi).contains(&v) {
+                return Err((
+                    name,
+                    format!(
+                        "{} is out of range ({}..={})",
+                        human(f64::from(v)),
+                        human(f64::from(lo)),
+                        human(f64::from(hi))
+                    ),
+                ));
             }
         }
-        let nonneg = [
-            ("direct_gain", self.direct_gain),
-            ("joint_stiffness", self.joint_stiffness),
-            ("joint_damping", self.joint_damping),
-            ("friction", self.friction),
-            ("particle_edge_threshold", self.particle_edge_threshold),
-        ];
-        for (name, v) in nonneg {
-            if !(v.is_finite() && v >= 0.0) {
-                return Err(format!("`{name}` must be a finite number >= 0, got {v}"));
-            }
+        if !(1..=b::PARTICLE_STRIDE).contains(&self.particle_stride) {
+            return Err((
+                "particle_stride",
+                format!("{} is out of range (1..={})", self.particle_stride, b::PARTICLE_STRIDE),
+            ));
         }
-        if self.particle_stride == 0 {
-            return Err("`particle_stride` must be at least 1".into());
+        if self.particle_cap > b::PARTICLE_CAP {
+            return Err(("particle_cap", format!("{} is out of range (0..={})", self.particle_cap, b::PARTICLE_CAP)));
         }
         Ok(())
     }
@@ -200,5 +252,46 @@ mod tests {
         let t: toml::Table = toml::from_str("proxy_mass = -1.0").expect("toml");
         let e = TechniqueConfig::from_scene_table(&t, "x.toml").expect_err("negative");
         assert!(e.to_string().contains("proxy_mass"), "{e}");
+    }
+
+    #[test]
+    fn technique_errors_name_the_file_line_and_field() {
+        let scene = |technique: &str| {
+            let text = format!(
+                "name = \"t\"\neffects = [\"gravity\"]\n[table]\nsize = [1.0, 0.75]\n[technique]\nproxy_mass = 0.5\n{technique}\n"
+            );
+            crate::scene::parse(&text, "t.toml").expect("the scene itself is valid")
+        };
+        let err = |technique: &str| TechniqueConfig::from_scene(&scene(technique)).expect_err(technique).to_string();
+        let e = err("pressure = \"loud\"");
+        assert!(e.starts_with("t.toml:7: field `technique.pressure`: unknown variant `loud`"), "{e}");
+        assert_eq!(
+            err("particle_radius = 1e30"),
+            "t.toml:7: field `technique.particle_radius`: 1e30 is out of range (0.0005..=0.1)"
+        );
+        let e = err("proxy_mas = 1.0");
+        assert!(e.starts_with("t.toml:7: field `technique.proxy_mas`: unknown field `proxy_mas`"), "{e}");
+        assert_eq!(TechniqueConfig::from_scene(&scene("")).expect("valid").proxy_mass, 0.5);
+    }
+
+    #[test]
+    fn a_parameter_past_its_bound_names_the_bound() {
+        let err = |text: &str| {
+            let t: toml::Table = toml::from_str(text).expect("toml");
+            TechniqueConfig::from_scene_table(&t, "x.toml").expect_err(text).to_string()
+        };
+        assert_eq!(
+            err("particle_radius = 1e30"),
+            "x.toml: field `technique.particle_radius`: 1e30 is out of range (0.0005..=0.1)"
+        );
+        assert_eq!(
+            err("proxy_mass = 1e-30"),
+            "x.toml: field `technique.proxy_mass`: 1e-30 is out of range (0.001..=1000)"
+        );
+        assert_eq!(
+            err("particle_cap = 1000000000"),
+            "x.toml: field `technique.particle_cap`: 1000000000 is out of range (0..=100000)"
+        );
+        assert_eq!(err("direct_gain = nan"), "x.toml: field `technique.direct_gain`: must be a finite number, got NaN");
     }
 }

@@ -1,0 +1,115 @@
+//! The files a user names: read with a size cap (so `/dev/urandom` or a
+//! runaway file is refused instead of read without end), and written
+//! atomically (a temporary file in the same folder, fsync, rename), so a
+//! full disk or a kill leaves the old file or the new one, never half of
+//! one, and no temporary file behind. Like `error`, this depends on nothing
+//! in the crate; every layer may use it.
+
+use std::io::{Read, Write};
+use std::path::Path;
+
+/// Bytes read from any input file (scene, gesture, contact JSON, run.toml;
+/// trials.csv excepted): the largest recording (a 25 s sorting gesture) is
+/// about 200 kB. A larger file, or `/dev/urandom`, is refused after this
+/// many bytes instead of read without end.
+pub const MAX_INPUT_BYTES: u64 = 64 * 1024 * 1024;
+
+/// The file's text, at most [`MAX_INPUT_BYTES`] of it. A
+/// longer file, or one that is not UTF-8, is an `InvalidData` error (bad
+/// input, exit 2) that says which.
+pub fn read_capped(path: &Path) -> std::io::Result<String> {
+    read_capped_at(path, MAX_INPUT_BYTES)
+}
+
+fn read_capped_at(path: &Path, cap: u64) -> std::io::Result<String> {
+    let file = std::fs::File::open(path)?;
+    let mut bytes = Vec::new();
+    file.take(cap + 1).read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > cap {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            format!("larger than the {} MiB an input file may have", cap / (1024 * 1024)),
+        ));
+    }
+    String::from_utf8(bytes).map_err(|_| std::io::Error::new(std::io::ErrorKind::InvalidData, "not UTF-8 text"))
+}
+
+/// [`read_capped`] of a path given as text (`-` is not special here).
+pub fn read_capped_str(path: &str) -> std::io::Result<String> {
+    read_capped(Path::new(path))
+}
+
+/// Replaces `path` with `bytes` atomically: a temporary file beside it
+/// (same folder, so the rename cannot cross file systems), fsync, rename.
+/// On any failure the temporary file is removed and the old `path`, if
+/// any, is untouched. The error is the OS error; callers name the path.
+/// A missing parent folder is created first.
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    std::fs::create_dir_all(dir)?;
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+    let prefix = format!(".{name}.");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".tmp");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt as _;
+        // The mode a plain `File::create` gives under the usual umask,
+        // not tempfile's private 0600.
+        builder.permissions(std::fs::Permissions::from_mode(0o644));
+    }
+    // Dropped on any early return: the temporary file is deleted.
+    let mut tmp = builder.tempfile_in(dir)?;
+    tmp.write_all(bytes)?;
+    tmp.as_file().sync_all()?;
+    tmp.persist(path).map_err(|e| e.error)?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_endless_file_is_refused_after_the_cap() {
+        let e = read_capped_at(Path::new("/dev/zero"), 8 * 1024 * 1024).expect_err("endless");
+        assert_eq!(e.kind(), std::io::ErrorKind::InvalidData);
+        assert_eq!(e.to_string(), "larger than the 8 MiB an input file may have");
+    }
+
+    #[test]
+    fn binary_is_not_text() {
+        let p = std::env::temp_dir().join(format!("surfacelab-read-{}.bin", std::process::id()));
+        std::fs::write(&p, [0xff_u8, 0xfe, 0x00]).expect("write");
+        let e = read_capped(&p).expect_err("binary");
+        std::fs::remove_file(&p).ok();
+        assert_eq!((e.kind(), e.to_string().as_str()), (std::io::ErrorKind::InvalidData, "not UTF-8 text"));
+    }
+
+    #[test]
+    fn an_atomic_write_replaces_the_file_and_a_failed_one_leaves_nothing() {
+        let dir = std::env::temp_dir().join(format!("surfacelab-files-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let path = dir.join("sub").join("a.json");
+        write_atomic(&path, b"one").expect("write");
+        write_atomic(&path, b"two").expect("rewrite");
+        assert_eq!(std::fs::read(&path).expect("read"), b"two");
+        // A folder where the file should be: the rename fails, the folder
+        // stays, and no temporary file is left beside it.
+        let blocked = dir.join("sub").join("blocked");
+        std::fs::create_dir_all(blocked.join("x")).expect("dir");
+        let e = write_atomic(&blocked, b"three").expect_err("a folder is in the way");
+        assert!(blocked.join("x").is_dir(), "{e}");
+        let names: Vec<String> = std::fs::read_dir(dir.join("sub"))
+            .expect("list")
+            .map(|e| e.expect("entry").file_name().to_string_lossy().into_owned())
+            .collect();
+        let mut names = names;
+        names.sort();
+        assert_eq!(names, ["a.json", "blocked"]);
+        std::fs::remove_dir_all(&dir).ok();
+    }
+}
