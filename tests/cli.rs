@@ -391,3 +391,18 @@ fn bad_flag_values_exit_2_and_name_the_flag() {
         assert!(text(&o).contains(flag), "{}", text(&o));
     }
 }
+
+/// Every flag of `run --help` says what it does; `--feedback` once had no line.
+#[test]
+fn run_help_describes_feedback() {
+    let out = bin().args(["run", "--help"]).output().expect("runs");
+    let help = text(&out);
+    assert!(out.status.success(), "{help}");
+    let lines: Vec<&str> = help.lines().collect();
+    let at = lines.iter().position(|l| l.trim_start().starts_with("--feedback")).expect("a --feedback line");
+    // The description follows on the same line, or on the next when clap wraps.
+    let same = lines[at].trim_start()["--feedback".len()..].trim();
+    let next = lines.get(at + 1).map_or("", |l| l.trim());
+    let description = if same.is_empty() && !next.starts_with('-') { next } else { same };
+    assert!(description.len() > 10, "no description for --feedback:\n{help}");
+}
