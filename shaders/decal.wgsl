@@ -25,16 +25,40 @@ struct VsOut {
 // painted on (0.4 mm: invisible at table scale, enough for a 32-bit depth).
 const LIFT: f32 = 0.0004;
 
+// Vertices per decal: four quads. A filled shape or a disc uses the first
+// (the others collapse to nothing); a rectangle's outline is four strips
+// along its edges, so the fragments inside it, which the outline's
+// coverage discards anyway, are never shaded. On a software rasteriser a
+// sorting zone's outline over the whole zone cost as much as its fill.
+const VERTICES: u32 = 24u;
+
 @vertex
 fn vs_main(@builtin(vertex_index) index: u32, d: DecalIn) -> VsOut {
     let corners = array<vec2<f32>, 6>(
-        vec2<f32>(-1.0, -1.0), vec2<f32>(1.0, -1.0), vec2<f32>(1.0, 1.0),
-        vec2<f32>(-1.0, -1.0), vec2<f32>(1.0, 1.0), vec2<f32>(-1.0, 1.0),
+        vec2<f32>(0.0, 0.0), vec2<f32>(1.0, 0.0), vec2<f32>(1.0, 1.0),
+        vec2<f32>(0.0, 0.0), vec2<f32>(1.0, 1.0), vec2<f32>(0.0, 1.0),
     );
     let half = select(d.shape.xx, d.shape.xy, d.shape.w > 0.5);
     // Room for half the stroke outside the edge and for antialiasing.
-    let extent = half + vec2<f32>(0.5 * d.shape.z + 0.003);
-    let local = corners[index] * extent;
+    let margin = 0.5 * d.shape.z + 0.003;
+    let outer = half + vec2<f32>(margin);
+    let inner = half - vec2<f32>(margin);
+    let strips = d.shape.w > 0.5 && d.shape.z > 0.0 && inner.x > 0.0 && inner.y > 0.0;
+    let quad = index / 6u;
+    // The quad's corners [lo, hi] in the decal's frame.
+    var lo = -outer;
+    var hi = outer;
+    if strips {
+        switch quad {
+            case 0u: { hi.y = -inner.y; }
+            case 1u: { lo.y = inner.y; }
+            case 2u: { lo.y = -inner.y; hi.y = inner.y; hi.x = -inner.x; }
+            default: { lo.y = -inner.y; hi.y = inner.y; lo.x = inner.x; }
+        }
+    } else if quad > 0u {
+        hi = lo;
+    }
+    let local = mix(lo, hi, corners[index % 6u]);
     let c = cos(d.place.w);
     let s = sin(d.place.w);
     let xy = d.place.xy + vec2<f32>(c * local.x - s * local.y, s * local.x + c * local.y);

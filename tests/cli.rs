@@ -527,3 +527,18 @@ fn a_report_that_cannot_be_written_exits_1_and_leaves_the_folder_clean() {
     assert_eq!(names, ["blocked.json", "r.json"], "no temporary file left");
     assert_eq!(std::fs::read(&report).expect("report"), first, "the earlier report is untouched");
 }
+
+/// Every flag of `run --help` says what it does; `--feedback` once had no line.
+#[test]
+fn run_help_describes_feedback() {
+    let out = bin().args(["run", "--help"]).output().expect("runs");
+    let help = text(&out);
+    assert!(out.status.success(), "{help}");
+    let lines: Vec<&str> = help.lines().collect();
+    let at = lines.iter().position(|l| l.trim_start().starts_with("--feedback")).expect("a --feedback line");
+    // The description follows on the same line, or on the next when clap wraps.
+    let same = lines[at].trim_start()["--feedback".len()..].trim();
+    let next = lines.get(at + 1).map_or("", |l| l.trim());
+    let description = if same.is_empty() && !next.starts_with('-') { next } else { same };
+    assert!(description.len() > 10, "no description for --feedback:\n{help}");
+}

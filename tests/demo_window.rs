@@ -268,3 +268,24 @@ dwell_s = 0.5
         assert_eq!(gesture.tracks().len(), 1, "the scripted flat hand");
     }
 }
+
+/// Ctrl-C (SIGINT) ends the demo as its close button does: exit status 0
+/// and the summary line (the default action would kill it with neither).
+#[test]
+fn ctrl_c_ends_the_demo_with_its_summary() {
+    let dir = work_dir("demo_ctrl_c");
+    std::fs::write(dir.join("sweep.toml"), SWEEP).expect("gesture file");
+    let script = format!(
+        "'{BIN}' demo --task sorting --technique particle --script sweep.toml \
+            --screenshot-after 1 up.png --quit-after 120 --out out &
+        pid=$!
+        i=0; while [ ! -s up.png ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i+1)); done
+        kill -INT $pid
+        wait $pid"
+    );
+    let out = under_xvfb(&dir, &script);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let report = format!("exit: {:?}\nstderr: {stderr}", out.status);
+    assert!(out.status.success(), "{report}");
+    assert!(stderr.contains("frames, mean frame"), "no summary line\n{report}");
+}

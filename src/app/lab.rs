@@ -112,9 +112,14 @@ impl Lab {
     }
 
     /// A fresh session of the same scene (time 0, objects back, a running
-    /// script from its start); tuned parameters are kept.
+    /// script from its start); tuned parameters are kept. The hint shows
+    /// again and the time the physics fell behind counts from zero, as for
+    /// a task just opened.
     pub fn reset(&mut self) -> anyhow::Result<()> {
-        self.set_technique(self.technique())
+        self.set_technique(self.technique())?;
+        self.clock = Clock::new(self.clock.dt(), MAX_STEPS_PER_FRAME);
+        self.hint_until = self.wall + HINT_SECONDS;
+        Ok(())
     }
 
     /// Technique parameters back to the scene's defaults; the scene restarts.
@@ -455,6 +460,23 @@ mod tests {
             assert!(fast > 0.1, "{technique}: the drag moves the box at 60 fps ({fast} m)");
             assert!((slow - fast).abs() <= 0.1 * fast, "{technique}: {slow} m at 8 fps against {fast} m at 60 fps");
         }
+    }
+
+    /// Reset is a fresh start: the hint is back for its ten seconds and the
+    /// lag of a stall before it is forgotten.
+    #[test]
+    fn reset_shows_the_hint_again_and_forgets_the_lag() {
+        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle)).expect("opens");
+        assert!(lab.hint().is_some(), "a new task shows its hint");
+        lab.wall = 20.0;
+        lab.advance(2.0); // a two-second stall: most of it dropped
+        assert!(lab.hint().is_none(), "gone after {HINT_SECONDS} s");
+        assert!(lab.behind_s() > 1.5, "{} s behind", lab.behind_s());
+        lab.reset().expect("resets");
+        assert_eq!(lab.hint(), Some(lab.scene().hint.as_str()));
+        assert_eq!(lab.behind_s(), 0.0);
+        lab.wall = 20.0 + HINT_SECONDS + 0.1;
+        assert!(lab.hint().is_none(), "and gone again {HINT_SECONDS} s later");
     }
 
     #[test]

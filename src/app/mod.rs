@@ -21,6 +21,7 @@ pub mod participant_mode;
 pub mod record;
 pub mod scene_view;
 pub mod stats;
+pub mod ui_cache;
 pub mod view;
 pub mod window;
 

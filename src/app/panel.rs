@@ -41,12 +41,30 @@ pub enum Action {
     StopRecording,
 }
 
+/// Seconds between refreshes of the numbers in the panel (timings, counts,
+/// task time). Numbers that changed every frame would make the whole panel
+/// redraw every frame, which on a software rasteriser cost as much as the
+/// 3D table ([`super::ui_cache`]); twice a second is as fast as they are read.
+pub const NUMBERS_REFRESH_S: f64 = 0.5;
+
+/// One `name: value` line of the statistics.
+type Row = (String, String);
+
 /// Panel state that is not the lab's.
 #[derive(Debug, Clone, Default)]
 pub struct PanelState {
     tasks: Vec<String>,
     path: String,
     record_path: String,
+    /// The numbers as last refreshed, and the wall time they were taken.
+    numbers: Option<(f64, Numbers)>,
+}
+
+/// The panel's changing numbers, refreshed every [`NUMBERS_REFRESH_S`].
+#[derive(Debug, Clone, Default)]
+struct Numbers {
+    tuio: Vec<Row>,
+    stats: Vec<Row>,
 }
 
 impl PanelState {
@@ -95,6 +113,15 @@ pub fn show(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState) -> Vec<Act
         }
         ui.separator();
         task_section(ui, lab, state, &mut actions);
+        let numbers = match state.numbers.take() {
+            Some((at, n)) if (0.0..NUMBERS_REFRESH_S).contains(&(lab.wall - at)) => (at, n),
+            _ => (lab.wall, Numbers { tuio: tuio_rows(lab), stats: stat_rows(lab) }),
+        };
+        // TUIO first: someone testing a tracker reads its counters without scrolling.
+        if !numbers.1.tuio.is_empty() {
+            ui.separator();
+            grid(ui, "tuio", &numbers.1.tuio);
+        }
         ui.separator();
         view_section(ui, lab);
         ui.separator();
@@ -105,11 +132,29 @@ pub fn show(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState) -> Vec<Act
             ui.label(RichText::new(status).color(Color32::from_rgb(140, 200, 255)));
         }
         ui.separator();
-        statistics(ui, lab);
+        grid(ui, "stats", &numbers.1.stats);
         ui.separator();
         help(ui);
+        state.numbers = Some(numbers);
     });
     actions
+}
+
+/// The panel at the window's left edge, as the demo shows it.
+pub fn show_side(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState) -> Vec<Action> {
+    let mut actions = Vec::new();
+    egui::Panel::left("panel").exact_size(WIDTH).resizable(false).show(ui, |ui| actions = show(ui, lab, state));
+    actions
+}
+
+fn grid(ui: &mut egui::Ui, id: &str, rows: &[Row]) {
+    egui::Grid::new(id).num_columns(2).striped(true).show(ui, |ui| {
+        for (name, value) in rows {
+            ui.label(name);
+            ui.monospace(value);
+            ui.end_row();
+        }
+    });
 }
 
 fn task_section(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, actions: &mut Vec<Action>) {
@@ -266,54 +311,57 @@ fn controls(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState, actions: &
     });
 }
 
-fn statistics(ui: &mut egui::Ui, lab: &Lab) {
+fn stat_rows(lab: &Lab) -> Vec<Row> {
     let s = &lab.stats;
     let counts = lab.session.counts();
-    egui::Grid::new("stats").num_columns(2).striped(true).show(ui, |ui| {
-        let mut row = |name: &str, value: String| {
-            ui.label(name);
-            ui.monospace(value);
-            ui.end_row();
-        };
-        row("frame", format!("{:5.1} ms  {:4.0} fps", s.frame_ms.mean(), s.fps()));
-        row("render", format!("{:5.1} ms", s.render_ms.mean()));
-        row("physics steps", format!("{:4.2} / frame", s.steps.mean()));
-        row("  rasterize", format!("{:5.2} ms", s.rasterize_ms.mean()));
-        row("  vision", format!("{:5.2} ms", s.vision_ms.mean()));
-        row("  technique", format!("{:5.2} ms", s.technique_ms.mean()));
-        row("  step", format!("{:5.2} ms", s.step_ms.mean()));
-        row("contacts", counts.contacts.to_string());
-        row(
-            match lab.technique() {
-                TechniqueKind::Particle | TechniqueKind::Hybrid => "particles",
-                TechniqueKind::Proxy => "proxies",
-                TechniqueKind::Joint => "anchors",
-                TechniqueKind::Direct => "bodies",
-            },
-            counts.bodies.to_string(),
-        );
-        if counts.joints > 0 || lab.technique() == TechniqueKind::Joint {
-            row("joints", counts.joints.to_string());
-        }
-        let limit = lab.scene().time_limit_s;
-        row("task time", format!("{:5.1} s of {limit:.0}", lab.session.time()));
-        let progress = progress_line(lab);
-        row("progress", if progress.is_empty() { "-".into() } else { progress });
-        if lab.behind_s() > 0.05 {
-            row("behind real time", format!("{:.1} s", lab.behind_s()));
-        }
-        if let Some(tuio) = &lab.input.tuio {
-            let t = tuio.stats();
-            let (cursors, blobs) = tuio.live_counts();
-            row("TUIO", format!("{}", tuio.local_addr()));
-            row("  live", format!("{cursors} cursors, {blobs} blobs"));
-            row(
-                "  packets",
-                format!("{} ({} malformed, {} other profiles)", t.packets, t.malformed, t.unknown_profile),
-            );
-            row("  frames", format!("{} late, {} restarts", t.late_frames, t.restarts));
-        }
-    });
+    let mut rows = Vec::new();
+    let mut row = |name: &str, value: String| rows.push((name.to_owned(), value));
+    row("frame", format!("{:5.1} ms  {:4.0} fps", s.frame_ms.mean(), s.fps()));
+    row("render", format!("{:5.1} ms", s.render_ms.mean()));
+    row("physics steps", format!("{:4.2} / frame", s.steps.mean()));
+    row("  rasterize", format!("{:5.2} ms", s.rasterize_ms.mean()));
+    row("  vision", format!("{:5.2} ms", s.vision_ms.mean()));
+    row("  technique", format!("{:5.2} ms", s.technique_ms.mean()));
+    row("  step", format!("{:5.2} ms", s.step_ms.mean()));
+    row("contacts", counts.contacts.to_string());
+    row(
+        match lab.technique() {
+            TechniqueKind::Particle | TechniqueKind::Hybrid => "particles",
+            TechniqueKind::Proxy => "proxies",
+            TechniqueKind::Joint => "anchors",
+            TechniqueKind::Direct => "bodies",
+        },
+        counts.bodies.to_string(),
+    );
+    if counts.joints > 0 || lab.technique() == TechniqueKind::Joint {
+        row("joints", counts.joints.to_string());
+    }
+    let limit = lab.scene().time_limit_s;
+    row("task time", format!("{:5.1} s of {limit:.0}", lab.session.time()));
+    let progress = progress_line(lab);
+    row("progress", if progress.is_empty() { "-".into() } else { progress });
+    if lab.behind_s() > 0.05 {
+        row("behind real time", format!("{:.1} s", lab.behind_s()));
+    }
+    rows
+}
+
+/// The TUIO listener's address and counters (none without `--tuio`).
+fn tuio_rows(lab: &Lab) -> Vec<Row> {
+    let Some(tuio) = &lab.input.tuio else {
+        return Vec::new();
+    };
+    let t = tuio.stats();
+    let (cursors, blobs) = tuio.live_counts();
+    vec![
+        ("TUIO".into(), format!("{}", tuio.local_addr())),
+        ("  live".into(), format!("{cursors} cursors, {blobs} blobs")),
+        (
+            "  packets".into(),
+            format!("{} ({} malformed, {} other profiles)", t.packets, t.malformed, t.unknown_profile),
+        ),
+        ("  frames".into(), format!("{} late, {} restarts", t.late_frames, t.restarts)),
+    ]
 }
 
 fn help(ui: &mut egui::Ui) {
@@ -330,4 +378,68 @@ fn help(ui: &mut egui::Ui) {
             ui.label(RichText::new(line).small());
         }
     });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::app::DemoOptions;
+
+    /// The panel's texts that a window of 1280x800 points shows, each with
+    /// the bottom of its line: `(text, bottom)`, laid out as the demo does.
+    fn visible_texts(ctx: &egui::Context, lab: &mut Lab, state: &mut PanelState) -> Vec<(String, f32)> {
+        let screen = egui::Rect::from_min_size(egui::Pos2::ZERO, egui::vec2(1280.0, 800.0));
+        let input = || egui::RawInput { screen_rect: Some(screen), ..Default::default() };
+        // The first pass only measures; the second is what a frame shows.
+        drop(ctx.run_ui(input(), |ui| drop(show_side(ui, lab, state))));
+        let output = ctx.run_ui(input(), |ui| drop(show_side(ui, lab, state)));
+        let mut texts = Vec::new();
+        let mut stack: Vec<(egui::Shape, egui::Rect)> =
+            output.shapes.into_iter().map(|c| (c.shape, c.clip_rect.intersect(screen))).collect();
+        while let Some((shape, clip)) = stack.pop() {
+            match shape {
+                egui::Shape::Vec(v) => stack.extend(v.into_iter().map(|s| (s, clip))),
+                egui::Shape::Text(t) => {
+                    let bottom = t.pos.y + t.galley.size().y;
+                    if bottom <= clip.max.y && t.pos.y >= clip.min.y {
+                        texts.push((t.galley.text().to_owned(), bottom));
+                    }
+                }
+                _ => {}
+            }
+        }
+        texts
+    }
+
+    /// The TUIO counters are on screen at 1280x800 without scrolling.
+    #[test]
+    fn tuio_counters_show_without_scrolling() {
+        let mut options = DemoOptions::new("sorting", TechniqueKind::Particle);
+        options.tuio = Some("127.0.0.1:0".parse().expect("an address"));
+        let mut lab = Lab::new(&options).expect("opens with a TUIO listener");
+        let texts = visible_texts(&egui::Context::default(), &mut lab, &mut PanelState::new());
+        for wanted in ["0 cursors, 0 blobs", "0 (0 malformed, 0 other profiles)", "0 late, 0 restarts"] {
+            assert!(texts.iter().any(|(t, _)| t == wanted), "`{wanted}` not on screen; visible: {texts:?}");
+        }
+    }
+
+    /// Numbers that change every frame change on screen only every
+    /// [`NUMBERS_REFRESH_S`], so the panel's pixels stay the same between.
+    #[test]
+    fn numbers_refresh_twice_a_second() {
+        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle)).expect("opens");
+        let (ctx, mut state) = (egui::Context::default(), PanelState::new());
+        let frame_line = |texts: &[(String, f32)]| {
+            texts.iter().find(|(t, _)| t.ends_with("fps")).map(|(t, _)| t.clone()).expect("the frame line")
+        };
+        lab.stats.push_frame(20.0, 10.0, 1);
+        let first = frame_line(&visible_texts(&ctx, &mut lab, &mut state));
+        assert!(first.contains("20.0 ms"), "{first}");
+        lab.wall += 0.2;
+        lab.stats.push_frame(80.0, 70.0, 5);
+        assert_eq!(frame_line(&visible_texts(&ctx, &mut lab, &mut state)), first);
+        lab.wall += NUMBERS_REFRESH_S;
+        let later = frame_line(&visible_texts(&ctx, &mut lab, &mut state));
+        assert!(later.contains("50.0 ms"), "the mean of 20 and 80 ms: {later}");
+    }
 }

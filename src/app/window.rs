@@ -7,6 +7,7 @@
 use super::capture::{Readback, readable};
 use super::lab::Lab;
 use super::panel::{self, Action, HAND_MODES, PanelState};
+use super::ui_cache;
 use super::view::{self, ViewFrame};
 use super::{DemoOptions, Screenshot};
 use crate::input::{Button, Modifiers, MouseEvent, SourceEvent};
@@ -16,6 +17,7 @@ use crate::render::{
 use anyhow::{Context, anyhow, bail};
 use glam::Vec2;
 use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 use winit::application::ApplicationHandler;
 use winit::dpi::{LogicalSize, PhysicalPosition};
@@ -35,7 +37,18 @@ pub fn run(options: DemoOptions) -> anyhow::Result<()> {
     let event_loop = EventLoop::new().map_err(|e| {
         anyhow!("cannot open a window on display {display:?}: {e}; unset DISPLAY and WAYLAND_DISPLAY to run the headless job instead")
     })?;
-    let mut app = App::new(options, lab);
+    // Ctrl-C (SIGINT) closes the window like its close button, so the
+    // recording is saved and the summary printed.
+    let interrupted = Arc::new(AtomicBool::new(false));
+    let proxy = event_loop.create_proxy();
+    let flag = Arc::clone(&interrupted);
+    if let Err(e) = ctrlc::set_handler(move || {
+        flag.store(true, Ordering::SeqCst);
+        let _ = proxy.send_event(());
+    }) {
+        tracing::warn!("Ctrl-C will end the demo without its summary: {e}");
+    }
+    let mut app = App::new(options, lab, interrupted);
     event_loop.run_app(&mut app).context("the window's event loop failed")?;
     if app.lab.participant.is_some() {
         // A trial cut short has no row; its input is not kept either.
@@ -63,6 +76,8 @@ struct App {
     /// A left drag started on the view: the mouse model gets every event until it ends.
     dragging: bool,
     screenshot: Option<Screenshot>,
+    /// Set by the Ctrl-C handler.
+    interrupted: Arc<AtomicBool>,
 }
 
 /// Everything that needs the window.
@@ -80,6 +95,16 @@ struct Gfx {
     egui: egui::Context,
     egui_state: egui_winit::State,
     egui_renderer: egui_wgpu::Renderer,
+    /// Draws the cached panel ([`ui_cache`]); its own renderer because a
+    /// renderer holds the buffers of one list of primitives per submission.
+    panel_renderer: egui_wgpu::Renderer,
+    panel: Option<PanelTexture>,
+}
+
+/// The panel as last drawn, in a texture of the window's size and format.
+struct PanelTexture {
+    texture: wgpu::Texture,
+    drawn: Vec<egui::ClippedPrimitive>,
 }
 
 /// The texture the table is rendered into. Its format is the window's
@@ -138,7 +163,7 @@ fn view_texture(
 }
 
 impl App {
-    fn new(options: DemoOptions, lab: Lab) -> Self {
+    fn new(options: DemoOptions, lab: Lab, interrupted: Arc<AtomicBool>) -> Self {
         let now = Instant::now();
         let screenshot = options.screenshot_after.clone();
         Self {
@@ -154,6 +179,7 @@ impl App {
             cursor: None,
             dragging: false,
             screenshot,
+            interrupted,
         }
     }
 
@@ -362,10 +388,7 @@ impl App {
         let mut view_rect = egui::Rect::NOTHING;
         let full = gfx.egui.run_ui(raw, |ui| {
             if !participant {
-                egui::Panel::left("panel")
-                    .exact_size(panel::WIDTH)
-                    .resizable(false)
-                    .show(ui, |ui| actions = panel::show(ui, lab, panel_state));
+                actions = panel::show_side(ui, lab, panel_state);
             }
             let rect = ui.available_rect_before_wrap();
             view_rect = view::show(ui, rect, lab, frame_info);
@@ -400,15 +423,38 @@ impl App {
         for (id, deltas) in &full.textures_delta.set {
             for delta in deltas {
                 gfx.egui_renderer.update_texture(&device, &queue, *id, delta);
+                gfx.panel_renderer.update_texture(&device, &queue, *id, delta);
             }
         }
         let screen = egui_wgpu::ScreenDescriptor {
             size_in_pixels: [gfx.config.width, gfx.config.height],
             pixels_per_point: ppp,
         };
-        let mut commands = gfx.egui_renderer.update_buffers(&device, &queue, &mut encoder, &primitives, &screen);
+        // The panel is redrawn only when it changed; the rest is drawn live.
+        let split = if gfx.direct { ui_cache::cacheable_prefix(&primitives, view_rect) } else { 0 };
+        let (cached, live) = primitives.split_at(split);
+        let mut commands = Vec::new();
+        if gfx.direct {
+            let size = [gfx.config.width, gfx.config.height];
+            let stale = !full.textures_delta.set.is_empty()
+                || gfx.panel.as_ref().is_none_or(|p| {
+                    [p.texture.width(), p.texture.height()] != size || !ui_cache::same_primitives(&p.drawn, cached)
+                });
+            if stale {
+                let texture = match gfx.panel.take() {
+                    Some(p) if [p.texture.width(), p.texture.height()] == size => p.texture,
+                    _ => twin_texture(&device, &gfx.config),
+                };
+                commands.extend(gfx.panel_renderer.update_buffers(&device, &queue, &mut encoder, cached, &screen));
+                let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
+                let clear = wgpu::LoadOp::Clear(wgpu::Color::BLACK);
+                gfx.panel_renderer.render(&mut pass(&mut encoder, &view, clear).forget_lifetime(), cached, &screen);
+                gfx.panel = Some(PanelTexture { texture, drawn: cached.to_vec() });
+            }
+        }
+        commands.extend(gfx.egui_renderer.update_buffers(&device, &queue, &mut encoder, live, &screen));
         let at = [min.x as u32, min.y as u32];
-        compose(gfx, &mut encoder, &frame.texture, at, &primitives, &screen);
+        compose(gfx, &mut encoder, &frame.texture, at, live, &screen);
 
         // `--screenshot-after`: this very frame, read back.
         let capture = match &self.screenshot {
@@ -417,7 +463,7 @@ impl App {
                     Readback::record(&device, &mut encoder, &frame.texture)
                 } else {
                     let twin = twin_texture(&device, &gfx.config);
-                    compose(gfx, &mut encoder, &twin, at, &primitives, &screen);
+                    compose(gfx, &mut encoder, &twin, at, live, &screen);
                     Readback::record(&device, &mut encoder, &twin)
                 })
             }
@@ -437,6 +483,7 @@ impl App {
         }
         for id in &full.textures_delta.free {
             gfx.egui_renderer.free_texture(id);
+            gfx.panel_renderer.free_texture(id);
         }
         self.lab.stats.push_frame(elapsed * 1000.0, render_start.elapsed().as_secs_f64() * 1000.0, steps);
 
@@ -517,12 +564,10 @@ impl App {
         let max_side = gpu.device.limits().max_texture_dimension_2d as usize;
         let egui_state =
             egui_winit::State::new(egui.clone(), egui::ViewportId::ROOT, &window, Some(scale), None, Some(max_side));
-        let mut egui_renderer = egui_wgpu::Renderer::new(
-            &gpu.device,
-            format,
-            // No dithering: exact colours, so screenshots can be checked pixel by pixel.
-            egui_wgpu::RendererOptions { dithering: false, ..egui_wgpu::RendererOptions::default() },
-        );
+        // No dithering: exact colours, so screenshots can be checked pixel by pixel.
+        let egui_options = egui_wgpu::RendererOptions { dithering: false, ..egui_wgpu::RendererOptions::default() };
+        let mut egui_renderer = egui_wgpu::Renderer::new(&gpu.device, format, egui_options);
+        let panel_renderer = egui_wgpu::Renderer::new(&gpu.device, format, egui_options);
         let target =
             ViewTarget::new(&gpu.device, &mut egui_renderer, view_format, [size.width.max(1), size.height.max(1)]);
         if let Some(hz) =
@@ -532,7 +577,21 @@ impl App {
         }
         tracing::info!("demo window on {summary}, surface {format:?} {usage:?}, {:?} per frame", self.period);
         eprintln!("surfacelab demo: {} with {} on {}", self.lab.task, self.lab.technique(), summary);
-        Ok(Gfx { window, title, surface, config, gpu, renderer, target, direct, egui, egui_state, egui_renderer })
+        Ok(Gfx {
+            window,
+            title,
+            surface,
+            config,
+            gpu,
+            renderer,
+            target,
+            direct,
+            egui,
+            egui_state,
+            egui_renderer,
+            panel_renderer,
+            panel: None,
+        })
     }
 }
 
@@ -540,8 +599,9 @@ fn window_title(lab: &Lab) -> String {
     format!("surfacelab: {} ({})", lab.task, lab.technique())
 }
 
-/// Draws a frame into `target` (the window's texture or its twin): the
-/// view copied to its place `at` when copies are possible, then egui.
+/// Draws a frame into `target` (the window's texture or its twin): when
+/// copies are possible the cached panel and the view copied to their
+/// places (the view at `at`), then the live part of egui (`primitives`).
 fn compose(
     gfx: &Gfx,
     encoder: &mut wgpu::CommandEncoder,
@@ -558,6 +618,20 @@ fn compose(
         let [w, h] = gfx.target.size();
         let width = w.min(target.width().saturating_sub(at[0]));
         let height = h.min(target.height().saturating_sub(at[1]));
+        if let Some(panel) = &gfx.panel
+            && panel.texture.size() == target.size()
+        {
+            for [x, y, width, height] in
+                ui_cache::outside([target.width(), target.height()], [at[0], at[1], width, height])
+            {
+                let origin = wgpu::Origin3d { x, y, z: 0 };
+                encoder.copy_texture_to_texture(
+                    wgpu::TexelCopyTextureInfo { origin, ..panel.texture.as_image_copy() },
+                    wgpu::TexelCopyTextureInfo { origin, ..target.as_image_copy() },
+                    wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
+                );
+            }
+        }
         if width > 0 && height > 0 {
             encoder.copy_texture_to_texture(
                 gfx.target.texture.as_image_copy(),
@@ -656,7 +730,17 @@ impl ApplicationHandler for App {
         }
     }
 
+    fn user_event(&mut self, event_loop: &ActiveEventLoop, (): ()) {
+        if self.interrupted.load(Ordering::SeqCst) {
+            event_loop.exit();
+        }
+    }
+
     fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        if self.interrupted.load(Ordering::SeqCst) {
+            event_loop.exit();
+            return;
+        }
         let Some(gfx) = &self.gfx else { return };
         let next = self.last_frame + self.period;
         if Instant::now() >= next {

@@ -104,6 +104,8 @@ pub struct RunArgs {
     pub task: String,
     #[arg(long, value_enum)]
     pub technique: TechniqueKind,
+    /// Record the run as one with the technique's feedback shown (the report's
+    /// `feedback` field); the simulation is the same either way.
     #[arg(long)]
     pub feedback: bool,
     /// Gesture file to replay.

@@ -32,6 +32,9 @@ use crate::render::shadow_map::ShadowMap;
 use crate::render::targets::RenderTargets;
 use crate::render::uniforms::FrameUniforms;
 
+/// Vertices per decal instance: four quads (`VERTICES` in `shaders/decal.wgsl`).
+const DECAL_VERTICES: u32 = 24;
+
 /// Choices fixed for a renderer's lifetime.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RendererOptions {
@@ -297,7 +300,7 @@ impl Renderer {
         if f.decal_count > 0 {
             pass.set_pipeline(&p.decal);
             pass.set_vertex_buffer(0, f.decals.slice());
-            pass.draw(0..6, 0..f.decal_count);
+            pass.draw(0..DECAL_VERTICES, 0..f.decal_count);
         }
         if let (true, Some(contact)) = (f.show_overlay, &self.contact) {
             pass.set_pipeline(&p.overlay);

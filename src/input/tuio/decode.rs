@@ -440,6 +440,10 @@ pub fn blob_hand(b: &TuioBlob, table: [f32; 2], id: u32) -> Hand {
     let kind = blob_kind(long_m, long_m / len(short).max(1e-6));
     let (nominal, centre, along_y) = footprint(kind);
     let scale = (long_m / nominal).clamp(0.4, 2.5);
+    // A long axis has two ends. A hand lying along it (fingers to local +y)
+    // is taken to reach in from the user's side of the table: its fingers
+    // point away from the user (table +y), never down the screen.
+    let long = if along_y && long[1] < 0.0 { [-long[0], -long[1]] } else { long };
     let direction = long[1].atan2(long[0]);
     // Local +y points along angle + 90°; local +x along the angle itself.
     let angle = if along_y { direction - std::f32::consts::FRAC_PI_2 } else { direction };
@@ -812,6 +816,29 @@ mod tests {
         assert!(c[0].abs() < 1e-4 && c[1].abs() < 1e-4, "{c:?}");
         // Short and thin: the edge of a hand.
         assert_eq!(blob_hand(&blob(0.1, 0.02 / 0.75, 0.0), TABLE, 1).kind, HandKind::Edge);
+    }
+
+    /// A flat-hand blob is turned by its angle, fingers away from the user
+    /// (table +y) whichever end of its long axis the angle names.
+    #[test]
+    fn a_flat_hand_blob_points_its_fingers_away_from_the_user() {
+        let hand = |deg: f32| {
+            let b = TuioBlob { session: 1, x: 0.5, y: 0.5, angle: deg.to_radians(), width: 0.12, height: 0.18 / 0.75 };
+            let h = blob_hand(&b, TABLE, 1);
+            assert_eq!(h.kind, HandKind::FlatHand, "{deg}°");
+            // Fingers along local +y: (-sin, cos) of the hand's angle.
+            [-h.pose.angle.sin(), h.pose.angle.cos()]
+        };
+        // Upright on screen (angle 0): fingers straight up the table.
+        let up = hand(0.0);
+        assert!(up[1] > 0.999, "{up:?}");
+        for deg in [0.0_f32, 20.0, -30.0, 10.0] {
+            let (a, b) = (hand(deg), hand(deg + 180.0));
+            assert!(a[1] > 0.0, "{deg}°: fingers {a:?}");
+            assert!((a[0] - b[0]).abs() < 1e-4 && (a[1] - b[1]).abs() < 1e-4, "{deg}°: {a:?} against {b:?}");
+        }
+        // Turned clockwise on screen: fingers lean right (+x); anticlockwise, left.
+        assert!(hand(20.0)[0] > 0.2 && hand(-30.0)[0] < -0.3, "{:?} {:?}", hand(20.0), hand(-30.0));
     }
 
     fn extent(hand: &Hand) -> [[f32; 2]; 2] {
