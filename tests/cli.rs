@@ -213,6 +213,25 @@ fn contact_answers_one_line_of_json() {
 }
 
 #[test]
+fn contact_refuses_a_concave_polygon_over_the_decomposition_limit() {
+    // 8,000 alternating-radius vertices took 4-12 s before the limit (issue #20).
+    let star: Vec<[f64; 2]> = (0..8000)
+        .map(|i| {
+            let t = std::f64::consts::TAU * f64::from(i) / 8000.0;
+            let r = if i % 2 == 0 { 1.0 } else { 0.6 };
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect();
+    let dir = tmp("contact-concave");
+    let f = dir.join("q.json");
+    let q = serde_json::json!({"a": [[0.5, 0.5], [0.7, 0.5], [0.7, 0.7], [0.5, 0.7]], "b": star});
+    std::fs::write(&f, q.to_string()).expect("write");
+    let o = bin().args(["contact", "--concave"]).arg(&f).output().expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+    assert!(text(&o).contains("polygon `b`: is concave with 8000 vertices"), "{}", text(&o));
+}
+
+#[test]
 fn screenshot_writes_a_png_headless() {
     let dir = tmp("shot");
     let png = dir.join("s.png");

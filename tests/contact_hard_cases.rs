@@ -5,8 +5,8 @@
 use std::f64::consts::{PI, SQRT_2};
 
 use surfacelab::contact::{
-    CircleFit, ContactReport, ConvexPolygon, CoverKind, EntranceBlock, Feature, PolygonError, Relation, SimplePolygon,
-    UnionBlock, Vec2, brute_force_report_at, discretize_circle,
+    CircleFit, ContactReport, ConvexPolygon, CoverKind, EntranceBlock, Feature, MAX_CONCAVE_VERTICES, PolygonError,
+    Relation, SimplePolygon, UnionBlock, Vec2, brute_force_report_at, discretize_circle,
 };
 
 fn poly(points: &[[f64; 2]]) -> ConvexPolygon {
@@ -349,4 +349,49 @@ fn a_small_square_in_a_pocket_exits_into_the_pocket() {
     // Diagonal push into the corner: out along the diagonal, √2 · 0.05.
     let r = union.report_at(Vec2::new(-0.15, -0.15));
     assert!((r.distance + 0.05 * SQRT_2).abs() < 1e-12, "{r:?}");
+}
+
+/// A star whose radius alternates between 1 and 0.6: every vertex is real
+/// (none is welded or straight), every second one is reflex.
+fn star(n: usize) -> Vec<[f64; 2]> {
+    (0..n)
+        .map(|i| {
+            let t = 2.0 * PI * i as f64 / n as f64;
+            let r = if i % 2 == 0 { 1.0 } else { 0.6 };
+            [r * t.cos(), r * t.sin()]
+        })
+        .collect()
+}
+
+#[test]
+fn concave_decomposition_is_bounded_and_says_so() {
+    // One vertex pair over the documented limit: refused by name, not run for seconds.
+    let over = MAX_CONCAVE_VERTICES + 2;
+    let err = SimplePolygon::from_xy(&star(over)).expect_err("over the limit");
+    assert_eq!(err, PolygonError::TooManyVertices { vertices: over, limit: MAX_CONCAVE_VERTICES });
+    assert!(err.to_string().contains("at most 2000"), "{err}");
+
+    // At the limit it decomposes, and the pieces cover the star's area:
+    // n/2 kites of area 2 · ½ · 1 · 0.6 · sin(2π/n).
+    let at = SimplePolygon::from_xy(&star(MAX_CONCAVE_VERTICES)).expect("at the limit");
+    assert!(!at.is_convex());
+    let n = MAX_CONCAVE_VERTICES as f64;
+    let expected = n * 0.5 * 0.6 * (2.0 * PI / n).sin();
+    let area: f64 = at.pieces().iter().map(|p| shoelace(p.vertices())).sum();
+    assert!((area - expected).abs() < 1e-9, "pieces {area} vs star {expected}");
+
+    // A convex ring is never decomposed, so it has no limit.
+    let circle: Vec<[f64; 2]> = (0..3 * MAX_CONCAVE_VERTICES)
+        .map(|i| {
+            let t = 2.0 * PI * i as f64 / (3 * MAX_CONCAVE_VERTICES) as f64;
+            [t.cos(), t.sin()]
+        })
+        .collect();
+    let big = SimplePolygon::from_xy(&circle).expect("convex: no limit");
+    assert!(big.is_convex());
+    assert_eq!(big.pieces().len(), 1);
+}
+
+fn shoelace(p: &[Vec2]) -> f64 {
+    (0..p.len()).map(|i| p[i].x * p[(i + 1) % p.len()].y - p[(i + 1) % p.len()].x * p[i].y).sum::<f64>() / 2.0
 }

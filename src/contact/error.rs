@@ -22,6 +22,11 @@ pub enum PolygonError {
     SelfIntersecting { first: usize, second: usize },
     #[error("a circle needs a positive finite radius, got {radius}")]
     BadRadius { radius: f64 },
+    #[error(
+        "is concave with {vertices} vertices after cleaning; convex decomposition accepts at most {limit} \
+         (simplify the outline, or split it into convex parts)"
+    )]
+    TooManyVertices { vertices: usize, limit: usize },
 }
 
 /// An error of a contact query, naming the polygon at fault (`a` or `b` in

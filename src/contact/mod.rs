@@ -16,7 +16,7 @@ mod vec2;
 pub use brute_force::{brute_force_report, brute_force_report_at, valid_covers};
 pub use cached::CachedBlock;
 pub use circle::{CircleFit, discretization_error, discretize_circle, segments_for_error};
-pub use concave::{SimplePolygon, UnionBlock};
+pub use concave::{MAX_CONCAVE_VERTICES, SimplePolygon, UnionBlock};
 pub use entrance_block::{ContactEdge, CoverKind, EntranceBlock, contact_report, pair_tolerance};
 pub use error::{ContactError, PolygonError};
 pub use json_query::answer_json;
