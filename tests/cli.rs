@@ -505,7 +505,7 @@ fn inputs_past_a_bound_exit_2_instead_of_hanging_or_aborting() {
         .expect("runs");
     assert_eq!(o.status.code(), Some(2), "{}", text(&o));
     assert!(
-        text(&o).contains("huge.toml:5: field `objects[0].radius`: 1e30 is out of range (0.001..=10)"),
+        text(&o).contains("huge.toml:8: field `objects[0].radius`: 1e30 is out of range (0.001..=10)"),
         "{}",
         text(&o)
     );

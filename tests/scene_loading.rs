@@ -94,7 +94,7 @@ fn unknown_shape_names_line_and_field() {
 #[test]
 fn negative_mass_names_line_and_field() {
     let e = bad(&GOOD.replace("mass = 1.0", "mass = -2.0"));
-    assert!(e.starts_with("bad.toml:6:") && e.contains("objects[0].mass") && e.contains("-2"), "{e}");
+    assert!(e.starts_with("bad.toml:10:") && e.contains("objects[0].mass") && e.contains("-2"), "{e}");
 }
 
 #[test]

@@ -1,6 +1,7 @@
 //! One negative test per class of scene-validator error: each breaks one
 //! field of a scene that loads, and checks that the message names the file,
-//! the line where the validator knows it, the field, and what was wrong.
+//! the line of the bad value (of its table when the key is missing), the
+//! field, and what was wrong.
 
 use std::fmt::Write as _;
 use surfacelab::scene;
@@ -161,27 +162,27 @@ fn a_missing_field_a_goal_needs_is_named() {
 #[test]
 fn a_value_out_of_range_is_named_with_its_range() {
     let e = error(&with(OBJECTS, "mass = 1.0", "mass = -2.0"));
-    assert_names(&e, Some(5), "objects[0].mass", "-2 is out of range (0.001..=1000)");
+    assert_names(&e, Some(9), "objects[0].mass", "-2 is out of range (0.001..=1000)");
     let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1.0, 0.75]\nrestitution = 1.5"));
-    assert_names(&e, Some(3), "table.restitution", "1.5 is out of range (0..=1)");
+    assert_names(&e, Some(5), "table.restitution", "1.5 is out of range (0..=1)");
     let e = error(&with(OBJECTS, "position = [0.0, 0.0]", "position = [0.0, 0.0]\nrotation_deg = [0.0, 0.0, 400.0]"));
-    assert_names(&e, Some(5), "objects[0].rotation_deg[2]", "400 is out of range (-360..=360)");
+    assert_names(&e, Some(12), "objects[0].rotation_deg[2]", "400 is out of range (-360..=360)");
     let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"positioning\"\ndwell_s = 100.0"));
-    assert_names(&e, Some(19), "goal.dwell_s", "100 is out of range (0..=60)");
+    assert_names(&e, Some(21), "goal.dwell_s", "100 is out of range (0..=60)");
     let e = error(&format!("{OBJECTS}[physics]\ntimestep_hz = 5.0\n"));
-    assert_names(&e, Some(24), "physics.timestep_hz", "5 is out of range (10..=10000)");
+    assert_names(&e, Some(25), "physics.timestep_hz", "5 is out of range (10..=10000)");
     let e = error(&with(SOFT, "mass = 0.03", "mass = 0.03\ncrumple = 0.9"));
-    assert_names(&e, Some(5), "soft_bodies[0].crumple", "0.9 is out of range (0..=0.6)");
+    assert_names(&e, Some(12), "soft_bodies[0].crumple", "0.9 is out of range (0..=0.6)");
     let e = error(&with(SOFT, "mass = 0.03", "mass = 0.03\nthickness = 0.1"));
-    assert_names(&e, Some(5), "soft_bodies[0].thickness", "out of range (up to 0.05 m)");
+    assert_names(&e, Some(12), "soft_bodies[0].thickness", "out of range (up to 0.05 m)");
 }
 
 #[test]
 fn a_size_that_must_be_positive_is_named() {
     let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [0.0, 0.75]"));
-    assert_names(&e, Some(3), "table.size[0]", "0 is out of range (0.05..=10)");
+    assert_names(&e, Some(4), "table.size[0]", "0 is out of range (0.05..=10)");
     let e = error(&with(OBJECTS, "radius = 0.03", "radius = 0.0"));
-    assert_names(&e, Some(12), "objects[1].radius", "0 is out of range (0.001..=10)");
+    assert_names(&e, Some(15), "objects[1].radius", "0 is out of range (0.001..=10)");
     let e = error(&with(OBJECTS, "effects = [\"gravity\"]", "effects = [\"gravity\"]\ntime_limit_s = 0"));
     assert!(e.starts_with("bad.toml"), "{e}");
     assert!(e.contains("time_limit_s"), "{e}");
@@ -190,64 +191,64 @@ fn a_size_that_must_be_positive_is_named() {
 #[test]
 fn a_count_out_of_range_is_named() {
     let e = error(&format!("{OBJECTS}[physics]\nsolver_iterations = 0\n"));
-    assert_names(&e, Some(24), "physics.solver_iterations", "0 is out of range (1..=100)");
+    assert_names(&e, Some(25), "physics.solver_iterations", "0 is out of range (1..=100)");
     let e = error(&with(OBJECTS, "position = [0.2, 0.0]", "position = [0.2, 0.0]\ncount = 0"));
-    assert_names(&e, Some(12), "objects[1].count", "0 is out of range (1..=1000)");
+    assert_names(&e, Some(19), "objects[1].count", "0 is out of range (1..=1000)");
     let e = error(&with(SOFT, "resolution = [16, 11]", "resolution = [16, 1]"));
-    assert_names(&e, Some(5), "soft_bodies[0].resolution[1]", "1 is out of range (2..=128)");
+    assert_names(&e, Some(9), "soft_bodies[0].resolution[1]", "1 is out of range (2..=128)");
     let e = error(&format!("{SOFT}pieces = 1\n"));
-    assert_names(&e, Some(14), "goal.pieces", "1 is out of range (2..=100)");
+    assert_names(&e, Some(17), "goal.pieces", "1 is out of range (2..=100)");
     let e = error(&with(SOFT, "resolution = [16, 11]", "resolution = [128, 128]"));
-    assert_names(&e, Some(5), "soft_bodies[0].resolution", "16384 particles is too many");
+    assert_names(&e, Some(9), "soft_bodies[0].resolution", "16384 particles is too many");
 }
 
 #[test]
 fn a_number_that_is_not_finite_is_named() {
     let e = error(&with(OBJECTS, "mass = 1.0", "mass = nan"));
-    assert_names(&e, Some(5), "objects[0].mass", "must be a finite number, got NaN");
+    assert_names(&e, Some(9), "objects[0].mass", "must be a finite number, got NaN");
     let e = error(&with(OBJECTS, "position = [0.0, 0.0]", "position = [inf, 0.0]"));
-    assert_names(&e, Some(5), "objects[0].position[0]", "must be a finite number, got inf");
+    assert_names(&e, Some(11), "objects[0].position[0]", "must be a finite number, got inf");
     let e = error(&with(OBJECTS, "position = [0.2, 0.1]", "position = [nan, 0.1]"));
-    assert_names(&e, Some(21), "goal.targets[0].position", "must be finite");
+    assert_names(&e, Some(23), "goal.targets[0].position", "must be finite");
 }
 
 #[test]
 fn an_array_of_the_wrong_length_is_named() {
     let e = error(&with(OBJECTS, "position = [0.0, 0.0]", "position = [0.0, 0.0, 0.0, 0.0]"));
-    assert_names(&e, Some(5), "objects[0].position", "must be [x, y] or [x, y, z]");
+    assert_names(&e, Some(11), "objects[0].position", "must be [x, y] or [x, y, z]");
     let e = error(&with(SOFT, "size = [0.3, 0.2]", "size = [0.3, 0.2, 0.1]"));
-    assert_names(&e, Some(5), "soft_bodies[0].size", "a cloth needs `size = [x, y]`");
+    assert_names(&e, Some(8), "soft_bodies[0].size", "a cloth needs `size = [x, y]`");
     let e = error(&with(SOFT, "resolution = [16, 11]", "resolution = [16]"));
-    assert_names(&e, Some(5), "soft_bodies[0].resolution", "needs 2 entries, one per side, got 1");
+    assert_names(&e, Some(9), "soft_bodies[0].resolution", "needs 2 entries, one per side, got 1");
 }
 
 #[test]
 fn a_place_off_the_table_is_named() {
     let e = error(&with(OBJECTS, "position = [0.2, 0.0]", "position = [0.9, 0.0]"));
-    assert_names(&e, Some(12), "objects[1].position", "(0.900, 0.000) lies off the table (±0.500 × ±0.375)");
+    assert_names(&e, Some(18), "objects[1].position", "(0.900, 0.000) lies off the table (±0.500 × ±0.375)");
     let e = error(&with(OBJECTS, "position = [0.2, 0.1]", "position = [0.9, 0.1]"));
-    assert_names(&e, Some(21), "goal.targets[0].position", "lies off the table");
+    assert_names(&e, Some(23), "goal.targets[0].position", "lies off the table");
     let e = error(&with(SOFT, "position = [0.0, 0.0]", "position = [0.0, 0.5]"));
-    assert_names(&e, Some(5), "soft_bodies[0].position", "lies off the table");
+    assert_names(&e, Some(10), "soft_bodies[0].position", "lies off the table");
     let e = error(&with(STEER, "waypoints = [[0.1, 0.18]]", "waypoints = [[0.1, 0.18], [0.1, 0.5]]"));
-    assert_names(&e, Some(13), "goal.waypoints[1]", "lies off the table");
+    assert_names(&e, Some(16), "goal.waypoints[1]", "lies off the table");
 }
 
 #[test]
 fn an_unknown_colour_is_named() {
     let e = error(&with(OBJECTS, "color = \"red\"", "color = \"reddish\""));
-    assert_names(&e, Some(5), "objects[0].color", "unknown colour `reddish` (use #rrggbb or one of red, blue");
+    assert_names(&e, Some(10), "objects[0].color", "unknown colour `reddish` (use #rrggbb or one of red, blue");
     let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1.0, 0.75]\ncolor = \"plaid\""));
-    assert_names(&e, Some(3), "table.color", "unknown colour `plaid`");
+    assert_names(&e, Some(5), "table.color", "unknown colour `plaid`");
     let e = error(&with(SOFT, "color = \"white\"", "color = \"#12345\""));
-    assert_names(&e, Some(5), "soft_bodies[0].color", "unknown colour `#12345`");
+    assert_names(&e, Some(13), "soft_bodies[0].color", "unknown colour `#12345`");
     let zone = "kind = \"sorting\"\n[[goal.zones]]\ncolor = \"mauvish\"\nmin = [0.1, 0.1]\nmax = [0.3, 0.3]\n";
     let e = error(&with(
         &with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", ""),
         "kind = \"positioning\"\n",
         zone,
     ));
-    assert_names(&e, Some(21), "goal.zones[0].color", "unknown colour `mauvish`");
+    assert_names(&e, Some(22), "goal.zones[0].color", "unknown colour `mauvish`");
 }
 
 #[test]
@@ -264,7 +265,7 @@ fn an_inverted_zone_is_named() {
 #[test]
 fn a_duplicate_name_is_named() {
     let e = error(&with(OBJECTS, "name = \"ball\"", "name = \"a\""));
-    assert_names(&e, Some(12), "objects[1].name", "`a` is the name of two objects");
+    assert_names(&e, Some(13), "objects[1].name", "`a` is the name of two objects");
     let e = error(&with(
         &with(
             SOFT,
@@ -274,21 +275,21 @@ fn a_duplicate_name_is_named() {
         "[[soft_bodies]]",
         "[[soft_bodies]]",
     ));
-    assert_names(&e, Some(5), "soft_bodies[0].name", "`paper` is already the name of an object or soft body");
+    assert_names(&e, Some(6), "soft_bodies[0].name", "`paper` is already the name of an object or soft body");
 }
 
 #[test]
 fn a_reference_to_nothing_is_named() {
     let e = error(&with(OBJECTS, "object = \"a\"", "object = \"b\""));
-    assert_names(&e, Some(21), "goal.targets[0].object", "no object named `b`");
+    assert_names(&e, Some(22), "goal.targets[0].object", "no object named `b`");
     let e = error(&with(STEER, "object = \"puck\"", "object = \"disc\""));
-    assert_names(&e, Some(13), "goal.object", "no object named `disc`");
+    assert_names(&e, Some(15), "goal.object", "no object named `disc`");
     let e = error(&with(STEER, "object = \"puck\"", "object = \"puck\"\nplatform = \"stage\""));
-    assert_names(&e, Some(13), "goal.platform", "no object named `stage`");
+    assert_names(&e, Some(16), "goal.platform", "no object named `stage`");
     let e = error(&with(SOFT, "body = \"paper\"", "body = \"napkin\""));
-    assert_names(&e, Some(14), "goal.body", "no soft body named `napkin`");
+    assert_names(&e, Some(16), "goal.body", "no soft body named `napkin`");
     let e = error(&with(SOFT, "tear_strain = 0.25\n", ""));
-    assert_names(&e, Some(13), "goal.body", "`paper` cannot tear: give it a `tear_strain`");
+    assert_names(&e, Some(15), "goal.body", "`paper` cannot tear: give it a `tear_strain`");
     let e = error(
         &with(SOFT, "kind = \"torn\"", "kind = \"cloth_flat\"")
             .replace("kind = \"cloth\"", "kind = \"volume\"")
@@ -297,13 +298,13 @@ fn a_reference_to_nothing_is_named() {
             .replace("tear_strain = 0.25\n", "")
             .replace("\"cloth\", \"tearing\"", "\"soft_bodies\""),
     );
-    assert_names(&e, Some(12), "goal.body", "`paper` is not a cloth");
+    assert_names(&e, Some(14), "goal.body", "`paper` is not a cloth");
 }
 
 #[test]
 fn fields_that_do_not_go_together_are_named() {
     let e = error(&with(SOFT, "mass = 0.03", "mass = 0.03\ndensity = 0.5"));
-    assert_names(&e, Some(5), "soft_bodies[0].density", "give `mass` or `density`, not both");
+    assert_names(&e, Some(12), "soft_bodies[0].density", "give `mass` or `density`, not both");
     let volume = with(
         &with(&with(SOFT, "kind = \"cloth\"", "kind = \"volume\""), "size = [0.3, 0.2]", "size = [0.3, 0.2, 0.05]"),
         "resolution = [16, 11]",
@@ -312,19 +313,19 @@ fn fields_that_do_not_go_together_are_named() {
     .replace("\"cloth\", \"tearing\"", "\"soft_bodies\", \"tearing\"");
     scene::parse(&volume, "volume.toml").unwrap_or_else(|e| panic!("the volume loads: {e}"));
     let e = error(&with(&volume, "mass = 0.03", "mass = 0.03\nbending = 2.0"));
-    assert_names(&e, Some(5), "soft_bodies[0].bending", "only a cloth has bending springs");
+    assert_names(&e, Some(12), "soft_bodies[0].bending", "only a cloth has bending springs");
     let e = error(&with(&volume, "mass = 0.03", "mass = 0.03\ncrumple = 0.2"));
-    assert_names(&e, Some(5), "soft_bodies[0].crumple", "only a cloth can start crumpled");
+    assert_names(&e, Some(12), "soft_bodies[0].crumple", "only a cloth can start crumpled");
     let e = error(&with(&volume, "mass = 0.03", "mass = 0.03\ncrease = 0.2"));
-    assert_names(&e, Some(5), "soft_bodies[0].crease", "only a cloth creases");
+    assert_names(&e, Some(12), "soft_bodies[0].crease", "only a cloth creases");
 }
 
 #[test]
 fn an_effect_a_body_needs_but_the_scene_lacks_is_named() {
     let e = error(&with(SOFT, "\"cloth\", \"tearing\"", "\"cloth\""));
-    assert_names(&e, Some(5), "soft_bodies[0].tear_strain", "tearing needs the `tearing` effect: add it to `effects`");
+    assert_names(&e, Some(12), "soft_bodies[0].tear_strain", "tearing needs the `tearing` effect: add it to `effects`");
     let e = error(&with(SOFT, "\"cloth\", \"tearing\"", "\"tearing\""));
-    assert_names(&e, Some(5), "soft_bodies[0].kind", "a cloth needs the `cloth` effect");
+    assert_names(&e, Some(7), "soft_bodies[0].kind", "a cloth needs the `cloth` effect");
 }
 
 /// A scene that loads must hold nothing a solver cannot take: every number
@@ -341,41 +342,41 @@ fn a_number_past_its_documented_bound_is_named_with_the_bound() {
         )
     };
     let e = error(&fixed("[nan, 0.0]"));
-    assert_names(&e, Some(5), "objects[0].step[0]", "must be a finite number, got NaN");
+    assert_names(&e, Some(13), "objects[0].step[0]", "must be a finite number, got NaN");
     let e = error(&fixed("[0.0, inf]"));
-    assert_names(&e, Some(5), "objects[0].step[1]", "must be a finite number, got inf");
+    assert_names(&e, Some(13), "objects[0].step[1]", "must be a finite number, got inf");
     let e = error(&fixed("[1e30, 0.0]"));
-    assert_names(&e, Some(5), "objects[0].step[0]", "1e30 is out of range (-100..=100)");
+    assert_names(&e, Some(13), "objects[0].step[0]", "1e30 is out of range (-100..=100)");
     let e = error(&fixed("[60.0, 0.0]"));
-    assert_names(&e, Some(5), "objects[0].position", "copy 3 lies at (120, 0), farther than 100 m");
+    assert_names(&e, Some(12), "objects[0].position", "copy 3 lies at (120, 0), farther than 100 m");
 
     let e = error(&with(OBJECTS, "mass = 1.0", "mass = 1e-30"));
-    assert_names(&e, Some(5), "objects[0].mass", "1e-30 is out of range (0.001..=1000)");
+    assert_names(&e, Some(9), "objects[0].mass", "1e-30 is out of range (0.001..=1000)");
     let e = error(&with(OBJECTS, "size = [0.1, 0.1, 0.1]", "size = [0.1, 1e30, 0.1]"));
-    assert_names(&e, Some(5), "objects[0].size[1]", "1e30 is out of range (0.001..=10)");
+    assert_names(&e, Some(8), "objects[0].size[1]", "1e30 is out of range (0.001..=10)");
     let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1e30, 0.75]"));
-    assert_names(&e, Some(3), "table.size[0]", "1e30 is out of range (0.05..=10)");
+    assert_names(&e, Some(4), "table.size[0]", "1e30 is out of range (0.05..=10)");
     let e = error(&with(OBJECTS, "effects = [\"gravity\"]", "effects = [\"gravity\"]\ntime_limit_s = 1e9"));
     assert_names(&e, Some(3), "time_limit_s", "1e9 is out of range (at most 600)");
     let e = error(&format!("{OBJECTS}[physics]\nccd_substeps = 1000000\n"));
-    assert_names(&e, Some(24), "physics.ccd_substeps", "1000000 is out of range (0..=16)");
+    assert_names(&e, Some(25), "physics.ccd_substeps", "1000000 is out of range (0..=16)");
 
     // Cylinders and capsules of 1e30 used to reach parry and panic in epa3.rs.
     let e = error(&with(STEER, "height = 0.02", "height = 1e30"));
-    assert_names(&e, Some(5), "objects[0].height", "1e30 is out of range (0.001..=10)");
+    assert_names(&e, Some(9), "objects[0].height", "1e30 is out of range (0.001..=10)");
     let e = error(&with(STEER, "radius = 0.025", "radius = 1e30"));
-    assert_names(&e, Some(5), "objects[0].radius", "1e30 is out of range (0.001..=10)");
+    assert_names(&e, Some(8), "objects[0].radius", "1e30 is out of range (0.001..=10)");
     let capsule = with(&with(STEER, "shape = \"cylinder\"", "shape = \"capsule\""), "height = 0.02", "height = 1e30");
-    assert_names(&error(&capsule), Some(5), "objects[0].height", "1e30 is out of range (0..=10)");
+    assert_names(&error(&capsule), Some(9), "objects[0].height", "1e30 is out of range (0..=10)");
 
     let e = error(&with(SOFT, "size = [0.3, 0.2]", "size = [0.3, 1e30]"));
-    assert_names(&e, Some(5), "soft_bodies[0].size[1]", "1e30 is out of range (0.001..=10)");
+    assert_names(&e, Some(8), "soft_bodies[0].size[1]", "1e30 is out of range (0.001..=10)");
     let e = error(&with(SOFT, "mass = 0.03", "mass = 1e-30"));
-    assert_names(&e, Some(5), "soft_bodies[0].mass", "1e-30 is out of range (0.001..=1000)");
+    assert_names(&e, Some(11), "soft_bodies[0].mass", "1e-30 is out of range (0.001..=1000)");
     let e = error(&with(SOFT, "mass = 0.03", "density = 19000.0"));
-    assert_names(&e, Some(5), "soft_bodies[0].density", "gives a mass of 1140 kg, out of range (0.001..=1000 kg)");
+    assert_names(&e, Some(11), "soft_bodies[0].density", "gives a mass of 1140 kg, out of range (0.001..=1000 kg)");
     let e = error(&with(STEER, "finish = [-0.3, -0.2]", "finish = [-0.3, -0.2]\nfinish_radius = 1e30"));
-    assert_names(&e, Some(13), "goal.finish_radius", "1e30 is out of range (at most 10)");
+    assert_names(&e, Some(18), "goal.finish_radius", "1e30 is out of range (at most 10)");
 }
 
 #[test]
@@ -393,9 +394,9 @@ fn too_many_objects_or_copies_at_one_spot_are_refused_before_anything_is_built()
     let e = error(&many(1000, "[0.03, 0.0]"));
     assert_names(&e, Some(16), "objects[1].count", "1 would make 1001 objects; a scene may have at most 1000");
     let e = error(&many(10_000, "[0.03, 0.0]"));
-    assert_names(&e, Some(5), "objects[0].count", "10000 is out of range (1..=1000)");
+    assert_names(&e, Some(10), "objects[0].count", "10000 is out of range (1..=1000)");
     let e = error(&many(40, "[0.0, 0.0]"));
-    assert_names(&e, Some(5), "objects[0].step", "40 copies need a `step` that is not [0, 0]");
+    assert_names(&e, Some(13), "objects[0].step", "40 copies need a `step` that is not [0, 0]");
     assert!(scene::parse(&many(999, "[0.03, 0.0]"), "ok.toml").is_ok_and(|s| s.objects.len() == 1000));
 }
 
@@ -413,6 +414,21 @@ fn a_duplicate_among_the_most_objects_a_scene_may_have_is_named_at_its_line() {
         .expect("write to a String");
     }
     let e = error(&text);
-    let line = 5 + 999 * 7;
+    // The 1000th `[[objects]]` header is line 5 + 999 * 7; its `name` the next.
+    let line = 5 + 999 * 7 + 1;
     assert_names(&e, Some(line), "objects[999].name", "`o500` is the name of two objects");
+}
+
+/// A bad value inside a table is named at its own line, not the table's
+/// header: the goal's `finish` (line 17, the `[goal]` header is line 13),
+/// a target's `object` inside `[[goal.targets]]` (line 22), and an
+/// object's `mass` (line 9, its `[[objects]]` header is line 5).
+#[test]
+fn a_bad_value_in_a_table_is_named_at_its_own_line() {
+    let e = error(&with(STEER, "finish = [-0.3, -0.2]", "finish = [-3.0, -0.2]"));
+    assert_names(&e, Some(17), "goal.finish", "lies off the table");
+    let e = error(&with(OBJECTS, "object = \"a\"", "object = \"nobody\""));
+    assert_names(&e, Some(22), "goal.targets[0].object", "no object named `nobody`");
+    let e = error(&with(OBJECTS, "mass = 1.0", "mass = -1.0"));
+    assert_names(&e, Some(9), "objects[0].mass", "");
 }

@@ -69,6 +69,33 @@ impl<'a> FieldReader<'a> {
     }
 
     /// An error about `field`, at the line of byte offset `at` when known.
+    /// Where `field` is written in the table that starts at `span`: the
+    /// offset of the line `KEY = ...` for the field's last key (`radius` of
+    /// `goal.radius`, `object` of `goal.targets[0].object`), looked for from
+    /// the table's start to the next table header (a TOML table's span is
+    /// its header), so an error names the line of the bad value; the
+    /// table's start when the key is not written there (a missing key, a
+    /// default).
+    pub fn key_offset(&self, span: &std::ops::Range<usize>, field: &str) -> usize {
+        let key = field.rsplit('.').next().unwrap_or(field);
+        let key = key.split('[').next().unwrap_or(key);
+        let Some(rest) = self.text.get(span.start..) else { return span.start };
+        let mut offset = span.start;
+        for (i, line) in rest.split_inclusive('\n').enumerate() {
+            let t = line.trim_start();
+            if i > 0 && t.starts_with('[') {
+                break;
+            }
+            if let Some(after) = t.strip_prefix(key)
+                && after.trim_start().starts_with('=')
+            {
+                return offset + (line.len() - t.len());
+            }
+            offset += line.len();
+        }
+        span.start
+    }
+
     pub fn error(&self, at: Option<usize>, field: impl Into<String>, problem: impl Into<String>) -> FieldError {
         FieldError::Value {
             origin: self.origin.to_owned(),

@@ -86,17 +86,20 @@ struct Checker<'a> {
 }
 
 impl Checker<'_> {
+    /// Errors name the line where the field is written inside the table
+    /// `span` (see [`FieldReader::key_offset`]).
     fn err(&self, span: &Range<usize>, field: impl Into<String>, message: impl Into<String>) -> SceneError {
-        self.fields.error(Some(span.start), field, message).into()
+        let field = field.into();
+        self.fields.error(Some(self.fields.key_offset(span, &field)), field, message).into()
     }
 
     /// A finite number in `lo..=hi` (`hi` may be infinite).
     fn num(&self, span: &Range<usize>, field: &str, v: f32, lo: f32, hi: f32) -> Result<f32, SceneError> {
-        Ok(self.fields.number(Some(span.start), field, v, lo, hi)?)
+        Ok(self.fields.number(Some(self.fields.key_offset(span, field)), field, v, lo, hi)?)
     }
 
     fn positive(&self, span: &Range<usize>, field: &str, v: f32) -> Result<f32, SceneError> {
-        Ok(self.fields.positive(Some(span.start), field, v)?)
+        Ok(self.fields.positive(Some(self.fields.key_offset(span, field)), field, v)?)
     }
 
     /// A finite number greater than 0 and at most `hi`.
@@ -118,7 +121,7 @@ impl Checker<'_> {
     where
         T: Copy + PartialOrd + std::fmt::Display,
     {
-        Ok(self.fields.in_range(Some(span.start), field, v, lo, hi)?)
+        Ok(self.fields.in_range(Some(self.fields.key_offset(span, field)), field, v, lo, hi)?)
     }
 
     fn scene(&self, raw: SceneFile) -> Result<Scene, SceneError> {
