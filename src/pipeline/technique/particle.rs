@@ -19,8 +19,9 @@
 //! and the outline sliding in lands on the top and needs friction there:
 //! pushes from the far side moved the steering cylinder 0.3-3.8 cm of
 //! 10.75. A line-of-sight capsule meets the rim the user sees and pushes
-//! it: 5.5-10.8 cm in 6 of those 8 pushes, at 1.05x the frame time of ball
-//! particles (`surfacelab behaviours`, `cargo bench --bench frame`).
+//! it: 2.3-10.5 cm, 6 of those 8 pushes at least 5 cm (`surfacelab
+//! behaviours`); its frame cost against ball particles is in README,
+//! "Measured figures" (`cargo bench --bench frame`).
 //!
 //! Two departures from the paper, both measured (README, "Particles: what
 //! they cost" and the study notes): a particle that can touch nothing
