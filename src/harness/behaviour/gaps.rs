@@ -24,10 +24,6 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      rocks under a push at its top; with a 24-sided convex hull instead the particles grip, and tip it over (90 \
      degrees), as Proxy's cube then does too (98): 1.5 N of press at mu = 1.5 pulls harder at the top than the 1.5 N \
      that tips a cylinder as tall as it is wide";
-const OUTSIDE_PUSH_LANDS_ON_TOP: &str = "from outside, perspective puts the finger over the cylinder's top first; the \
-     line-of-sight capsules that stand beside its silhouette meet its rim and push it (6 of the 8 such pushes pass), \
-     but on the floor from 000 and 090 the outline reaches the top before the rim has been pushed far, and the \
-     particles that land there need friction, which fails as in cylinder_top_drag (4.9 and 2.3 cm)";
 const FINGERTIP_FRICTION: &str = "two fingertips twisting 90 degrees about the box centre turn it 21: each ring of ~19 \
      particles presses 1.5 N, and the friction it gives is marginal against the table friction its own press adds \
      (pin and spin, with one ring held still, turns the same box 47-59 degrees)";
@@ -41,9 +37,6 @@ const FLANK_WEDGE: &str = "Hybrid's ball particles (see HybridTechnique::new): t
      a ball rolls under it, so it reaches the ball's front flank, which the camera sees edge-on; there the paper's ray \
      projection (Figure 6) turns the hand's motion into a slide down the flank into the wedge under the ball, and the \
      particles kick it back as the finger lifts (0.19 m/s in one frame); Particle's line-of-sight capsules roll it 10 cm";
-const FLICK: &str = "the finger stays on the 6 cm box for two frames at 1.6 m/s: friction from the top for two frames \
-     (at most ~0.75 m/s, a ~10 cm slide on the 0.3 table) cannot throw it 16 cm; Joint drags it kinematically, Proxy's persistent cube \
-     meets its trailing edge";
 const PILE_CONTACTS: &str = "light pieces (10 g) squeezed between velocity-driven pushers sink 10-22 mm into each \
      other; raising rapier's contact stiffness from 30 to 60, 120 or 240 Hz changed nothing (measured): the pushers \
      never yield, so a pile closed in from two sides has nowhere to go";
@@ -62,8 +55,6 @@ pub const GAPS: &[Gap] = &[
     Gap { case: "two_finger_twist", technique: Hybrid, metric: Turn, why: FINGERTIP_FRICTION },
     Gap { case: "cylinder_top_drag", technique: Particle, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
     Gap { case: "cylinder_top_drag", technique: Hybrid, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
-    Gap { case: "side_push_floor_000", technique: Particle, metric: Distance, why: OUTSIDE_PUSH_LANDS_ON_TOP },
-    Gap { case: "side_push_floor_090", technique: Particle, metric: Distance, why: OUTSIDE_PUSH_LANDS_ON_TOP },
     Gap { case: "ball_light_touch", technique: Hybrid, metric: Distance, why: FLANK_WEDGE },
     Gap {
         case: "ball_under_hand",
@@ -80,8 +71,6 @@ pub const GAPS: &[Gap] = &[
         why: "the hand's outline beside the ball becomes grips at table depth that cage the ball: it is carried, not \
               rolled",
     },
-    Gap { case: "flick_from_rest", technique: Particle, metric: Distance, why: FLICK },
-    Gap { case: "flick_from_rest", technique: Hybrid, metric: Distance, why: FLICK },
     Gap { case: "gather_hand_edges", technique: Joint, metric: Overlap, why: PILE_CONTACTS },
     Gap { case: "gather_hand_edges", technique: Particle, metric: Overlap, why: PILE_CONTACTS },
     Gap { case: "gather_hand_edges", technique: Hybrid, metric: Overlap, why: PILE_CONTACTS },
