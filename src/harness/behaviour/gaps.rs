@@ -39,7 +39,8 @@ const FLANK_WEDGE: &str = "Hybrid's ball particles (see HybridTechnique::new): t
      particles kick it back as the finger lifts (0.19 m/s in one frame); Particle's line-of-sight capsules roll it 10 cm";
 const PILE_CONTACTS: &str = "light pieces (10 g) squeezed between velocity-driven pushers sink 10-22 mm into each \
      other; raising rapier's contact stiffness from 30 to 60, 120 or 240 Hz changed nothing (measured): the pushers \
-     never yield, so a pile closed in from two sides has nowhere to go";
+     never yield, so a pile closed in from two sides has nowhere to go; lighter particles yield but push less (0.01 kg \
+     instead of 0.2: 1.4 / 1.7 mm deep, 0.38 / 0.50 gathered)";
 
 use Metric::{Along as Distance, Carry, MaxOverlap as Overlap, PinDrift, Yaw as Turn};
 use TechniqueKind::{Hybrid, Joint, Particle, Proxy};

@@ -20,7 +20,9 @@
 //! pushes from the far side moved the steering cylinder 0.3-3.8 cm of
 //! 10.75. A line-of-sight capsule meets the rim the user sees and pushes
 //! it: 2.3-10.5 cm, 6 of those 8 pushes at least 5 cm (`surfacelab
-//! behaviours`); its frame cost against ball particles is in README,
+//! behaviours`), and 8.5-11.4 cm since particles predict their contacts
+//! and a point that climbed a step within the frame starts below it (see
+//! `placements`); its frame cost against ball particles is in README,
 //! "Measured figures" (`cargo bench --bench frame`).
 //!
 //! Two departures from the paper, both measured (README, "Particles: what
