@@ -12,6 +12,7 @@ use glam::Vec2;
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
+use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
 
 fn asset(path: &str) -> String {
@@ -45,18 +46,23 @@ fn grasp(task: &str, gesture: &str, kind: TechniqueKind) -> Grasp {
     let g = Gesture::load(asset(gesture)).expect("gesture");
     let mut s = session(task, kind);
     s.replay_until(&g, CARRY_START).expect("replay");
-    let y0 = s.world().object_pose(0).position.y;
+    let y0 = s.world().object_pose(ObjectId::new(0)).position.y;
     let mut max_lag = 0.0f32;
     while s.time() < CARRY_END - 1e-6 {
         let t = s.time();
         s.replay_until(&g, t + f64::from(s.world().dt())).expect("replay");
         let hands_y = CARRY * ((s.time() - CARRY_START) / (CARRY_END - CARRY_START)) as f32;
-        let p = s.world().object_pose(0).position;
+        let p = s.world().object_pose(ObjectId::new(0)).position;
         max_lag = max_lag.max((Vec2::new(p.x, p.y) - Vec2::new(0.0, hands_y)).length());
     }
-    let carried = s.world().object_pose(0).position.y - y0;
+    let carried = s.world().object_pose(ObjectId::new(0)).position.y - y0;
     s.replay_until(&g, g.duration() + 0.5).expect("replay");
-    Grasp { carried, max_lag, speed_after: s.world().object_pose(0).linvel.length(), nan: s.world().stats().nan_count }
+    Grasp {
+        carried,
+        max_lag,
+        speed_after: s.world().object_pose(ObjectId::new(0)).linvel.length(),
+        nan: s.world().stats().nan_count,
+    }
 }
 
 #[test]
@@ -128,7 +134,7 @@ fn hybrid_presses_from_the_top_like_particle() {
     let run = |kind| {
         let mut s = session("tasks/cases/one_box.toml", kind);
         s.replay_until(&g, g.duration() + 1.0).expect("replay");
-        s.world().object_pose(0).position
+        s.world().object_pose(ObjectId::new(0)).position
     };
     let (h, p) = (run(TechniqueKind::Hybrid), run(TechniqueKind::Particle));
     assert!((0.08..=0.11).contains(&h.x), "hybrid moved the box {:.3} m", h.x);
@@ -157,7 +163,7 @@ t = 0.5
     .expect("gesture");
     let mut s = session("tasks/cases/small_box.toml", TechniqueKind::Hybrid);
     s.replay_until(&g, 0.5).expect("replay");
-    let p = s.world().object_pose(0);
+    let p = s.world().object_pose(ObjectId::new(0));
     assert!(p.position.truncate().length() < 0.005, "box shoved to {}", p.position);
     assert!(p.linvel.length() < 0.02, "box moving at {} m/s", p.linvel.length());
 }

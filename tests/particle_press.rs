@@ -10,6 +10,7 @@ use glam::Vec3;
 use rapier3d::prelude::*;
 use surfacelab::pipeline::world::{Layer, TechniqueBody, World};
 use surfacelab::scene;
+use surfacelab::scene::ObjectId;
 
 const SCENE: &str = r#"
 name = "press"
@@ -48,11 +49,11 @@ fn press(fresh: bool, steps: usize) -> Vec<f32> {
         world.step();
     }
     let dt = world.dt();
-    let boxc = world.object_collider(0);
+    let boxc = world.object_collider(ObjectId::new(0));
     let mut bodies: Vec<TechniqueBody> = Vec::new();
     let mut out = Vec::new();
     for step in 0..steps {
-        let top = world.object_pose(0).position.z + 0.015;
+        let top = world.object_pose(ObjectId::new(0)).position.z + 0.015;
         if fresh || step == 0 {
             for b in bodies.drain(..) {
                 world.remove_body(b);

@@ -12,6 +12,7 @@ use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::render::snapshot::{SnapshotDir, Tolerance};
 use surfacelab::render::{self, GpuContext};
 use surfacelab::scene;
+use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
 
 /// Set on lavapipe, "llvmpipe (LLVM 15.0.6, 256 bits)": 12/255 per channel,
@@ -180,7 +181,7 @@ fn a_fingertip_on_a_box_is_drawn_over_the_box() {
     let (plain, shadow) = (draw(false), draw(true));
     let img = s.image();
     let lum = |v: &image::Rgba<u8>| u32::from(v.0[0]) + u32::from(v.0[1]) + u32::from(v.0[2]);
-    let box_pose = s.world().object_pose(0).position;
+    let box_pose = s.world().object_pose(ObjectId::new(0)).position;
     let (mut sensed_on_box, mut darker) = (0, 0);
     for (x, y, p) in shadow.enumerate_pixels() {
         let c = (x as usize * img.width / SIZE.0 as usize, y as usize * img.height / SIZE.1 as usize);

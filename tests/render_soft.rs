@@ -12,6 +12,7 @@ use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::render::snapshot::{SnapshotDir, Tolerance};
 use surfacelab::render::{self, GpuContext};
 use surfacelab::scene;
+use surfacelab::scene::SoftId;
 use surfacelab::session::{Session, SessionOptions};
 
 /// Set on lavapipe, "llvmpipe (LLVM 15.0.6, 256 bits)", as in `render_scenes.rs`.
@@ -52,7 +53,7 @@ fn the_torn_paper_draws_both_pieces() {
     // Two hands pulling the paper apart, shortly after it tore; contact
     // shadows on so the hands show.
     let s = session_at("tasks/tear.toml", Some("assets/gestures/tear_two_hands.toml"), 1.4);
-    assert!(s.world().soft_piece_masses(0).len() >= 2, "the paper should have torn by 1.4 s");
+    assert!(s.world().soft_piece_masses(SoftId::new(0)).len() >= 2, "the paper should have torn by 1.4 s");
     let list = scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true });
     assert!(list.deformables.len() >= 2, "every piece is drawn: {}", list.deformables.len());
     let img = render::render_to_image(&gpu(), &list, SIZE.0, SIZE.1).expect("render");

@@ -10,8 +10,8 @@ fn positioning_has_four_spheres_and_four_boxes_each_with_a_target() {
     let s = scene::load("positioning").expect("positioning loads");
     let Goal::Positioning { targets, .. } = &s.goal else { panic!("positioning goal, got {:?}", s.goal) };
     assert_eq!(targets.len(), 8);
-    let spheres = targets.iter().filter(|t| matches!(s.objects[t.object].shape, Shape::Sphere { .. })).count();
-    let boxes = targets.iter().filter(|t| matches!(s.objects[t.object].shape, Shape::Box { .. })).count();
+    let spheres = targets.iter().filter(|t| matches!(s.object(t.object).shape, Shape::Sphere { .. })).count();
+    let boxes = targets.iter().filter(|t| matches!(s.object(t.object).shape, Shape::Box { .. })).count();
     assert_eq!((spheres, boxes), (4, 4));
     for t in targets {
         assert!(s.on_table(t.position));
@@ -38,9 +38,9 @@ fn sorting_has_two_colours_and_a_zone_for_each() {
 fn steering_starts_far_top_right_on_a_raised_platform() {
     let s = scene::load("steering").expect("steering loads");
     let Goal::Steering(g) = &s.goal else { panic!("steering goal") };
-    let start = s.objects[g.object].position;
+    let start = s.object(g.object).position;
     assert!(start.x > 0.25 && start.y > 0.15, "start at far top right, got {start}");
-    let platform = &s.objects[g.platform.expect("platform")];
+    let platform = s.object(g.platform.expect("platform"));
     assert!(start.z > platform.position.z + platform.shape.half_z(), "cylinder starts on the platform");
     assert!(g.waypoints.len() >= 3);
     assert!(!s.effects.contains(Effect::Sleeping));

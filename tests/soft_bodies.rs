@@ -11,6 +11,7 @@ use surfacelab::input::Gesture;
 use surfacelab::pipeline::surface::{Hand, HandKind};
 use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::pipeline::world::{ObjectId, World, WorldError};
+use surfacelab::scene::SoftId;
 use surfacelab::scene::{self, Effect, EffectSet, Goal, Scene};
 use surfacelab::session::{Session, SessionOptions};
 
@@ -85,7 +86,7 @@ fn soft_bodies_exist_only_when_their_effect_is_declared() {
     let off: EffectSet = cloth.effects.iter().filter(|e| *e != Effect::Cloth).collect();
     let mut w = World::with_effects(&cloth, off);
     assert!(w.physics().soft_bodies.is_empty());
-    assert!(!w.soft_exists(0));
+    assert!(!w.soft_exists(SoftId::new(0)));
     let err = w.add_soft_body(&cloth.soft_bodies[0]).expect_err("effect is off");
     assert!(matches!(err, WorldError::EffectNotDeclared { effect: Effect::Cloth, .. }), "{err}");
     let msg = err.to_string();
@@ -148,7 +149,7 @@ position = [0.0, 0.0, 0.0165]
     for _ in 0..120 {
         w.step();
     }
-    let z = w.object_pose(0).position.z;
+    let z = w.object_pose(ObjectId::new(0)).position.z;
     println!("box on cloth: centre z = {z:.4} m (on the bare table it would be 0.0100)");
     assert!(z > 0.0135, "the box sank through the cloth: z = {z}");
 }
@@ -162,13 +163,13 @@ fn two_opposing_hands_tear_the_sheet_one_hand_drags_it_whole() {
     let one = flat_hand_drag(0.05, 0.25, 1.2);
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy, TechniqueKind::Joint] {
         let torn = replay(&scene, kind, &two, 0.5);
-        let pieces = torn.world().soft_piece_masses(0);
+        let pieces = torn.world().soft_piece_masses(SoftId::new(0));
         let dragged = replay(&scene, kind, &one, 0.5);
-        let moved = dragged.world().soft_center(0).expect("sheet").x;
+        let moved = dragged.world().soft_center(SoftId::new(0)).expect("sheet").x;
         println!(
             "{kind}: two hands -> pieces {pieces:.4?} (goal complete {}); one hand -> {} piece(s), sheet moved {moved:.3} m",
             torn.progress().complete,
-            dragged.world().soft_piece_masses(0).len()
+            dragged.world().soft_piece_masses(SoftId::new(0)).len()
         );
         if kind == TechniqueKind::Joint {
             // A contact holds one particle: pulling two particles apart tears
@@ -177,7 +178,7 @@ fn two_opposing_hands_tear_the_sheet_one_hand_drags_it_whole() {
         } else {
             assert!(torn.progress().complete, "{kind}: not torn in two: {pieces:?}");
         }
-        assert_eq!(dragged.world().soft_piece_masses(0).len(), 1, "{kind}: one hand tore the sheet");
+        assert_eq!(dragged.world().soft_piece_masses(SoftId::new(0)).len(), 1, "{kind}: one hand tore the sheet");
         assert!(moved > 0.06, "{kind}: one hand moved the sheet only {moved:.3} m");
     }
 }
@@ -193,14 +194,17 @@ fn a_sleeping_sheet_wakes_under_a_hand() {
         while s.time() < 1.0 {
             s.step(&[]).expect("step");
         }
-        assert!(s.world().soft_pieces(0).all(|(_, b)| b.is_sleeping()), "{kind}: the resting sheet does not sleep");
-        let start = s.world().soft_center(0).expect("sheet").x;
+        assert!(
+            s.world().soft_pieces(SoftId::new(0)).all(|(_, b)| b.is_sleeping()),
+            "{kind}: the resting sheet does not sleep"
+        );
+        let start = s.world().soft_center(SoftId::new(0)).expect("sheet").x;
         while s.time() < 2.5 {
             let t = (s.time() - 1.0) as f32;
             let hand = Hand::new(1, HandKind::FlatHand, 0.05 + 0.1 * t.min(1.0), -0.02);
             s.step(&[hand]).expect("step");
         }
-        let moved = s.world().soft_center(0).expect("sheet").x - start;
+        let moved = s.world().soft_center(SoftId::new(0)).expect("sheet").x - start;
         println!("{kind}: hand landing on the sleeping sheet dragged it {moved:.3} m");
         assert!(moved > 0.03, "{kind}: the sleeping sheet did not follow the hand ({moved:.3} m)");
     }
@@ -223,8 +227,8 @@ fn cloth_under_a_flat_hand_stays_finite_for_ten_thousand_steps() {
         let hand = Hand::new(1, HandKind::FlatHand, 0.04 * (t * 0.7).cos(), 0.04 * (t * 0.7).sin());
         s.step(&[hand]).expect("step");
         if k % 10 == 0 {
-            top_speed = top_speed.max(s.world().soft_max_speed(0));
-            for (_, b) in s.world().soft_pieces(0) {
+            top_speed = top_speed.max(s.world().soft_max_speed(SoftId::new(0)));
+            for (_, b) in s.world().soft_pieces(SoftId::new(0)) {
                 lowest = lowest.min(b.particle_positions().map(|p| p.z).fold(f32::MAX, f32::min));
             }
         }
@@ -236,7 +240,7 @@ fn cloth_under_a_flat_hand_stays_finite_for_ten_thousand_steps() {
     assert_eq!(s.world().stats().nan_count, 0);
     assert!(top_speed < 2.0, "particles reached {top_speed} m/s under a hand moving at 0.03 m/s");
     assert!(lowest > -0.005, "the cloth went through the table: z = {lowest}");
-    assert_eq!(s.world().soft_piece_masses(0).len(), 1);
+    assert_eq!(s.world().soft_piece_masses(SoftId::new(0)).len(), 1);
     let fell = s.world().physics().bodies.iter().any(|(_, b)| b.is_dynamic() && b.translation().z < -0.01);
     assert!(!fell, "a body fell through the table");
 }
@@ -250,13 +254,13 @@ fn a_squished_soft_block_keeps_its_volume() {
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy] {
         let mut s = session(&scene, kind);
         let rest_z = centre_z(&s);
-        let (_, rest) = s.world().soft_volume(0);
+        let (_, rest) = s.world().soft_volume(SoftId::new(0));
         let (mut min_ratio, mut max_ratio, mut lowest) = (f32::MAX, 0.0f32, f32::MAX);
         while s.time() < g.duration() {
             let hands = g.sample(s.time());
             s.step(&hands).expect("step");
             if s.time() > 0.5 {
-                let (v, _) = s.world().soft_volume(0);
+                let (v, _) = s.world().soft_volume(SoftId::new(0));
                 min_ratio = min_ratio.min(v / rest);
                 max_ratio = max_ratio.max(v / rest);
                 lowest = lowest.min(centre_z(&s));
@@ -275,7 +279,7 @@ fn a_squished_soft_block_keeps_its_volume() {
 }
 
 fn centre_z(s: &Session) -> f32 {
-    s.world().soft_center(0).expect("block").z
+    s.world().soft_center(SoftId::new(0)).expect("block").z
 }
 
 /// Two forearms sweeping together gather the forty pieces: Particle gets at
@@ -289,9 +293,8 @@ fn a_two_arm_sweep_gathers_the_pieces() {
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy, TechniqueKind::Joint] {
         let s = replay(&scene, kind, &g, 1.0);
         let w = s.world();
-        let inside = (0..w.object_count())
-            .filter(|&i| (w.object_pose(i).position.truncate() - center).length() <= radius)
-            .count();
+        let inside =
+            w.object_ids().filter(|&id| (w.object_pose(id).position.truncate() - center).length() <= radius).count();
         println!(
             "{kind}: {inside} of {} pieces inside the circle; goal complete: {}",
             w.object_count(),
@@ -319,13 +322,13 @@ fn a_flat_hand_stops_a_rolling_ball() {
         while s.time() < 0.4 {
             s.step(&[]).expect("step");
         }
-        let landed = s.world().object_pose(0).position;
+        let landed = s.world().object_pose(ObjectId::new(0)).position;
         let screen = s.world().screen_point(landed + Vec3::Z * r);
         let hand = Hand::new(1, HandKind::FlatHand, screen.x, screen.y - 0.01);
         while s.time() < 2.0 {
             s.step(&[hand]).expect("step");
         }
-        let end = s.world().object_pose(0);
+        let end = s.world().object_pose(ObjectId::new(0));
         let travel = (end.position - landed).truncate().length();
         println!(
             "{kind}: ball at {:.3} m/s met the hand at x = {:.3}; it travelled {travel:.3} m more, now at {:.3} m/s",
@@ -352,14 +355,14 @@ fn a_fingertip_sweeping_over_a_ball_never_launches_it_backwards() {
     let g = gesture("ball_stop");
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy] {
         let mut s = session(&scene, kind);
-        let start = s.world().object_pose(0).position.x;
+        let start = s.world().object_pose(ObjectId::new(0)).position.x;
         let mut slowest = 0.0f32;
         while s.time() < 0.9 {
             let hands = g.sample(s.time());
             s.step(&hands).expect("step");
-            slowest = slowest.min(s.world().object_pose(0).linvel.x);
+            slowest = slowest.min(s.world().object_pose(ObjectId::new(0)).linvel.x);
         }
-        let moved = s.world().object_pose(0).position.x - start;
+        let moved = s.world().object_pose(ObjectId::new(0)).position.x - start;
         println!("{kind}: the sweep moved the ball {moved:+.3} m along x; lowest x velocity {slowest:+.2} m/s");
         assert!(slowest > -0.15, "{kind}: the ball was launched backwards at {slowest} m/s");
         assert!(moved > -0.01, "{kind}: the ball went {moved} m the wrong way");
@@ -373,7 +376,7 @@ fn a_fingertip_sweeping_over_a_ball_never_launches_it_backwards() {
 fn a_card_pressed_on_one_side_tilts() {
     let scene = task("cards");
     let g = gesture("card_tilt");
-    let white = scene.object_index("card_white").expect("card");
+    let white = scene.object_id("card_white").expect("card");
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy, TechniqueKind::Joint] {
         let mut s = session(&scene, kind);
         let mut tilt = 0.0f32;
@@ -404,8 +407,8 @@ fn a_ruler_pushes_the_blocks_into_line() {
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy, TechniqueKind::Joint] {
         let s = replay(&scene, kind, &g, 1.0);
         let w = s.world();
-        let ys: Vec<f32> = (0..w.object_count()).map(|i| w.object_pose(i).position.y).collect();
-        let lined = (0..w.object_count()).filter(|&i| zones[0].contains(w.object_pose(i).position.truncate())).count();
+        let ys: Vec<f32> = w.object_ids().map(|id| w.object_pose(id).position.y).collect();
+        let lined = w.object_ids().filter(|&id| zones[0].contains(w.object_pose(id).position.truncate())).count();
         let spread = ys.iter().copied().fold(f32::MIN, f32::max) - ys.iter().copied().fold(f32::MAX, f32::min);
         println!(
             "{kind}: {lined} of {} blocks in the strip, y spread {spread:.3} m, goal complete: {}",
@@ -426,14 +429,17 @@ fn tearing_is_deterministic() {
     let g = gesture("tear_two_hands");
     let run = || {
         let s = replay(&scene, TechniqueKind::Proxy, &g, 0.0);
-        assert!(s.world().soft_piece_masses(0).len() >= 2);
+        assert!(s.world().soft_piece_masses(SoftId::new(0)).len() >= 2);
         s.world().state_bits()
     };
     assert_eq!(run(), run());
 }
 
 fn highest_particle(s: &Session) -> f32 {
-    s.world().soft_pieces(0).flat_map(|(_, b)| b.particle_positions().map(|p| p.z)).fold(f32::MIN, f32::max)
+    s.world()
+        .soft_pieces(SoftId::new(0))
+        .flat_map(|(_, b)| b.particle_positions().map(|p| p.z))
+        .fold(f32::MIN, f32::max)
 }
 
 /// The task's cloth starts rumpled and stays so (its creases are its rest
@@ -450,7 +456,7 @@ fn a_crumpled_cloth_stands_until_flat_hands_smooth_it_out() {
     while s.time() < 2.0 {
         s.step(&[]).expect("step");
     }
-    let (start, ridge) = (s.world().soft_coverage(0), highest_particle(&s));
+    let (start, ridge) = (s.world().soft_coverage(SoftId::new(0)), highest_particle(&s));
     println!("crumpled cloth at rest: covers {start:.3} of its area, ridges {ridge:.3} m high");
     assert!((0.5..0.75).contains(&start), "the rumpled cloth covers {start}");
     assert!(ridge > 0.02, "the wrinkles fell flat: highest particle at {ridge} m");
@@ -458,7 +464,7 @@ fn a_crumpled_cloth_stands_until_flat_hands_smooth_it_out() {
     let g = gesture("flatten");
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy, TechniqueKind::Joint, TechniqueKind::Direct] {
         let s = replay(&scene, kind, &g, 1.0);
-        let covered = s.world().soft_coverage(0);
+        let covered = s.world().soft_coverage(SoftId::new(0));
         println!(
             "{kind}: flatten -> covers {covered:.3} of its area, ridges {:.3} m; goal complete: {}",
             highest_particle(&s),
@@ -485,7 +491,7 @@ fn fingertips_closing_on_a_flat_cloth_crumple_it() {
     let g = gesture("crumple");
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy, TechniqueKind::Joint, TechniqueKind::Direct] {
         let s = replay(&scene, kind, &g, 1.0);
-        let covered = s.world().soft_coverage(0);
+        let covered = s.world().soft_coverage(SoftId::new(0));
         println!("{kind}: crumple -> the cloth covers {covered:.3} of its area a second after the hand lifted");
         if matches!(kind, TechniqueKind::Proxy | TechniqueKind::Joint) {
             assert!(covered < 0.96, "{kind}: the grasp left the cloth flat ({covered:.3})");
@@ -501,10 +507,10 @@ fn direct_force_drags_a_sheet_under_a_fast_hand() {
     let scene = task("tear");
     let g = flat_hand_drag(0.0, 0.2, 0.5);
     let s = replay(&scene, TechniqueKind::Direct, &g, 0.5);
-    let moved = s.world().soft_center(0).expect("sheet").x;
+    let moved = s.world().soft_center(SoftId::new(0)).expect("sheet").x;
     println!("direct: a hand sliding 0.2 m at 0.4 m/s dragged the paper {moved:.3} m");
     assert!(moved > 0.02, "direct force moved the sheet only {moved:.3} m");
-    assert_eq!(s.world().soft_piece_masses(0).len(), 1, "direct force tore the sheet");
+    assert_eq!(s.world().soft_piece_masses(SoftId::new(0)).len(), 1, "direct force tore the sheet");
 }
 
 /// The slot's goal counts the jelly inside the slot, not perched on its
@@ -527,7 +533,7 @@ fn a_block_perched_on_the_slot_walls_is_not_in_the_slot() {
         while s.time() < 2.0 {
             s.step(&[]).expect("step");
         }
-        let c = s.world().soft_center(0).expect("jelly");
+        let c = s.world().soft_center(SoftId::new(0)).expect("jelly");
         println!("jelly perched on the slot walls ({label}): centre {c:.3}, goal complete: {}", s.progress().complete);
         assert!(c.z > 0.07, "the jelly fell into the slot by itself: {c}");
         assert_eq!(s.progress().complete, want, "{label}");
@@ -545,16 +551,16 @@ fn a_joint_squeezes_the_jelly_into_the_slot() {
     let g = gesture("squeeze_into_slot");
     for kind in [TechniqueKind::Joint, TechniqueKind::Particle, TechniqueKind::Proxy] {
         let mut s = session(&scene, kind);
-        let (_, rest) = s.world().soft_volume(0);
+        let (_, rest) = s.world().soft_volume(SoftId::new(0));
         let (mut lo, mut hi) = (f32::MAX, 0.0f32);
         while s.time() < g.duration() + 2.0 {
             let hands = g.sample(s.time());
             s.step(&hands).expect("step");
-            let (v, _) = s.world().soft_volume(0);
+            let (v, _) = s.world().soft_volume(SoftId::new(0));
             lo = lo.min(v / rest);
             hi = hi.max(v / rest);
         }
-        let c = s.world().soft_center(0).expect("jelly");
+        let c = s.world().soft_center(SoftId::new(0)).expect("jelly");
         println!(
             "{kind}: jelly at ({:.3}, {:.3}, {:.3}), volume {lo:.3}..{hi:.3} of rest, goal complete: {}",
             c.x,

@@ -154,9 +154,9 @@ fn a_stack_of_five_boxes_under_a_pressing_flat_hand() {
         let case = Case::new("tasks/cases/stack5.toml", kind, 2.0);
         let s = run(&case, STEPS, |_, _| vec![Hand::new(1, HandKind::FlatHand, 0.0, 0.0).with_pressure(1.0)]);
         // Still a stack: every box within 2 cm of the axis.
-        for i in 0..5 {
-            let p = s.world().object_pose(i).position;
-            assert!(p.truncate().length() < 0.02, "{kind}: box {i} slid off the stack to {p}");
+        for id in s.world().object_ids() {
+            let p = s.world().object_pose(id).position;
+            assert!(p.truncate().length() < 0.02, "{kind}: box {id:?} slid off the stack to {p}");
         }
     }
 }
@@ -174,12 +174,12 @@ fn a_ball_flicked_at_40_m_per_s_at_a_thin_wall_does_not_tunnel() {
             s.world_mut().push_object(ObjectId::new(0)).expect("the ball").set_linvel(Vec3::new(40.0, 0.0, 0.0));
         },
         &mut |_, s: &Session| {
-            let x = s.world().object_pose(0).position.x;
+            let x = s.world().object_pose(ObjectId::new(0)).position.x;
             assert!(x <= wall_face, "the ball passed into the wall: x = {x}");
             Vec::new()
         },
     );
-    assert!(s.world_mut().object_pose(0).position.x < 0.2);
+    assert!(s.world_mut().object_pose(ObjectId::new(0)).position.x < 0.2);
 }
 
 #[test]
@@ -198,7 +198,7 @@ fn a_100_to_1_mass_ratio_stack_pushed_on_top() {
             let top = s.world().screen_point(Vec3::new(0.0, 0.0, 0.07));
             if k < 180 { vec![tip(1, top + lerp(Vec2::ZERO, Vec2::new(0.03, 0.02), k, 180))] } else { Vec::new() }
         });
-        let light = s.world().object_pose(0).position;
+        let light = s.world().object_pose(ObjectId::new(0)).position;
         assert!(light.z > 0.05, "{kind}: the light box fell off or sank: {light}");
     }
 }
@@ -252,7 +252,7 @@ fn the_steering_cylinder_pinned_between_two_hands() {
                 Hand::new(2, HandKind::Edge, c.x + gap, c.y).with_pressure(1.0),
             ]
         });
-        assert!(s.world().object_pose(1).position.is_finite());
+        assert!(s.world().object_pose(ObjectId::new(1)).position.is_finite());
     }
 }
 
@@ -264,14 +264,14 @@ fn a_thin_card_pressed_on_one_side_tilts_and_stays_calm() {
         let s = run(&case, STEPS, |k, s| {
             if k == 60 {
                 // By now the pressed end is down and the other end up.
-                let q = s.world().object_pose(0).rotation;
+                let q = s.world().object_pose(ObjectId::new(0)).rotation;
                 let tilt = (q * Vec3::X).z.abs();
                 tilted = tilt > 0.05;
             }
             vec![tip(1, Vec2::new(0.05, 0.0))]
         });
-        let q = s.world().object_pose(0).rotation;
-        let end = s.world().object_pose(0).position + q * Vec3::new(-0.06, 0.0, 0.0);
+        let q = s.world().object_pose(ObjectId::new(0)).rotation;
+        let end = s.world().object_pose(ObjectId::new(0)).position + q * Vec3::new(-0.06, 0.0, 0.0);
         assert!(tilted, "{kind}: the card did not tilt");
         assert!(end.z > 0.025, "{kind}: the far end should stay raised, at z = {}", end.z);
     }

@@ -6,6 +6,7 @@ use glam::{Quat, Vec3};
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::{TechniqueConfig, TechniqueKind};
 use surfacelab::scene;
+use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
 
 fn asset(path: &str) -> String {
@@ -35,7 +36,7 @@ fn fingertip_drag_moves_the_box_about_ten_cm() {
     let g = Gesture::load(asset("assets/gestures/fingertip_drag.toml")).expect("gesture");
     for kind in [TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle] {
         let s = replay("tasks/cases/one_box.toml", kind, &g, 1.0);
-        let p = s.world().object_pose(0).position;
+        let p = s.world().object_pose(ObjectId::new(0)).position;
         // The finger moves 10 cm; springs lag and particles slip a little.
         assert!((0.08..=0.11).contains(&p.x), "{kind}: box moved {:.3} m in x", p.x);
         assert!(p.y.abs() < 0.01, "{kind}: box drifted {:.3} m in y", p.y);
@@ -65,7 +66,7 @@ fn hand_edge_sweep_moves_three_boxes_together() {
     let g = Gesture::from_str(EDGE_SWEEP, "edge_sweep").expect("gesture");
     for kind in [TechniqueKind::Particle, TechniqueKind::Proxy, TechniqueKind::Joint] {
         let s = replay("tasks/cases/three_boxes.toml", kind, &g, 0.5);
-        let xs: Vec<f32> = (0..3).map(|i| s.world().object_pose(i).position.x).collect();
+        let xs: Vec<f32> = (0..3).map(|i| s.world().object_pose(ObjectId::new(i)).position.x).collect();
         if kind == TechniqueKind::Proxy {
             // The paper's known weakness: one proxy at the blob centre. The
             // edge's centre passes the middle box only: it is pushed (and,
@@ -94,7 +95,7 @@ fn two_finger_twist_rotates_a_box() {
     for (kind, min_deg) in [(TechniqueKind::Proxy, 45.0), (TechniqueKind::Particle, 10.0), (TechniqueKind::Joint, 45.0)]
     {
         let s = replay("tasks/cases/small_box.toml", kind, &g, 0.5);
-        let pose = s.world().object_pose(0);
+        let pose = s.world().object_pose(ObjectId::new(0));
         let yaw = yaw_deg(pose.rotation);
         assert!(yaw > min_deg && yaw < 100.0, "{kind}: yaw {yaw:.1}°");
         assert!(
@@ -143,7 +144,7 @@ fn two_joints_pulling_apart_stay_finite_and_slow() {
     let st = s.world().stats();
     assert_eq!(st.nan_count, 0);
     assert!(st.max_speed_seen < 3.0, "max speed {} m/s", st.max_speed_seen);
-    let p = s.world().object_pose(0).position;
+    let p = s.world().object_pose(ObjectId::new(0)).position;
     assert!(p.is_finite() && p.truncate().length() < 0.3, "box stays between the hands: {p}");
     assert!(s.world().stats().max_penetration_seen < 0.01);
 }
@@ -183,19 +184,20 @@ fn a_thrown_ball_keeps_the_hands_release_velocity() {
     let mut s = Session::new(&sc, TechniqueKind::Joint, SessionOptions::default()).expect("session");
     s.replay_until(&g, g.duration()).expect("replay");
     let held = s.feedback().lines.first().expect("the joint holds the ball").1;
-    let local = s.world().physics().bodies[s.world().object_body(0)].position().inverse_transform_point(held);
+    let local =
+        s.world().physics().bodies[s.world().object_body(ObjectId::new(0))].position().inverse_transform_point(held);
     // One frame after the lift, what does the held point carry?
     s.step(&[]).expect("step");
-    let body = &s.world().physics().bodies[s.world().object_body(0)];
+    let body = &s.world().physics().bodies[s.world().object_body(ObjectId::new(0))];
     let v = body.velocity_at_point(body.position().transform_point(local));
     let hand = 0.4 * (1.0 - 0.06 / 1.2);
     assert!((v.x - hand).abs() <= 0.2 * hand, "release velocity {v} vs hand {hand} m/s");
     assert!(v.y.abs() < 0.05);
     // And no slingshot afterwards: the ball only slows down.
-    let mut prev = s.world().object_pose(0).linvel.truncate().length();
+    let mut prev = s.world().object_pose(ObjectId::new(0)).linvel.truncate().length();
     for _ in 0..30 {
         s.step(&[]).expect("step");
-        let now = s.world().object_pose(0).linvel.truncate().length();
+        let now = s.world().object_pose(ObjectId::new(0)).linvel.truncate().length();
         assert!(now <= prev + 1e-3, "ball sped up after release: {prev} -> {now}");
         prev = now;
     }
@@ -217,7 +219,7 @@ fn pooled_and_per_frame_particles_give_the_same_trajectory() {
         while s.time() < g.duration() + 0.5 {
             let hands = g.sample(s.time());
             s.step(&hands).expect("step");
-            track.push(s.world().object_pose(0).position);
+            track.push(s.world().object_pose(ObjectId::new(0)).position);
         }
         track
     };
@@ -263,7 +265,7 @@ fn culled_particles_change_nothing_the_objects_feel() {
             while s.time() < g.duration() + 0.5 {
                 let hands = g.sample(s.time());
                 s.step(&hands).expect("step");
-                track.push(s.world().object_pose(0).position);
+                track.push(s.world().object_pose(ObjectId::new(0)).position);
                 simulated += s.counts().bodies;
                 sensed += s.frame().edges.len();
             }

@@ -43,8 +43,8 @@ fn objects_rest_on_the_table_without_drifting() {
     for _ in 0..180 {
         w.step();
     }
-    for (i, o) in s.objects.iter().enumerate() {
-        let p = w.object_pose(i).position;
+    for (id, o) in s.object_ids().zip(&s.objects) {
+        let p = w.object_pose(id).position;
         assert!((p - o.position).length() < 0.005, "{} moved from {} to {p}", o.name, o.position);
     }
     assert_eq!(w.stats().nan_count, 0);
@@ -56,9 +56,9 @@ fn contact_ray_hits_the_object_under_the_point() {
     let s = scene::load("positioning").expect("scene");
     let mut w = World::new(&s);
     w.step();
-    for (i, o) in s.objects.iter().enumerate() {
+    for (id, o) in s.object_ids().zip(&s.objects) {
         let hit = w.cast_contact_ray(o.position.truncate()).expect("hits something");
-        assert_eq!(hit.object, Some(i), "ray at {} should hit {}", o.position, o.name);
+        assert_eq!(hit.object, Some(id), "ray at {} should hit {}", o.position, o.name);
         let top = o.position.z + o.shape.half_z();
         assert!((hit.point.z - top).abs() < 0.01, "{}: hit z {} vs top {top}", o.name, hit.point.z);
         assert!(hit.normal.z > 0.5, "the top faces up");
@@ -96,8 +96,7 @@ fn sleeping_happens_only_when_declared() {
         on.step();
         off.step();
     }
-    let asleep =
-        |w: &World| (0..w.object_count()).filter(|&i| w.physics().bodies[w.object_body(i)].is_sleeping()).count();
+    let asleep = |w: &World| w.object_ids().filter(|&id| w.physics().bodies[w.object_body(id)].is_sleeping()).count();
     assert_eq!(asleep(&on), s.objects.len(), "resting objects sleep when declared");
     assert_eq!(asleep(&off), 0, "and never when not");
 }
@@ -126,8 +125,8 @@ fn touching_where_an_object_appears_hits_its_top() {
     // ray is oblique: a touch where its cap *appears* lands on the cap.
     let s = scene::load("steering").expect("scene");
     let w = World::new(&s);
-    let cyl = s.object_index("cylinder").expect("cylinder");
-    let c = s.objects[cyl].position;
+    let cyl = s.object_id("cylinder").expect("cylinder");
+    let c = s.object(cyl).position;
     let top = c.z + 0.025;
     for (dx, dy) in [(0.0, 0.0), (-0.01, 0.0), (0.0, 0.015), (0.012, -0.012)] {
         // Where the user sees that point of the cap, they touch.

@@ -353,6 +353,7 @@ impl Lab {
 mod tests {
     use super::*;
     use crate::input::{Button, Gesture, Modifiers, MouseEvent, SourceEvent};
+    use crate::scene::ObjectId;
 
     /// A mouse path as a window delivers it: `(wall second, event)`.
     type Events = Vec<(f64, SourceEvent)>;
@@ -430,13 +431,12 @@ mod tests {
         lab.stop_recording();
         assert!(lab.status().is_some_and(|s| s.contains("saved")), "{:?}", lab.status());
         let replayed = replay(&lab, &path);
-        let n = lab.scene().objects.len();
         let mut moved = 0.0_f32;
-        for i in 0..n {
-            let (live, again) = (lab.session.world().object_pose(i), replayed.world().object_pose(i));
-            assert_eq!(live.position, again.position, "object {i}");
-            assert_eq!(live.rotation, again.rotation, "object {i}");
-            moved = moved.max((live.position - lab.scene().objects[i].position).truncate().length());
+        for id in lab.scene().object_ids() {
+            let (live, again) = (lab.session.world().object_pose(id), replayed.world().object_pose(id));
+            assert_eq!(live.position, again.position, "object {id:?}");
+            assert_eq!(live.rotation, again.rotation, "object {id:?}");
+            moved = moved.max((live.position - lab.scene().object(id).position).truncate().length());
         }
         assert!(moved > 0.05, "the sweeps moved something: {moved} m at most");
         let _ = std::fs::remove_dir_all(dir);
@@ -453,7 +453,7 @@ mod tests {
                 let mut events = Events::new();
                 drag(&mut events, 0.3, [-0.05, 0.0], [0.22, 0.0], 1.5);
                 play(&mut lab, &events, fps, 3.0);
-                lab.session.world().object_pose(0).position.x
+                lab.session.world().object_pose(ObjectId::new(0)).position.x
             };
             let (slow, fast) = (moved(8.0), moved(60.0));
             eprintln!("{technique}: the box moved {slow:.4} m at 8 fps, {fast:.4} m at 60 fps");

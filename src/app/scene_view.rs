@@ -41,11 +41,12 @@ pub fn object_draw(shape: Shape, pose: Mat4, color: Rgba) -> ObjectDraw {
 pub fn draw_list(session: &Session, options: ViewOptions) -> DrawList {
     let scene = session.scene();
     let world = session.world();
-    let objects = (0..scene.objects.len())
-        .filter(|&i| world.is_active(i))
-        .map(|i| {
-            let p = world.object_pose(i);
-            let o = &scene.objects[i];
+    let objects = scene
+        .object_ids()
+        .filter(|&id| world.is_active(id))
+        .map(|id| {
+            let p = world.object_pose(id);
+            let o = scene.object(id);
             object_draw(o.shape, Mat4::from_rotation_translation(p.rotation, p.position), o.color.rgba)
         })
         .collect();
@@ -97,9 +98,9 @@ pub fn fitted_draw_list(session: &Session, options: ViewOptions, size: [u32; 2])
     let aspect = size[0].max(1) as f32 / size[1].max(1) as f32;
     // Half extents [x, y] on the table plane's projection that must show.
     let mut need = [0.5 * scene.table.width, 0.5 * scene.table.depth];
-    for i in (0..scene.objects.len()).filter(|&i| world.is_active(i)) {
-        let half = local_half_extents(scene.objects[i].shape);
-        let pose = world.object_pose(i);
+    for id in scene.object_ids().filter(|&id| world.is_active(id)) {
+        let half = local_half_extents(scene.object(id).shape);
+        let pose = world.object_pose(id);
         // The corners of the object's own bounding box, where it is now.
         for k in 0..8 {
             let sign = |bit: usize| if k & bit == 0 { -1.0 } else { 1.0 };
@@ -134,7 +135,7 @@ fn deformables(session: &Session) -> Vec<DeformableDraw> {
         .into_iter()
         .filter(|s| !s.triangles.is_empty() && s.positions.iter().all(|p| p.is_finite()))
         .map(|s| {
-            let color = if s.body < world.soft_body_count() {
+            let color = if s.body.index() < world.soft_body_count() {
                 world.soft_spec(s.body).color.rgba
             } else {
                 [0.8, 0.8, 0.8, 1.0]
@@ -157,7 +158,7 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
             // Each target is the outline of its object, in its colour, so
             // the matching is visible; a placed object's target fades.
             for t in targets {
-                let o = &scene.objects[t.object];
+                let o = scene.object(t.object);
                 let mut c = o.color.rgba;
                 if tracker.is_placed(t.object) {
                     c[3] = 0.25;
@@ -211,7 +212,7 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
         }
         Goal::Steering(g) => {
             let top = g.platform.map_or(0.0, |p| {
-                let po = &scene.objects[p];
+                let po = scene.object(p);
                 po.position.z + po.shape.half_z()
             }) + lift;
             let passed = session.progress().waypoints_passed;

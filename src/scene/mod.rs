@@ -11,12 +11,14 @@ mod effects;
 mod error;
 pub mod fields;
 mod file;
+mod id;
 mod model;
 mod validate;
 
 pub use effects::{Effect, EffectSet};
 pub use error::SceneError;
 pub use fields::{FieldError, FieldReader};
+pub use id::{ObjectId, SoftId};
 pub use model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
     SteeringGoal, Table, Target,

@@ -1,6 +1,7 @@
 //! The validated scene: plain values every other module reads.
 
 use super::effects::{Effect, EffectSet};
+use super::{ObjectId, SoftId};
 use glam::{Quat, Vec2, Vec3};
 
 /// A validated scene. Units are metres, kilograms and seconds; z is up and the
@@ -28,9 +29,19 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// Index of the object with this name.
-    pub fn object_index(&self, name: &str) -> Option<usize> {
-        self.objects.iter().position(|o| o.name == name)
+    /// The object with this name.
+    pub fn object_id(&self, name: &str) -> Option<ObjectId> {
+        self.objects.iter().position(|o| o.name == name).map(ObjectId::new)
+    }
+
+    /// Every declared object, in declaration order.
+    pub fn object_ids(&self) -> impl Iterator<Item = ObjectId> + use<> {
+        (0..self.objects.len()).map(ObjectId::new)
+    }
+
+    /// The declared object `id`.
+    pub fn object(&self, id: ObjectId) -> &ObjectSpec {
+        &self.objects[id.index()]
     }
 
     /// True when the table-plane point lies on the table.
@@ -270,8 +281,7 @@ impl SoftBodySpec {
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Target {
-    /// Index into [`Scene::objects`].
-    pub object: usize,
+    pub object: ObjectId,
     pub position: Vec2,
     pub tolerance: f32,
 }
@@ -292,9 +302,9 @@ impl SortingZone {
 
 #[derive(Debug, Clone, PartialEq)]
 pub struct SteeringGoal {
-    pub object: usize,
-    /// The raised platform the object must stay on (an object index).
-    pub platform: Option<usize>,
+    pub object: ObjectId,
+    /// The raised platform the object must stay on.
+    pub platform: Option<ObjectId>,
     pub waypoints: Vec<Vec2>,
     pub waypoint_radius: f32,
     pub finish: Vec2,
@@ -316,14 +326,14 @@ pub enum Goal {
     Gather { center: Vec2, radius: f32, fraction: f32, dwell_s: f32 },
     /// The named object rests inside the rectangle (its centre no higher
     /// than `max_height` above the table).
-    Region { object: usize, min: Vec2, max: Vec2, max_height: f32, dwell_s: f32 },
+    Region { object: ObjectId, min: Vec2, max: Vec2, max_height: f32, dwell_s: f32 },
     /// The named soft body's centre of mass rests inside the rectangle, no
     /// higher than `max_height` (`kind = "region"` naming a soft body).
-    SoftRegion { body: usize, min: Vec2, max: Vec2, max_height: f32, dwell_s: f32 },
+    SoftRegion { body: SoftId, min: Vec2, max: Vec2, max_height: f32, dwell_s: f32 },
     /// The named cloth, at rest, covers at least `min_area_fraction` of its
     /// rest area on the table (crumpled cloth smoothed out).
-    ClothFlat { body: usize, min_area_fraction: f32, dwell_s: f32 },
+    ClothFlat { body: SoftId, min_area_fraction: f32, dwell_s: f32 },
     /// The named soft body has come apart into at least `pieces` pieces,
     /// each holding at least `min_piece_fraction` of its mass.
-    Torn { body: usize, pieces: usize, min_piece_fraction: f32 },
+    Torn { body: SoftId, pieces: usize, min_piece_fraction: f32 },
 }

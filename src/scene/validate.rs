@@ -7,6 +7,7 @@ use super::effects::EffectSet;
 use super::error::SceneError;
 use super::fields::FieldReader;
 use super::file::{BodyKindFile, GoalFile, GoalKind, ObjectFile, SceneFile, ShapeKind, SoftBodyFile, SoftKindFile};
+use super::id::{ObjectId, SoftId};
 use super::model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
     SteeringGoal, Table, Target,
@@ -595,11 +596,12 @@ impl Checker<'_> {
         let span = g.span();
         let g = g.into_inner();
         let dwell_s = self.num(&span, "goal.dwell_s", g.dwell_s.unwrap_or(default::DWELL_S), 0.0, 60.0)?;
-        let object_named = |name: &Option<String>, field: &str| -> Result<usize, SceneError> {
+        let object_named = |name: &Option<String>, field: &str| -> Result<ObjectId, SceneError> {
             let n = name.as_ref().ok_or_else(|| self.err(&span, field, format!("this goal needs `{field}`")))?;
             objects
                 .iter()
                 .position(|o| &o.name == n)
+                .map(ObjectId::new)
                 .ok_or_else(|| self.err(&span, field, format!("no object named `{n}`")))
         };
         let on_table = |p: [f32; 2], sp: &Range<usize>, field: &str| -> Result<Vec2, SceneError> {
@@ -636,9 +638,14 @@ impl Checker<'_> {
                 for (i, t) in g.targets.into_iter().enumerate() {
                     let tspan = t.span();
                     let t = t.into_inner();
-                    let object = objects.iter().position(|o| o.name == t.object).ok_or_else(|| {
-                        self.err(&tspan, format!("goal.targets[{i}].object"), format!("no object named `{}`", t.object))
-                    })?;
+                    let object =
+                        objects.iter().position(|o| o.name == t.object).map(ObjectId::new).ok_or_else(|| {
+                            self.err(
+                                &tspan,
+                                format!("goal.targets[{i}].object"),
+                                format!("no object named `{}`", t.object),
+                            )
+                        })?;
                     targets.push(Target {
                         object,
                         position: on_table(t.position, &tspan, &format!("goal.targets[{i}].position"))?,
@@ -737,7 +744,9 @@ impl Checker<'_> {
                     None => f32::INFINITY,
                 };
                 // The named thing may be a soft body (a block squeezed into a cavity).
-                if let Some(body) = g.object.as_ref().and_then(|n| soft.iter().position(|b| &b.name == n)) {
+                if let Some(body) =
+                    g.object.as_ref().and_then(|n| soft.iter().position(|b| &b.name == n)).map(SoftId::new)
+                {
                     Goal::SoftRegion { body, min, max, max_height, dwell_s }
                 } else {
                     let object = object_named(&g.object, "goal.object")?;
@@ -752,9 +761,10 @@ impl Checker<'_> {
                 let body = soft
                     .iter()
                     .position(|b| &b.name == name)
+                    .map(SoftId::new)
                     .ok_or_else(|| self.err(&span, "goal.body", format!("no soft body named `{name}`")))?;
                 if g.kind == GoalKind::ClothFlat {
-                    if soft[body].kind != SoftKind::Cloth {
+                    if soft[body.index()].kind != SoftKind::Cloth {
                         return Err(self.err(&span, "goal.body", format!("`{name}` is not a cloth")));
                     }
                     let min_area_fraction = self.num(
@@ -766,7 +776,7 @@ impl Checker<'_> {
                     )?;
                     Goal::ClothFlat { body, min_area_fraction, dwell_s }
                 } else {
-                    if soft[body].tear_strain.is_none() {
+                    if soft[body.index()].tear_strain.is_none() {
                         return Err(self.err(
                             &span,
                             "goal.body",

@@ -108,11 +108,9 @@ impl RunReport {
         let w = session.world();
         let scene = session.scene();
         let objects = scene
-            .objects
-            .iter()
-            .enumerate()
-            .map(|(i, o)| {
-                let p = w.object_pose(i);
+            .object_ids()
+            .map(|id| {
+                let (o, p) = (scene.object(id), w.object_pose(id));
                 ObjectReport {
                     name: o.name.clone(),
                     position: p.position.to_array(),
@@ -122,7 +120,8 @@ impl RunReport {
                 }
             })
             .collect();
-        let soft_bodies = (0..w.soft_body_count())
+        let soft_bodies = w
+            .soft_ids()
             .map(|i| {
                 let spec = w.soft_spec(i);
                 let simulated = w.soft_exists(i);

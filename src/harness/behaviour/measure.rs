@@ -72,7 +72,7 @@ pub fn run_case(case: &Case, kind: TechniqueKind, root: &Path) -> Result<Outcome
     let scene_path = root.join(case.scene);
     let scene = scene::load(&scene_path.to_string_lossy())?;
     let gesture = Gesture::load(root.join(case.gesture))?;
-    let object = scene.object_index(case.object).ok_or_else(|| BehaviourError::NoObject {
+    let object = scene.object_id(case.object).ok_or_else(|| BehaviourError::NoObject {
         case: case.name.to_string(),
         scene: case.scene.to_string(),
         object: case.object.to_string(),
@@ -153,13 +153,12 @@ pub fn run_case(case: &Case, kind: TechniqueKind, root: &Path) -> Result<Outcome
 /// Share of the dynamic scene objects whose centre lies within
 /// [`GATHER_RADIUS`] of the table centre.
 fn gathered(s: &Session, scene: &crate::scene::Scene) -> f32 {
-    let dynamic: Vec<usize> =
-        scene.objects.iter().enumerate().filter(|(_, o)| o.body == BodyKind::Dynamic).map(|(i, _)| i).collect();
+    let dynamic: Vec<_> = scene.object_ids().filter(|&id| scene.object(id).body == BodyKind::Dynamic).collect();
     if dynamic.is_empty() {
         return f32::NAN;
     }
     let inside =
-        dynamic.iter().filter(|&&i| s.world().object_pose(i).position.truncate().length() <= GATHER_RADIUS).count();
+        dynamic.iter().filter(|&&id| s.world().object_pose(id).position.truncate().length() <= GATHER_RADIUS).count();
     inside as f32 / dynamic.len() as f32
 }
 

@@ -2,7 +2,7 @@
 //! (never from the technique): where an object should go, which zone that
 //! is, how much work is left, and which objects share a destination.
 
-use crate::scene::{Goal, Scene};
+use crate::scene::{Goal, ObjectId, Scene};
 use crate::session::goal::GoalTracker;
 use glam::Vec2;
 
@@ -17,19 +17,19 @@ pub struct Want {
     pub region: u64,
 }
 
-/// Where the goal wants object `i` now, if anywhere.
-pub fn want(scene: &Scene, tracker: &GoalTracker, i: usize, observed: &[Vec2]) -> Option<Want> {
+/// Where the goal wants object `id` now, if anywhere.
+pub fn want(scene: &Scene, tracker: &GoalTracker, id: ObjectId, observed: &[Vec2]) -> Option<Want> {
     let point_region = |p: Vec2| (u64::from(p.x.to_bits()) << 32) | u64::from(p.y.to_bits());
     match &scene.goal {
         // Soft-body goals concern no rigid object.
         Goal::None | Goal::SoftRegion { .. } | Goal::ClothFlat { .. } | Goal::Torn { .. } => None,
         Goal::Positioning { targets, .. } => targets
             .iter()
-            .find(|t| t.object == i && !tracker.is_placed(i))
+            .find(|t| t.object == id && !tracker.is_placed(id))
             .map(|t| Want { point: t.position, region: point_region(t.position) }),
         Goal::Sorting { zones, .. } => {
-            let o = &scene.objects[i];
-            let p = *observed.get(i)?;
+            let o = scene.object(id);
+            let p = *observed.get(id.index())?;
             let mine = || zones.iter().enumerate().filter(|(_, z)| z.color == o.color);
             if mine().any(|(_, z)| {
                 z.contains(p) && inset(z.min, z.max, 0.03).is_some_and(|(a, b)| p.cmpge(a).all() && p.cmple(b).all())
@@ -42,15 +42,17 @@ pub fn want(scene: &Scene, tracker: &GoalTracker, i: usize, observed: &[Vec2]) -
                 .min_by(|a, b| (a.1 - p).length().total_cmp(&(b.1 - p).length()))
                 .map(|(k, point)| Want { point, region: k as u64 })
         }
-        Goal::Steering(g) => (g.object == i)
+        Goal::Steering(g) => (g.object == id)
             .then(|| tracker.next_waypoint())
             .flatten()
             .map(|p| Want { point: p, region: point_region(p) }),
         Goal::Gather { center, radius, .. } => {
-            let p = *observed.get(i)?;
+            let p = *observed.get(id.index())?;
             ((p - *center).length() > radius * 0.7).then_some(Want { point: *center, region: 0 })
         }
-        Goal::Region { object, min, max, .. } => (*object == i).then(|| Want { point: (*min + *max) * 0.5, region: 0 }),
+        Goal::Region { object, min, max, .. } => {
+            (*object == id).then(|| Want { point: (*min + *max) * 0.5, region: 0 })
+        }
     }
 }
 
@@ -65,12 +67,14 @@ pub fn settle_radius(scene: &Scene) -> f32 {
 }
 
 /// Objects that still need moving, with what the goal wants of each.
-pub fn open_objects(scene: &Scene, tracker: &GoalTracker, active: &[bool], observed: &[Vec2]) -> Vec<(usize, Want)> {
+pub fn open_objects(scene: &Scene, tracker: &GoalTracker, active: &[bool], observed: &[Vec2]) -> Vec<(ObjectId, Want)> {
     let settle = settle_radius(scene);
-    (0..scene.objects.len().min(observed.len()))
-        .filter(|&i| active.get(i).copied().unwrap_or(false))
-        .filter_map(|i| want(scene, tracker, i, observed).map(|w| (i, w)))
-        .filter(|(i, w)| (w.point - observed[*i]).length() >= settle)
+    scene
+        .object_ids()
+        .take(observed.len())
+        .filter(|&id| active.get(id.index()).copied().unwrap_or(false))
+        .filter_map(|id| want(scene, tracker, id, observed).map(|w| (id, w)))
+        .filter(|(i, w)| (w.point - observed[i.index()]).length() >= settle)
         .collect()
 }
 
@@ -81,7 +85,7 @@ pub const CLUSTER_REACH: f32 = 0.12;
 /// The open objects bound for the same region as `seed` and lying within
 /// [`CLUSTER_REACH`] of it or of another member (grown from the seed),
 /// seed first.
-pub fn cluster(open: &[(usize, Want)], observed: &[Vec2], seed: usize) -> Vec<usize> {
+pub fn cluster(open: &[(ObjectId, Want)], observed: &[Vec2], seed: ObjectId) -> Vec<ObjectId> {
     let Some(region) = open.iter().find(|(i, _)| *i == seed).map(|(_, w)| w.region) else {
         return vec![seed];
     };
@@ -92,7 +96,7 @@ pub fn cluster(open: &[(usize, Want)], observed: &[Vec2], seed: usize) -> Vec<us
         for (i, w) in open {
             if w.region == region
                 && !members.contains(i)
-                && members.iter().any(|&m| (observed[m] - observed[*i]).length() <= CLUSTER_REACH)
+                && members.iter().any(|&m| (observed[m.index()] - observed[i.index()]).length() <= CLUSTER_REACH)
             {
                 members.push(*i);
                 grew = true;
@@ -108,6 +112,6 @@ pub fn inset(min: Vec2, max: Vec2, m: f32) -> Option<(Vec2, Vec2)> {
     (a.x <= b.x && a.y <= b.y).then_some((a, b))
 }
 
-pub fn footprint(scene: &Scene, object: usize) -> f32 {
-    scene.objects[object].shape.footprint_radius()
+pub fn footprint(scene: &Scene, object: ObjectId) -> f32 {
+    scene.object(object).shape.footprint_radius()
 }

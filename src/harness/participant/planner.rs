@@ -29,7 +29,7 @@ use super::skill::Skill;
 use super::usage::Usage;
 use crate::pipeline::surface::{Hand, HandKind};
 use crate::pipeline::technique::Feedback;
-use crate::scene::{Goal, Scene};
+use crate::scene::{Goal, ObjectId, Scene};
 use crate::session::Session;
 use glam::Vec2;
 use rand::{Rng, SeedableRng};
@@ -75,10 +75,10 @@ impl Default for PlannerOptions {
 #[derive(Debug, Clone, PartialEq)]
 enum Role {
     /// On top of (or around) one object, dragging it to its goal.
-    Carry { object: usize },
+    Carry { object: ObjectId },
     /// Behind these objects, pushing them towards their common goal;
     /// `lateral` shifts the hand sideways from the group's centre line.
-    Push { objects: Vec<usize>, lateral: f32, standoff: f32 },
+    Push { objects: Vec<ObjectId>, lateral: f32, standoff: f32 },
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -248,7 +248,7 @@ impl Planner {
     fn decide(&mut self, session: &Session, observed: &[Vec2], now: f64) {
         let scene = session.scene();
         let world = session.world();
-        let active: Vec<bool> = (0..scene.objects.len()).map(|i| world.is_active(i)).collect();
+        let active: Vec<bool> = scene.object_ids().map(|id| world.is_active(id)).collect();
         let open = open_objects(scene, session.tracker(), &active, observed);
         let restarts = session.progress().restarts;
         let dropped = restarts > self.restarts;
@@ -322,22 +322,22 @@ impl Planner {
         scene: &Scene,
         session: &Session,
         observed: &[Vec2],
-        open: &[(usize, Want)],
+        open: &[(ObjectId, Want)],
         dropped: bool,
     ) -> f32 {
         let n = scene.objects.len();
         let mut now: Vec<Option<(u64, f32)>> = vec![None; n];
-        for (i, w) in open {
-            now[*i] = Some((w.region, (w.point - observed[*i]).length()));
+        for (id, w) in open {
+            now[id.index()] = Some((w.region, (w.point - observed[id.index()]).length()));
         }
         // Objects near enough to settle are still wanted somewhere: keep
         // their region so that leaving it is not counted twice.
-        for i in 0..n {
-            if now[i].is_none()
-                && session.world().is_active(i)
-                && let Some(w) = want(scene, session.tracker(), i, observed)
+        for id in scene.object_ids() {
+            if now[id.index()].is_none()
+                && session.world().is_active(id)
+                && let Some(w) = want(scene, session.tracker(), id, observed)
             {
-                now[i] = Some((w.region, (w.point - observed[i]).length()));
+                now[id.index()] = Some((w.region, (w.point - observed[id.index()]).length()));
             }
         }
         let mut progress = 0.0;
@@ -354,18 +354,22 @@ impl Planner {
         progress
     }
 
-    fn start_episode(&mut self, session: &Session, observed: &[Vec2], open: &[(usize, Want)], now: f64) {
+    fn start_episode(&mut self, session: &Session, observed: &[Vec2], open: &[(ObjectId, Want)], now: f64) {
         let scene = session.scene();
         // The open object nearest a hand, and that hand.
         let Some((seed, hand)) = open.iter().flat_map(|(i, _)| (0..2).map(move |h| (*i, h))).min_by(|a, b| {
-            (observed[a.0] - self.rest[a.1]).length().total_cmp(&(observed[b.0] - self.rest[b.1]).length())
+            (observed[a.0.index()] - self.rest[a.1])
+                .length()
+                .total_cmp(&(observed[b.0.index()] - self.rest[b.1]).length())
         }) else {
             return;
         };
         let members = cluster(open, observed, seed);
         let other = 1 - hand;
         let second = open.iter().map(|(i, _)| *i).filter(|&i| i != seed).min_by(|&a, &b| {
-            (observed[a] - self.rest[other]).length().total_cmp(&(observed[b] - self.rest[other]).length())
+            (observed[a.index()] - self.rest[other])
+                .length()
+                .total_cmp(&(observed[b.index()] - self.rest[other]).length())
         });
         let situation =
             Situation { cluster: members.len(), footprint: footprint(scene, seed), second_object: second.is_some() };
@@ -406,10 +410,17 @@ impl Planner {
         self.episode = Some(Episode { manner, context, started: now, progress: 0.0, regrips: 0, drops: 0, hands });
     }
 
-    fn carry_hand(&mut self, session: &Session, id: u32, manner: Manner, object: usize, observed: &[Vec2]) -> HandCtl {
+    fn carry_hand(
+        &mut self,
+        session: &Session,
+        id: u32,
+        manner: Manner,
+        object: ObjectId,
+        observed: &[Vec2],
+    ) -> HandCtl {
         let scene = session.scene();
         let o = session.world().object_pose(object).position;
-        let half_z = scene.objects[object].shape.half_z();
+        let half_z = scene.object(object).shape.half_z();
         let r = footprint(scene, object);
         let (z, spread) = match manner {
             // Thumb and index beside the object, on the surface it stands on.
@@ -418,7 +429,7 @@ impl Planner {
         };
         // The middle of the contact goes on the object.
         let centre = contact_centre(manner.hand_kind(), spread);
-        let touch = self.aim(observed[object]) - centre;
+        let touch = self.aim(observed[object.index()]) - centre;
         HandCtl {
             id,
             kind: manner.hand_kind(),
@@ -441,7 +452,7 @@ impl Planner {
         session: &Session,
         id: u32,
         manner: Manner,
-        objects: Vec<usize>,
+        objects: Vec<ObjectId>,
         lateral: f32,
         observed: &[Vec2],
     ) -> HandCtl {
@@ -452,7 +463,7 @@ impl Planner {
         let target = behind(scene, &objects, observed, dir, standoff, lateral);
         let bottom = objects
             .iter()
-            .map(|&i| session.world().object_pose(i).position.z - scene.objects[i].shape.half_z())
+            .map(|&i| session.world().object_pose(i).position.z - scene.object(i).shape.half_z())
             .fold(f32::MAX, f32::min);
         let touch = self.aim(target);
         HandCtl {
@@ -529,22 +540,22 @@ fn push_angle(kind: HandKind, dir: Vec2, lateral: f32) -> f32 {
 }
 
 /// From the objects' centre towards their goals' centre.
-fn direction(scene: &Scene, session: &Session, objects: &[usize], observed: &[Vec2]) -> Vec2 {
+fn direction(scene: &Scene, session: &Session, objects: &[ObjectId], observed: &[Vec2]) -> Vec2 {
     let goals: Vec<Vec2> =
         objects.iter().filter_map(|&i| want(scene, session.tracker(), i, observed).map(|w| w.point)).collect();
     if goals.is_empty() {
         return Vec2::X;
     }
     let g = goals.iter().copied().sum::<Vec2>() / goals.len() as f32;
-    let c = objects.iter().map(|&i| observed[i]).sum::<Vec2>() / objects.len() as f32;
+    let c = objects.iter().map(|&i| observed[i.index()]).sum::<Vec2>() / objects.len() as f32;
     (g - c).normalize_or(Vec2::X)
 }
 
 /// How wide the group is across `dir` (m), object rims included.
-fn spread_across(objects: &[usize], observed: &[Vec2], scene: &Scene, dir: Vec2) -> f32 {
+fn spread_across(objects: &[ObjectId], observed: &[Vec2], scene: &Scene, dir: Vec2) -> f32 {
     let perp = dir.perp();
     let (lo, hi) = objects.iter().fold((f32::MAX, f32::MIN), |(lo, hi), &i| {
-        let s = observed[i].dot(perp);
+        let s = observed[i.index()].dot(perp);
         let r = footprint(scene, i);
         (lo.min(s - r), hi.max(s + r))
     });
@@ -553,10 +564,13 @@ fn spread_across(objects: &[usize], observed: &[Vec2], scene: &Scene, dir: Vec2)
 
 /// Where a pushing hand belongs: behind the rearmost object, on the group's
 /// centre line shifted by `lateral`.
-fn behind(scene: &Scene, objects: &[usize], observed: &[Vec2], dir: Vec2, standoff: f32, lateral: f32) -> Vec2 {
-    let c = objects.iter().map(|&i| observed[i]).sum::<Vec2>() / objects.len().max(1) as f32;
-    let rear =
-        objects.iter().map(|&i| (observed[i] - c).dot(dir) - footprint(scene, i)).fold(f32::MAX, f32::min).min(0.0);
+fn behind(scene: &Scene, objects: &[ObjectId], observed: &[Vec2], dir: Vec2, standoff: f32, lateral: f32) -> Vec2 {
+    let c = objects.iter().map(|&i| observed[i.index()]).sum::<Vec2>() / objects.len().max(1) as f32;
+    let rear = objects
+        .iter()
+        .map(|&i| (observed[i.index()] - c).dot(dir) - footprint(scene, i))
+        .fold(f32::MAX, f32::min)
+        .min(0.0);
     c + dir * (rear - standoff) + dir.perp() * lateral
 }
 
@@ -575,9 +589,9 @@ fn acting_point(f: &Feedback, near: Vec2) -> Option<Vec2> {
 #[allow(clippy::too_many_arguments)]
 fn carry(
     h: &mut HandCtl,
-    object: usize,
+    object: ObjectId,
     scene: &Scene,
-    open: &[(usize, Want)],
+    open: &[(ObjectId, Want)],
     observed: &[Vec2],
     now: f64,
     gain: f32,
@@ -587,7 +601,7 @@ fn carry(
     let Some((_, w)) = open.iter().find(|(i, _)| *i == object) else {
         return Step::Done;
     };
-    let obj = observed[object];
+    let obj = observed[object.index()];
     let err = w.point - obj;
     if err.length() < settle_radius(scene) {
         return Step::Done;
@@ -619,7 +633,7 @@ fn carry(
 fn push(
     h: &mut HandCtl,
     scene: &Scene,
-    open: &[(usize, Want)],
+    open: &[(ObjectId, Want)],
     observed: &[Vec2],
     now: f64,
     gain: f32,
@@ -629,16 +643,16 @@ fn push(
         return Step::Done;
     };
     let (lateral, standoff) = (*lateral, *standoff);
-    let members: Vec<(usize, Want)> = open.iter().filter(|(i, _)| objects.contains(i)).copied().collect();
+    let members: Vec<(ObjectId, Want)> = open.iter().filter(|(i, _)| objects.contains(i)).copied().collect();
     if members.is_empty() {
         return Step::Done;
     }
-    let ids: Vec<usize> = members.iter().map(|(i, _)| *i).collect();
-    let c = ids.iter().map(|&i| observed[i]).sum::<Vec2>() / ids.len() as f32;
+    let ids: Vec<ObjectId> = members.iter().map(|(i, _)| *i).collect();
+    let c = ids.iter().map(|&i| observed[i.index()]).sum::<Vec2>() / ids.len() as f32;
     let g = members.iter().map(|(_, w)| w.point).sum::<Vec2>() / ids.len() as f32;
     let err = g - c;
     let dist = err.length();
-    let total: f32 = members.iter().map(|(i, w)| (w.point - observed[*i]).length()).sum();
+    let total: f32 = members.iter().map(|(i, w)| (w.point - observed[i.index()]).length()).sum();
     if dist < settle_radius(scene) {
         // At a waypoint: the goal moves on by itself.
         h.velocity = Vec2::ZERO;

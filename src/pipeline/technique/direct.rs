@@ -8,7 +8,7 @@ use super::surface_point::{clamp_len, table_point, table_velocity};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::Blob;
-use crate::pipeline::world::{ObjectId, World, WorldError};
+use crate::pipeline::world::{World, WorldError};
 use glam::Vec3;
 use rapier3d::prelude::SoftBodyHandle;
 
@@ -94,7 +94,7 @@ impl Technique for DirectForce {
                 continue;
             }
             let Some(obj) = hit.object else { continue };
-            let Some(mut body) = world.push_object(ObjectId::new(obj)) else { continue };
+            let Some(mut body) = world.push_object(obj) else { continue };
             if !body.is_dynamic() {
                 continue;
             }
@@ -111,8 +111,8 @@ impl Technique for DirectForce {
 
     fn after_step(&mut self, world: &mut World) {
         // Forces are per step: clear what we added so they do not accumulate.
-        for i in 0..world.object_count() {
-            if let Some(mut b) = world.push_object(ObjectId::new(i)) {
+        for id in world.object_ids() {
+            if let Some(mut b) = world.push_object(id) {
                 b.reset_forces();
             }
         }

@@ -118,7 +118,7 @@ impl JointTechnique {
             world.attach_particle(h, particle, anchor)?;
             return Some(Hold::Soft(SoftGrab { anchor, z: at.z }));
         }
-        let object = ObjectId::new(hit.object?);
+        let object = hit.object?;
         let body = world.object_rigid_body(object)?;
         if !body.is_dynamic() {
             return None;
@@ -270,10 +270,10 @@ fn pusher_shape(
 fn overlaps_object(world: &World, shape: &SharedShape, base: Vec3) -> bool {
     let physics = world.physics();
     let pose = Pose::from_translation(base);
-    (0..world.object_count()).filter(|&i| world.is_active(i)).any(|i| {
-        let dynamic = physics.bodies.get(world.object_body(i)).is_some_and(RigidBody::is_dynamic);
+    world.object_ids().filter(|&id| world.is_active(id)).any(|id| {
+        let dynamic = physics.bodies.get(world.object_body(id)).is_some_and(RigidBody::is_dynamic);
         dynamic
-            && physics.colliders.get(world.object_collider(i)).is_some_and(|c| {
+            && physics.colliders.get(world.object_collider(id)).is_some_and(|c| {
                 rapier3d::parry::query::intersection_test(&pose, shape.as_ref(), c.position(), c.shape())
                     .is_ok_and(|hit| hit.intersecting)
             })
@@ -338,9 +338,7 @@ impl Technique for JointTechnique {
                 // The spring's pull: stiffness × stretch. Past the break force it snaps.
                 let obj = world.object_rigid_body(g.object).map(|b| b.position().transform_point(g.local));
                 let stretch = obj.map_or(0.0, |p| (p - next.extend(g.z)).length());
-                if self.config.joint_stiffness * stretch > self.config.joint_break_force
-                    || !world.is_active(g.object.index())
-                {
+                if self.config.joint_stiffness * stretch > self.config.joint_break_force || !world.is_active(g.object) {
                     self.grabs.remove(&c.id);
                     self.broken.insert(c.id);
                     Self::release(world, g);

@@ -203,11 +203,11 @@ impl ParticleTechnique {
             // 1.3 cm, and 46 cm so (`surfacelab behaviours`, flick_from_rest).
             if e.flow_px[0].hypot(e.flow_px[1]) > MIN_SWEEP_PX {
                 let before = table_point(input.sensor, [e.px[0] - e.flow_px[0], e.px[1] - e.flow_px[1]]);
-                if let Some(low) = world.cast_contact_ray(before) {
-                    if low.point.z < hit.point.z - 2.0 * r {
-                        hit = low;
-                        next = here;
-                    }
+                if let Some(low) = world.cast_contact_ray(before)
+                    && low.point.z < hit.point.z - 2.0 * r
+                {
+                    hit = low;
+                    next = here;
                 }
             }
             let p_next = project_flow(world, &hit, next);

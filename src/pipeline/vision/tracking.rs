@@ -211,102 +211,30 @@ impl BlobTracker {
     /// Assigns ids to this frame's blobs, in their order.
     pub fn update(&mut self, blobs: &[Blob]) -> Vec<Tracked> {
         self.frame += 1;
-        let frame = self.frame;
-        let gate = self.params.max_jump_px;
         let prev = std::mem::take(&mut self.live);
-        let centroid = |j: usize| blobs[j].weighted_centroid;
-
-        // Overlap of every predicted previous contact with the blobs near
-        // it (the grid keeps this linear in the number of blobs).
-        let as_box = |b: BBox, shift: [i64; 2]| {
-            [
-                i64::from(b.x0) + shift[0],
-                i64::from(b.y0) + shift[1],
-                i64::from(b.x1) + shift[0],
-                i64::from(b.y1) + shift[1],
-            ]
-        };
-        let grid = BoxGrid::new(&blobs.iter().map(|b| as_box(b.bbox, [0, 0])).collect::<Vec<_>>());
-        let mut near = Vec::new();
-        let mut overlaps: Vec<Vec<(usize, u32)>> = Vec::with_capacity(prev.len());
-        let mut overlapped_by: Vec<Vec<(usize, u32)>> = vec![Vec::new(); blobs.len()];
-        for (i, p) in prev.iter().enumerate() {
-            let shift = [p.velocity[0].round() as i32, p.velocity[1].round() as i32];
-            grid.query(as_box(p.bbox, [i64::from(shift[0]), i64::from(shift[1])]), &mut near);
-            let found: Vec<(usize, u32)> = near
-                .iter()
-                .map(|&j| j as usize)
-                .filter(|&j| boxes_meet(p.bbox, shift, blobs[j].bbox))
-                .map(|j| (j, overlap(&p.runs, shift, &blobs[j].runs)))
-                .filter(|&(_, a)| a > 0)
-                .collect();
-            for &(j, a) in &found {
-                overlapped_by[j].push((i, a));
-            }
-            overlaps.push(found);
-        }
-        let best: Vec<Option<usize>> = overlaps
-            .iter()
-            .map(|o| o.iter().max_by_key(|&&(j, a)| (a, std::cmp::Reverse(j))).map(|&(j, _)| j))
-            .collect();
-        let mut owners: Vec<Vec<usize>> = vec![Vec::new(); blobs.len()];
-        for (i, b) in best.iter().enumerate() {
-            if let Some(j) = *b {
-                owners[j].push(i);
-            }
-        }
-        // Blobs nobody claimed, attached to the previous contact overlapping
-        // them most: the parts a split produced.
-        let mut split_parts: Vec<Vec<usize>> = vec![Vec::new(); prev.len()];
-        for j in (0..blobs.len()).filter(|&j| owners[j].is_empty()) {
-            let parent = overlapped_by[j].iter().max_by_key(|&&(i, a)| (a, std::cmp::Reverse(i)));
-            if let Some(&(i, _)) = parent {
-                split_parts[i].push(j);
-            }
-        }
-
+        let m = Matching::new(&prev, blobs);
         let mut out: Vec<Option<Assignment>> = vec![None; blobs.len()];
+        continue_and_merge(&prev, blobs, &m, &mut out);
+        self.split(&prev, blobs, &m, &mut out);
+        jump(&prev, blobs, &m, self.params.max_jump_px, &mut out);
+        self.remember(blobs, out)
+    }
 
-        // Rules 1 and 2: continue and merge.
-        for j in 0..blobs.len() {
-            let Some(keeper) = owners[j].iter().copied().min_by_key(|&i| (prev[i].birth, prev[i].id)) else {
-                continue;
-            };
-            let p = &prev[keeper];
-            out[j] = Some(if owners[j].len() == 1 {
-                Assignment {
-                    id: p.id,
-                    birth: p.birth,
-                    velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
-                    previous_angle: p.angle,
-                    members: p.members.clone(),
-                }
-            } else {
-                let c = centroid(j);
-                let members = owners[j]
-                    .iter()
-                    .flat_map(|&i| {
-                        let o = &prev[i];
-                        let at = o.predicted();
-                        o.identities().into_iter().map(move |m| Identity {
-                            offset: [at[0] + m.offset[0] - c[0], at[1] + m.offset[1] - c[1]],
-                            ..m
-                        })
-                    })
-                    .collect();
-                Assignment { id: p.id, birth: p.birth, velocity: p.velocity, previous_angle: None, members }
-            });
-        }
-
-        // Rule 3: splits. (Ids in use, built only if a merge and a split
-        // meet in one frame.)
+    /// Rule 3: splits. Each part of a contact that split takes the identity
+    /// (of the contact or of one merged into it) predicted nearest to it;
+    /// the contact's own id survives in some part; identities no part took
+    /// stay merged in the nearest part.
+    fn split(&mut self, prev: &[Live], blobs: &[Blob], m: &Matching, out: &mut [Option<Assignment>]) {
+        let (frame, gate) = (self.frame, self.params.max_jump_px);
+        let centroid = |j: usize| blobs[j].weighted_centroid;
+        // Ids in use, built only if a merge and a split meet in one frame.
         let mut taken: Option<HashSet<u32>> = None;
         for (i, p) in prev.iter().enumerate() {
-            if split_parts[i].is_empty() {
+            if m.split_parts[i].is_empty() {
                 continue;
             }
-            let main = best[i].filter(|&b| owners[b].len() == 1);
-            let parts: Vec<usize> = main.into_iter().chain(split_parts[i].iter().copied()).collect();
+            let main = m.best[i].filter(|&b| m.owners[b].len() == 1);
+            let parts: Vec<usize> = main.into_iter().chain(m.split_parts[i].iter().copied()).collect();
             let mut identities = p.identities();
             if main.is_none() {
                 // The main part merged with others this same frame and keeps
@@ -341,7 +269,7 @@ impl BlobTracker {
                 && let Some(own) = identities.iter().position(|m| m.id == p.id)
                 && identity_part[own].is_none()
             {
-                let overlap_of = |j: usize| overlaps[i].iter().find(|&&(k, _)| k == j).map_or(0, |&(_, a)| a);
+                let overlap_of = |j: usize| m.overlaps[i].iter().find(|&&(k, _)| k == j).map_or(0, |&(_, a)| a);
                 if let Some(k) =
                     (0..parts.len()).filter(|&k| part_identity[k].is_none()).max_by_key(|&k| overlap_of(parts[k]))
                 {
@@ -349,10 +277,9 @@ impl BlobTracker {
                     identity_part[own] = Some(k);
                 }
             }
-            let mut assigned: Vec<Assignment> = parts
+            let mut assigned: Vec<Assignment> = part_identity
                 .iter()
-                .enumerate()
-                .map(|(k, _)| match part_identity[k] {
+                .map(|taken| match *taken {
                     Some(n) => Assignment {
                         id: identities[n].id,
                         birth: identities[n].birth,
@@ -360,13 +287,7 @@ impl BlobTracker {
                         previous_angle: None,
                         members: Vec::new(),
                     },
-                    None => Assignment {
-                        id: self.new_id(),
-                        birth: frame,
-                        velocity: [0.0, 0.0],
-                        previous_angle: None,
-                        members: Vec::new(),
-                    },
+                    None => self.fresh(frame),
                 })
                 .collect();
             // Identities no part took stay merged in the nearest part.
@@ -393,53 +314,22 @@ impl BlobTracker {
                 out[parts[k]] = Some(a);
             }
         }
+    }
 
-        // Rule 4: jumps, nearest first.
-        let orphans: Vec<usize> = (0..blobs.len()).filter(|&j| out[j].is_none()).collect();
-        let lost: Vec<usize> = (0..prev.len()).filter(|&i| overlaps[i].is_empty()).collect();
-        let spot = |c: [f32; 2], r: f32| {
-            [(c[0] - r).floor() as i64, (c[1] - r).floor() as i64, (c[0] + r).ceil() as i64, (c[1] + r).ceil() as i64]
-        };
-        let lost_grid = BoxGrid::new(&lost.iter().map(|&i| spot(prev[i].predicted(), 0.0)).collect::<Vec<_>>());
-        let mut pairs: Vec<(f32, usize, usize)> = Vec::new();
-        for &j in &orphans {
-            lost_grid.query(spot(centroid(j), gate), &mut near);
-            for &n in &near {
-                let i = lost[n as usize];
-                let d = distance(centroid(j), prev[i].predicted());
-                if d <= gate {
-                    pairs.push((d, j, i));
-                }
-            }
-        }
-        pairs.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
-        let mut used = vec![false; prev.len()];
-        for (_, j, i) in pairs {
-            if out[j].is_none() && !used[i] {
-                used[i] = true;
-                let p = &prev[i];
-                out[j] = Some(Assignment {
-                    id: p.id,
-                    birth: p.birth,
-                    velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
-                    previous_angle: p.angle,
-                    members: p.members.clone(),
-                });
-            }
-        }
+    /// A new contact's assignment, born this frame.
+    fn fresh(&mut self, frame: u64) -> Assignment {
+        Assignment { id: self.new_id(), birth: frame, velocity: [0.0, 0.0], previous_angle: None, members: Vec::new() }
+    }
 
-        // Rule 5: new contacts; then remember this frame.
+    /// Rule 5: blobs still unassigned are new contacts; then remember this
+    /// frame's contacts for the next.
+    fn remember(&mut self, blobs: &[Blob], mut out: Vec<Option<Assignment>>) -> Vec<Tracked> {
+        let frame = self.frame;
         let mut result = Vec::with_capacity(blobs.len());
         for (j, blob) in blobs.iter().enumerate() {
             let a = match out[j].take() {
                 Some(a) => a,
-                None => Assignment {
-                    id: self.new_id(),
-                    birth: frame,
-                    velocity: [0.0, 0.0],
-                    previous_angle: None,
-                    members: Vec::new(),
-                },
+                None => self.fresh(frame),
             };
             let angle = (blob.ellipse.elongation() >= self.params.min_elongation).then_some(blob.ellipse.angle);
             let rotation = match (a.previous_angle, angle) {
@@ -460,6 +350,144 @@ impl BlobTracker {
             });
         }
         result
+    }
+}
+
+/// How last frame's contacts, each moved by its velocity, overlap this
+/// frame's blobs.
+struct Matching {
+    /// Per previous contact: the blobs it overlaps, with the overlap (px).
+    overlaps: Vec<Vec<(usize, u32)>>,
+    /// Per previous contact: the blob it overlaps most.
+    best: Vec<Option<usize>>,
+    /// Per blob: the previous contacts whose best it is.
+    owners: Vec<Vec<usize>>,
+    /// Per previous contact: blobs nobody claimed that it overlaps most,
+    /// the parts a split produced.
+    split_parts: Vec<Vec<usize>>,
+}
+
+impl Matching {
+    fn new(prev: &[Live], blobs: &[Blob]) -> Matching {
+        // The grid keeps this linear in the number of blobs.
+        let grid = BoxGrid::new(&blobs.iter().map(|b| as_box(b.bbox, [0, 0])).collect::<Vec<_>>());
+        let mut near = Vec::new();
+        let mut overlaps: Vec<Vec<(usize, u32)>> = Vec::with_capacity(prev.len());
+        let mut overlapped_by: Vec<Vec<(usize, u32)>> = vec![Vec::new(); blobs.len()];
+        for (i, p) in prev.iter().enumerate() {
+            let shift = [p.velocity[0].round() as i32, p.velocity[1].round() as i32];
+            grid.query(as_box(p.bbox, [i64::from(shift[0]), i64::from(shift[1])]), &mut near);
+            let found: Vec<(usize, u32)> = near
+                .iter()
+                .map(|&j| j as usize)
+                .filter(|&j| boxes_meet(p.bbox, shift, blobs[j].bbox))
+                .map(|j| (j, overlap(&p.runs, shift, &blobs[j].runs)))
+                .filter(|&(_, a)| a > 0)
+                .collect();
+            for &(j, a) in &found {
+                overlapped_by[j].push((i, a));
+            }
+            overlaps.push(found);
+        }
+        let best: Vec<Option<usize>> = overlaps
+            .iter()
+            .map(|o| o.iter().max_by_key(|&&(j, a)| (a, std::cmp::Reverse(j))).map(|&(j, _)| j))
+            .collect();
+        let mut owners: Vec<Vec<usize>> = vec![Vec::new(); blobs.len()];
+        for (i, b) in best.iter().enumerate() {
+            if let Some(j) = *b {
+                owners[j].push(i);
+            }
+        }
+        let mut split_parts: Vec<Vec<usize>> = vec![Vec::new(); prev.len()];
+        for j in (0..blobs.len()).filter(|&j| owners[j].is_empty()) {
+            let parent = overlapped_by[j].iter().max_by_key(|&&(i, a)| (a, std::cmp::Reverse(i)));
+            if let Some(&(i, _)) = parent {
+                split_parts[i].push(j);
+            }
+        }
+        Matching { overlaps, best, owners, split_parts }
+    }
+}
+
+/// A bounding box as grid coordinates, moved by `shift` pixels.
+fn as_box(b: BBox, shift: [i64; 2]) -> [i64; 4] {
+    [i64::from(b.x0) + shift[0], i64::from(b.y0) + shift[1], i64::from(b.x1) + shift[0], i64::from(b.y1) + shift[1]]
+}
+
+/// Rules 1 and 2: a blob that one previous contact overlaps most continues
+/// it; one that several do merges them, keeping the oldest id and the
+/// others as members at their predicted offsets.
+fn continue_and_merge(prev: &[Live], blobs: &[Blob], m: &Matching, out: &mut [Option<Assignment>]) {
+    let centroid = |j: usize| blobs[j].weighted_centroid;
+    for (j, (slot, owners)) in out.iter_mut().zip(&m.owners).enumerate() {
+        let Some(keeper) = owners.iter().copied().min_by_key(|&i| (prev[i].birth, prev[i].id)) else {
+            continue;
+        };
+        let p = &prev[keeper];
+        *slot = Some(if owners.len() == 1 {
+            Assignment {
+                id: p.id,
+                birth: p.birth,
+                velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
+                previous_angle: p.angle,
+                members: p.members.clone(),
+            }
+        } else {
+            let c = centroid(j);
+            let members = owners
+                .iter()
+                .flat_map(|&i| {
+                    let o = &prev[i];
+                    let at = o.predicted();
+                    o.identities().into_iter().map(move |m| Identity {
+                        offset: [at[0] + m.offset[0] - c[0], at[1] + m.offset[1] - c[1]],
+                        ..m
+                    })
+                })
+                .collect();
+            Assignment { id: p.id, birth: p.birth, velocity: p.velocity, previous_angle: None, members }
+        });
+    }
+}
+
+/// Rule 4: jumps. A blob still unassigned takes the id of a previous
+/// contact that overlaps nothing now and is predicted within `gate` pixels,
+/// nearest pairs first.
+fn jump(prev: &[Live], blobs: &[Blob], m: &Matching, gate: f32, out: &mut [Option<Assignment>]) {
+    let centroid = |j: usize| blobs[j].weighted_centroid;
+    let orphans: Vec<usize> = (0..blobs.len()).filter(|&j| out[j].is_none()).collect();
+    let lost: Vec<usize> = (0..prev.len()).filter(|&i| m.overlaps[i].is_empty()).collect();
+    let spot = |c: [f32; 2], r: f32| {
+        [(c[0] - r).floor() as i64, (c[1] - r).floor() as i64, (c[0] + r).ceil() as i64, (c[1] + r).ceil() as i64]
+    };
+    let lost_grid = BoxGrid::new(&lost.iter().map(|&i| spot(prev[i].predicted(), 0.0)).collect::<Vec<_>>());
+    let mut near = Vec::new();
+    let mut pairs: Vec<(f32, usize, usize)> = Vec::new();
+    for &j in &orphans {
+        lost_grid.query(spot(centroid(j), gate), &mut near);
+        for &n in &near {
+            let i = lost[n as usize];
+            let d = distance(centroid(j), prev[i].predicted());
+            if d <= gate {
+                pairs.push((d, j, i));
+            }
+        }
+    }
+    pairs.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
+    let mut used = vec![false; prev.len()];
+    for (_, j, i) in pairs {
+        if out[j].is_none() && !used[i] {
+            used[i] = true;
+            let p = &prev[i];
+            out[j] = Some(Assignment {
+                id: p.id,
+                birth: p.birth,
+                velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
+                previous_angle: p.angle,
+                members: p.members.clone(),
+            });
+        }
     }
 }
 

@@ -54,11 +54,6 @@ impl Layer {
         };
         InteractionGroups::new(self.group(), filter, InteractionTestMode::And)
     }
-
-    /// Groups for queries that should see the scene only.
-    pub fn scene_query() -> InteractionGroups {
-        InteractionGroups::new(Group::ALL, Group::GROUP_1 | Group::GROUP_2 | Group::GROUP_5, InteractionTestMode::And)
-    }
 }
 
 /// The layer a collider was created on.

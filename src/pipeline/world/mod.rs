@@ -18,14 +18,15 @@ mod technique_body;
 #[allow(clippy::module_inception)]
 mod world;
 
+pub use crate::scene::{ObjectId, SoftId};
 pub use config::WorldConfig;
 pub use error::WorldError;
 pub use groups::{Layer, collider_layer};
-pub use object::{ObjectId, ObjectPush, SoftId};
+pub use object::ObjectPush;
 pub use ray::RayHit;
 pub use reach::Reach;
 pub use soft::SoftSurface;
 pub use soft_access::SoftPush;
-pub use stats::{StepStats, WorldStats};
+pub use stats::WorldStats;
 pub use technique_body::{TechniqueBody, TechniqueJoint};
 pub use world::{ObjectPose, World};

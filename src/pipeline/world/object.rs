@@ -1,42 +1,10 @@
-//! Typed ids for what the scene declares, and the one way a technique may
-//! act on a scene object's body: push it ([`ObjectPush`]), never remove,
+//! The one way a technique may act on a scene object's body: push it ([`ObjectPush`]), never remove,
 //! disable or teleport it.
 
 use super::world::World;
+use crate::scene::ObjectId;
 use glam::Vec3;
 use rapier3d::prelude::RigidBody;
-
-/// A scene object: its index in the scene's `objects`, stable for the
-/// world's life (a removed object keeps its id).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct ObjectId(usize);
-
-impl ObjectId {
-    pub fn new(index: usize) -> ObjectId {
-        ObjectId(index)
-    }
-
-    /// The object's index in the scene's `objects`.
-    pub fn index(self) -> usize {
-        self.0
-    }
-}
-
-/// A declared soft body: its index in the scene's `soft_bodies`, stable
-/// for the world's life (torn pieces keep their body's id).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub struct SoftId(usize);
-
-impl SoftId {
-    pub fn new(index: usize) -> SoftId {
-        SoftId(index)
-    }
-
-    /// The soft body's index in the scene's `soft_bodies`.
-    pub fn index(self) -> usize {
-        self.0
-    }
-}
 
 /// A scene object's body, to push: forces, impulses and velocities. It
 /// reads as a [`RigidBody`] but offers no pose, enable or removal.
@@ -83,12 +51,12 @@ impl ObjectPush<'_> {
 impl World {
     /// Scene object `id`'s body, to read (pose, mass, velocity at a point).
     pub fn object_rigid_body(&self, id: ObjectId) -> Option<&RigidBody> {
-        self.physics().bodies.get(self.object_body(id.index()))
+        self.physics().bodies.get(self.object_body(id))
     }
 
     /// Scene object `id`'s body, to push.
     pub fn push_object(&mut self, id: ObjectId) -> Option<ObjectPush<'_>> {
-        let h = self.object_body(id.index());
+        let h = self.object_body(id);
         self.physics_mut().bodies.get_mut(h).map(ObjectPush)
     }
 }

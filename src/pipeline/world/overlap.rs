@@ -5,6 +5,7 @@
 //! would be shoved out at once, with whatever speed the solver needs).
 
 use super::world::World;
+use crate::scene::ObjectId;
 use glam::Vec3;
 use rapier3d::parry::bounding_volume::BoundingVolume;
 use rapier3d::parry::query;
@@ -17,9 +18,10 @@ impl World {
     /// costs a few hundred box tests and a handful of shape queries.
     pub fn max_object_overlap(&self) -> f32 {
         let colliders = &self.physics().colliders;
-        let live: Vec<_> = (0..self.object_count())
-            .filter(|&i| self.is_active(i))
-            .filter_map(|i| colliders.get(self.object_collider(i)))
+        let live: Vec<_> = self
+            .object_ids()
+            .filter(|&id| self.is_active(id))
+            .filter_map(|id| colliders.get(self.object_collider(id)))
             .map(|c| (c, c.compute_aabb()))
             .collect();
         let mut deepest = 0.0f32;
@@ -36,11 +38,11 @@ impl World {
         deepest
     }
 
-    /// Whether scene object `i` is active and dynamic (can be pushed).
-    pub fn is_movable(&self, i: usize) -> bool {
-        i < self.object_count()
-            && self.is_active(i)
-            && self.physics().bodies.get(self.object_body(i)).is_some_and(RigidBody::is_dynamic)
+    /// Whether scene object `id` is active and dynamic (can be pushed).
+    pub fn is_movable(&self, id: ObjectId) -> bool {
+        id.index() < self.object_count()
+            && self.is_active(id)
+            && self.physics().bodies.get(self.object_body(id)).is_some_and(RigidBody::is_dynamic)
     }
 
     /// Whether an upright capsule (segment half-length `half`, radius `r`)
@@ -48,8 +50,8 @@ impl World {
     pub fn capsule_overlaps_movable(&self, center: Vec3, half: f32, r: f32) -> bool {
         let capsule = Capsule::new_z(half, r);
         let pose = Pose::from_translation(center);
-        (0..self.object_count()).filter(|&i| self.is_movable(i)).any(|i| {
-            self.physics().colliders.get(self.object_collider(i)).is_some_and(|c| {
+        self.object_ids().filter(|&id| self.is_movable(id)).any(|id| {
+            self.physics().colliders.get(self.object_collider(id)).is_some_and(|c| {
                 query::intersection_test(&pose, &capsule, c.position(), c.shape()).map_or(true, |s| s.intersecting)
             })
         })

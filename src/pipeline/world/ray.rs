@@ -1,5 +1,6 @@
 //! The result of a scene ray cast.
 
+use crate::scene::ObjectId;
 use glam::Vec3;
 use rapier3d::prelude::SoftBodyHandle;
 
@@ -8,7 +9,7 @@ use rapier3d::prelude::SoftBodyHandle;
 pub struct RayHit {
     /// The scene object hit, or `None` for the table, its walls or a fixed
     /// environment part with no object index.
-    pub object: Option<usize>,
+    pub object: Option<ObjectId>,
     pub point: Vec3,
     /// Outward surface normal at `point`.
     pub normal: Vec3,

@@ -61,15 +61,15 @@ impl World {
     pub fn movable_reach(&self) -> Vec<Reach> {
         let physics = self.physics();
         let mut out = Vec::new();
-        for i in 0..self.object_count() {
-            if !self.is_active(i) {
+        for id in self.object_ids() {
+            if !self.is_active(id) {
                 continue;
             }
-            let Some(body) = physics.bodies.get(self.object_body(i)) else { continue };
+            let Some(body) = physics.bodies.get(self.object_body(id)) else { continue };
             if !body.is_dynamic() {
                 continue;
             }
-            let Some(collider) = physics.colliders.get(self.object_collider(i)) else { continue };
+            let Some(collider) = physics.colliders.get(self.object_collider(id)) else { continue };
             let aabb = collider.compute_aabb();
             let (min, max) = (aabb.mins, aabb.maxs);
             let speed = body.linvel().length() + body.angvel().length() * (max - min).length() * 0.5;

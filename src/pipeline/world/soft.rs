@@ -17,6 +17,7 @@
 
 use super::config::WorldConfig;
 use super::groups::Layer;
+use crate::scene::SoftId;
 use crate::scene::{Effect, SoftBodySpec, SoftKind};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
@@ -57,7 +58,7 @@ pub(super) struct SoftBodies {
 #[derive(Debug, Clone, PartialEq)]
 pub struct SoftSurface {
     /// Index of the declared soft body this piece belongs to.
-    pub body: usize,
+    pub body: SoftId,
     pub positions: Vec<Vec3>,
     pub triangles: Vec<[u32; 3]>,
 }
@@ -284,7 +285,7 @@ pub(super) fn surfaces(physics: &PhysicsWorld) -> Vec<SoftSurface> {
         .iter()
         .filter(|(_, b)| b.is_enabled())
         .map(|(_, b)| SoftSurface {
-            body: b.user_data as usize,
+            body: SoftId::new(b.user_data as usize),
             positions: b.particle_positions().collect(),
             triangles: b.boundary().to_vec(),
         })

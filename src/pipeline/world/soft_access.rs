@@ -4,18 +4,18 @@
 use super::error::WorldError;
 use super::soft::{self, SoftSurface};
 use super::world::World;
-use crate::scene::SoftBodySpec;
+use crate::scene::{SoftBodySpec, SoftId};
 use glam::Vec3;
 use rapier3d::prelude::{SoftBody, SoftBodyHandle};
 
 impl World {
-    /// Adds a soft body (beyond the scene's own); returns its index for the
+    /// Adds a soft body (beyond the scene's own); returns its id for the
     /// `soft_*` accessors. Refuses when its effect is off, naming the scene
     /// and the effect.
-    pub fn add_soft_body(&mut self, spec: &SoftBodySpec) -> Result<usize, WorldError> {
+    pub fn add_soft_body(&mut self, spec: &SoftBodySpec) -> Result<SoftId, WorldError> {
         let config = *self.config();
         let (soft, physics) = self.soft_and_physics_mut();
-        soft.add(spec, &config, physics).map_err(|e| WorldError::EffectNotDeclared {
+        soft.add(spec, &config, physics).map(SoftId::new).map_err(|e| WorldError::EffectNotDeclared {
             scene: self.scene().name.clone(),
             effect: e,
             what: format!("the {} `{}`", spec.kind.name(), spec.name),
@@ -27,34 +27,39 @@ impl World {
         self.soft().len()
     }
 
-    pub fn soft_spec(&self, index: usize) -> &SoftBodySpec {
-        self.soft().spec(index)
+    /// Every declared soft body (including those whose effect is off).
+    pub fn soft_ids(&self) -> impl Iterator<Item = SoftId> + use<> {
+        (0..self.soft().len()).map(SoftId::new)
     }
 
-    /// Whether the declared soft body `index` exists in this world.
-    pub fn soft_exists(&self, index: usize) -> bool {
-        self.soft().exists(index)
+    pub fn soft_spec(&self, id: SoftId) -> &SoftBodySpec {
+        self.soft().spec(id.index())
     }
 
-    /// The rapier bodies soft body `index` is made of now: the body itself,
+    /// Whether the declared soft body `id` exists in this world.
+    pub fn soft_exists(&self, id: SoftId) -> bool {
+        self.soft().exists(id.index())
+    }
+
+    /// The rapier bodies soft body `id` is made of now: the body itself,
     /// or after tears the pieces it came apart into.
-    pub fn soft_pieces(&self, index: usize) -> impl Iterator<Item = (SoftBodyHandle, &SoftBody)> {
-        soft::pieces(self.physics(), index)
+    pub fn soft_pieces(&self, id: SoftId) -> impl Iterator<Item = (SoftBodyHandle, &SoftBody)> {
+        soft::pieces(self.physics(), id.index())
     }
 
-    /// The mass of each piece of soft body `index`, largest first.
-    pub fn soft_piece_masses(&self, index: usize) -> Vec<f32> {
-        soft::piece_masses(self.physics(), index)
+    /// The mass of each piece of soft body `id`, largest first.
+    pub fn soft_piece_masses(&self, id: SoftId) -> Vec<f32> {
+        soft::piece_masses(self.physics(), id.index())
     }
 
-    /// Centre of mass of soft body `index` (all its pieces).
-    pub fn soft_center(&self, index: usize) -> Option<Vec3> {
-        soft::center(self.physics(), index)
+    /// Centre of mass of soft body `id` (all its pieces).
+    pub fn soft_center(&self, id: SoftId) -> Option<Vec3> {
+        soft::center(self.physics(), id.index())
     }
 
-    /// Fastest particle of soft body `index` (m/s); infinite if any is not finite.
-    pub fn soft_max_speed(&self, index: usize) -> f32 {
-        soft::max_speed(self.physics(), index)
+    /// Fastest particle of soft body `id` (m/s); infinite if any is not finite.
+    pub fn soft_max_speed(&self, id: SoftId) -> f32 {
+        soft::max_speed(self.physics(), id.index())
     }
 
     /// Whether every particle of every soft body is finite.
@@ -62,25 +67,20 @@ impl World {
         soft::all_finite(self.physics())
     }
 
-    /// Volume enclosed by soft body `index` now, and at rest (m³; 0 for a cloth).
-    pub fn soft_volume(&self, index: usize) -> (f32, f32) {
-        soft::volume(self.physics(), index)
+    /// Volume enclosed by soft body `id` now, and at rest (m³; 0 for a cloth).
+    pub fn soft_volume(&self, id: SoftId) -> (f32, f32) {
+        soft::volume(self.physics(), id.index())
     }
 
-    /// Share of its rest area that soft body `index` covers on the table,
+    /// Share of its rest area that soft body `id` covers on the table,
     /// seen from above (the `cloth_flat` goal's measure).
-    pub fn soft_coverage(&self, index: usize) -> f32 {
-        soft::coverage(self.physics(), self.soft().spec(index), index)
+    pub fn soft_coverage(&self, id: SoftId) -> f32 {
+        soft::coverage(self.physics(), self.soft().spec(id.index()), id.index())
     }
 
     /// Every soft body's surface now, torn pieces included.
     pub fn soft_surfaces(&self) -> Vec<SoftSurface> {
         soft::surfaces(self.physics())
-    }
-
-    /// The particle of soft body `h` nearest to `point`.
-    pub fn nearest_soft_particle(&self, h: SoftBodyHandle, point: Vec3) -> Option<u32> {
-        soft::nearest_particle(self.physics(), h, point)
     }
 }
 

@@ -7,8 +7,8 @@
 //! teleport them. The type system, not a comment, keeps the two apart.
 
 use super::groups::{Layer, collider_layer};
-use super::object::ObjectId;
 use super::world::World;
+use crate::scene::ObjectId;
 use glam::Vec3;
 use rapier3d::prelude::*;
 
@@ -101,7 +101,7 @@ impl World {
         object: ObjectId,
         joint: impl Into<GenericJoint>,
     ) -> Option<TechniqueJoint> {
-        let h = self.object_body(object.index());
+        let h = self.object_body(object);
         let physics = self.physics_mut();
         physics.bodies.get(h)?;
         Some(TechniqueJoint(physics.impulse_joints.insert(body.0, h, joint, true)))
@@ -186,7 +186,7 @@ position = [0.0, 0.0]
         assert_eq!(w.physics().bodies.len(), bodies);
         assert_eq!(w.physics().colliders.len(), colliders, "its collider went with it");
         // The scene object is untouched: there, active, at rest at the origin.
-        let boxed = w.object_pose(ObjectId::new(0).index());
+        let boxed = w.object_pose(ObjectId::new(0));
         assert!(boxed.active);
         assert!(boxed.position.truncate().length() < 1e-3, "the box moved to {:?}", boxed.position);
     }
@@ -195,7 +195,7 @@ position = [0.0, 0.0]
     fn a_joint_pulls_the_object_and_removing_it_leaves_the_object() {
         let mut w = world();
         let box_id = ObjectId::new(0);
-        let top = w.object_pose(box_id.index()).position + Vec3::Z * 0.015;
+        let top = w.object_pose(box_id).position + Vec3::Z * 0.015;
         let anchor = w.spawn_anchor(top);
         let spring = SpringJointBuilder::new(0.0, 200.0, 5.0).local_anchor1(Vec3::ZERO).local_anchor2(Vec3::Z * 0.015);
         let joint = w.attach(anchor, box_id, spring.build()).expect("the box has a body");
@@ -205,15 +205,15 @@ position = [0.0, 0.0]
             w.technique_body_mut(anchor).expect("anchor").set_next_kinematic_translation(at);
             w.step();
         }
-        let y = w.object_pose(box_id.index()).position.y;
+        let y = w.object_pose(box_id).position.y;
         assert!(y > 0.05, "the spring dragged the box only to y = {y}");
         w.remove_joint(joint);
         w.remove_body(anchor);
         assert_eq!(w.physics().impulse_joints.len(), 0);
         assert_eq!(w.physics().bodies.len(), 1, "the box's body stays");
-        assert!(w.is_active(box_id.index()));
+        assert!(w.is_active(box_id));
         // Ids are stable: the same object, the same body, after all that.
-        assert_eq!(w.object_of_body(w.object_body(box_id.index())), Some(box_id.index()));
+        assert_eq!(w.object_of_body(w.object_body(box_id)), Some(box_id));
     }
 
     #[test]
@@ -228,11 +228,11 @@ position = [0.0, 0.0]
         for _ in 0..6 {
             w.step();
         }
-        let pose = w.object_pose(id.index());
+        let pose = w.object_pose(id);
         let v = pose.linvel.x;
         assert!(v > 0.0 && v < 0.45, "after 0.1 s the box moves at {v} m/s");
         assert!(pose.position.x > 0.02, "the box slid only to x = {}", pose.position.x);
         w.push_object(id).expect("body").reset_forces();
-        assert!(w.is_active(id.index()));
+        assert!(w.is_active(id));
     }
 }

@@ -5,13 +5,12 @@ use super::error::WorldError;
 use super::groups::Layer;
 use super::ray::RayHit;
 use super::soft::{self, SOFT_TAG, SoftBodies};
-use super::stats::{StepStats, WorldStats};
-use crate::scene::{BodyKind, Effect, EffectSet, Scene, Shape};
+use super::stats::WorldStats;
+use crate::scene::{BodyKind, Effect, EffectSet, ObjectId, Scene, Shape};
 use glam::{Quat, Vec2, Vec3};
 use rapier3d::parry::bounding_volume::Aabb;
 use rapier3d::parry::query::{RayCast, RayIntersection};
 use rapier3d::prelude::*;
-use std::time::Instant;
 
 /// `user_data` tag of environment colliders (table, walls).
 const ENV_TAG: u128 = u128::MAX;
@@ -51,7 +50,6 @@ pub struct World {
     scene_colliders: Vec<(ColliderHandle, Option<usize>, Aabb)>,
     time: f64,
     stats: WorldStats,
-    last: StepStats,
 }
 
 impl std::fmt::Debug for World {
@@ -171,7 +169,6 @@ impl World {
             scene_colliders,
             time: 0.0,
             stats: WorldStats::default(),
-            last: StepStats::default(),
         };
         world.soft = SoftBodies::spawn(&world.scene.soft_bodies, &world.config, &mut world.physics);
         // Build the query structures now: a contact on the very first frame
@@ -199,10 +196,6 @@ impl World {
 
     pub fn stats(&self) -> &WorldStats {
         &self.stats
-    }
-
-    pub fn last_step(&self) -> StepStats {
-        self.last
     }
 
     /// The underlying rapier world, to read (contact pairs, soft particles).
@@ -243,16 +236,12 @@ impl World {
 
     /// Advances one fixed step, then caps speeds and records health figures.
     pub fn step(&mut self) {
-        let t0 = Instant::now();
         if self.config.sleeping && !self.physics.soft_bodies.is_empty() {
             soft::wake_touched(&mut self.physics);
         }
         self.physics.step();
-        let us = t0.elapsed().as_secs_f64() * 1e6;
         self.time += f64::from(self.config.dt);
-        self.last = StepStats { step_us: us };
         self.stats.steps += 1;
-        self.stats.total_step_us += us;
 
         let cap = self.config.max_speed;
         let mut nan = false;
@@ -319,23 +308,28 @@ impl World {
         self.objects.len()
     }
 
-    /// The rapier body of scene object `i`.
-    pub fn object_body(&self, i: usize) -> RigidBodyHandle {
-        self.objects[i].body
+    /// Every scene object, in the scene's order.
+    pub fn object_ids(&self) -> impl Iterator<Item = ObjectId> + use<> {
+        (0..self.objects.len()).map(ObjectId::new)
     }
 
-    /// The rapier collider of scene object `i`.
-    pub fn object_collider(&self, i: usize) -> ColliderHandle {
-        self.objects[i].collider
+    /// The rapier body of scene object `id`.
+    pub fn object_body(&self, id: ObjectId) -> RigidBodyHandle {
+        self.objects[id.index()].body
+    }
+
+    /// The rapier collider of scene object `id`.
+    pub fn object_collider(&self, id: ObjectId) -> ColliderHandle {
+        self.objects[id.index()].collider
     }
 
     /// The scene object a rapier body belongs to.
-    pub fn object_of_body(&self, h: RigidBodyHandle) -> Option<usize> {
-        self.objects.iter().position(|s| s.body == h)
+    pub fn object_of_body(&self, h: RigidBodyHandle) -> Option<ObjectId> {
+        self.objects.iter().position(|s| s.body == h).map(ObjectId::new)
     }
 
-    pub fn object_pose(&self, i: usize) -> ObjectPose {
-        let slot = self.objects[i];
+    pub fn object_pose(&self, id: ObjectId) -> ObjectPose {
+        let slot = self.objects[id.index()];
         let b = &self.physics.bodies[slot.body];
         ObjectPose {
             position: b.translation(),
@@ -347,17 +341,17 @@ impl World {
     }
 
     pub fn object_poses(&self) -> Vec<ObjectPose> {
-        (0..self.objects.len()).map(|i| self.object_pose(i)).collect()
+        self.object_ids().map(|id| self.object_pose(id)).collect()
     }
 
-    pub fn is_active(&self, i: usize) -> bool {
-        self.objects[i].active
+    pub fn is_active(&self, id: ObjectId) -> bool {
+        self.objects[id.index()].active
     }
 
     /// Removes a scene object from the simulation (a placed positioning
     /// object vanishes). Its index stays valid; its body is disabled.
-    pub fn remove_object(&mut self, i: usize) {
-        let slot = &mut self.objects[i];
+    pub fn remove_object(&mut self, id: ObjectId) {
+        let slot = &mut self.objects[id.index()];
         slot.active = false;
         if let Some(b) = self.physics.bodies.get_mut(slot.body) {
             b.set_enabled(false);
@@ -383,8 +377,8 @@ impl World {
     }
 
     /// Puts one object at a pose, at rest (a steering restart).
-    pub fn place_object(&mut self, i: usize, position: Vec3, rotation: Quat) {
-        if let Some(b) = self.physics.bodies.get_mut(self.objects[i].body) {
+    pub fn place_object(&mut self, id: ObjectId, position: Vec3, rotation: Quat) {
+        if let Some(b) = self.physics.bodies.get_mut(self.objects[id.index()].body) {
             b.set_position(Pose::from_parts(position, rotation), true);
             b.set_linvel(Vec3::ZERO, true);
             b.set_angvel(Vec3::ZERO, true);
@@ -463,10 +457,10 @@ impl World {
                 soft: soft::hit(&self.physics, c, point),
             });
         }
-        let object = if c.user_data == ENV_TAG { None } else { Some(c.user_data as usize) };
+        let object = if c.user_data == ENV_TAG { None } else { Some(ObjectId::new(c.user_data as usize)) };
         let mut out = RayHit { object, point, normal: hit.normal, toi: hit.time_of_impact, soft: None };
-        if let Some(i) = object
-            && let Shape::Cylinder { radius, half_height } = self.scene.objects[i].shape
+        if let Some(id) = object
+            && let Shape::Cylinder { radius, half_height } = self.scene.object(id).shape
         {
             // parry casts rays at cylinders by GJK, whose normals tilt by up
             // to ~30° near a cap's rim; the particles' flow projection needs

@@ -1,7 +1,7 @@
 //! [`GoalTracker`]: evaluates a scene goal on the world, step by step.
 
 use crate::pipeline::world::{ObjectPose, World};
-use crate::scene::{Goal, Scene, SortingZone, SteeringGoal, Target};
+use crate::scene::{Goal, ObjectId, Scene, SortingZone, SteeringGoal, Target};
 use glam::{Quat, Vec2, Vec3};
 
 /// Speed (m/s) below which an object counts as resting for a dwell.
@@ -37,7 +37,7 @@ pub struct GoalTracker {
     placed: Vec<bool>,
     progress: Progress,
     /// Steering start pose, for restarts.
-    start: Option<(usize, Vec3, Quat)>,
+    start: Option<(ObjectId, Vec3, Quat)>,
     platform_top: f32,
     /// Seconds the soft body of a soft goal has met it.
     soft_dwell: f32,
@@ -67,10 +67,10 @@ impl GoalTracker {
             Goal::Torn { pieces, .. } => *pieces,
         };
         if let Goal::Steering(g) = &scene.goal {
-            let o = &scene.objects[g.object];
+            let o = scene.object(g.object);
             t.start = Some((g.object, o.position, o.rotation));
             t.platform_top = g.platform.map_or(0.0, |p| {
-                let po = &scene.objects[p];
+                let po = scene.object(p);
                 po.position.z + po.shape.half_z()
             });
         }
@@ -82,8 +82,8 @@ impl GoalTracker {
     }
 
     /// True when the object was placed (positioning) and has vanished.
-    pub fn is_placed(&self, object: usize) -> bool {
-        self.placed[object]
+    pub fn is_placed(&self, object: ObjectId) -> bool {
+        self.placed[object.index()]
     }
 
     /// Call after every world step. May change the world: placed objects
@@ -104,13 +104,13 @@ impl GoalTracker {
                 self.gather(world, (*center, *radius), *fraction, *dwell_s, &poses)
             }
             Goal::Region { object, min, max, max_height, dwell_s } => {
-                let p = poses[*object].position;
+                let p = poses[object.index()].position;
                 let ok = p.x >= min.x
                     && p.x <= max.x
                     && p.y >= min.y
                     && p.y <= max.y
                     && p.z <= *max_height
-                    && resting(&poses[*object]);
+                    && resting(&poses[object.index()]);
                 let done = self.dwell_step(*object, ok, dt, *dwell_s);
                 self.progress.placed = usize::from(done);
                 done
@@ -146,13 +146,13 @@ impl GoalTracker {
     fn position(&mut self, world: &mut World, targets: &[Target], dwell_s: f32, poses: &[ObjectPose]) -> bool {
         let dt = world.dt();
         for t in targets {
-            if self.placed[t.object] {
+            if self.placed[t.object.index()] {
                 continue;
             }
-            let p = poses[t.object];
+            let p = poses[t.object.index()];
             let ok = resting(&p) && (p.position.truncate() - t.position).length() <= t.tolerance;
             if self.dwell_step(t.object, ok, dt, dwell_s) {
-                self.placed[t.object] = true;
+                self.placed[t.object.index()] = true;
                 world.remove_object(t.object);
             }
         }
@@ -164,18 +164,16 @@ impl GoalTracker {
     /// the dwell; objects without a zone do not matter.
     fn sort(&mut self, world: &World, zones: &[SortingZone], dwell_s: f32, poses: &[ObjectPose]) -> bool {
         let dt = world.dt();
-        let oks: Vec<(usize, bool)> = world
-            .scene()
-            .objects
-            .iter()
-            .enumerate()
-            .filter_map(|(i, o)| {
-                let mine: Vec<_> = zones.iter().filter(|z| z.color == o.color).collect();
+        let scene = world.scene();
+        let oks: Vec<(ObjectId, bool)> = scene
+            .object_ids()
+            .filter_map(|id| {
+                let mine: Vec<_> = zones.iter().filter(|z| z.color == scene.object(id).color).collect();
                 if mine.is_empty() {
                     return None;
                 }
-                let p = poses[i];
-                Some((i, resting(&p) && mine.iter().any(|z| z.contains(p.position.truncate()))))
+                let p = poses[id.index()];
+                Some((id, resting(&p) && mine.iter().any(|z| z.contains(p.position.truncate()))))
             })
             .collect();
         let mut in_place = 0;
@@ -202,12 +200,14 @@ impl GoalTracker {
         poses: &[ObjectPose],
     ) -> bool {
         let dt = world.dt();
-        let dynamic: Vec<usize> =
-            (0..poses.len()).filter(|&i| world.scene().objects[i].body == crate::scene::BodyKind::Dynamic).collect();
+        let scene = world.scene();
+        let dynamic: Vec<ObjectId> =
+            scene.object_ids().filter(|&id| scene.object(id).body == crate::scene::BodyKind::Dynamic).collect();
         let mut inside = 0;
-        for &i in &dynamic {
-            let ok = (poses[i].position.truncate() - center).length() <= radius && resting(&poses[i]);
-            if self.dwell_step(i, ok, dt, dwell_s) {
+        for &id in &dynamic {
+            let p = poses[id.index()];
+            let ok = (p.position.truncate() - center).length() <= radius && resting(&p);
+            if self.dwell_step(id, ok, dt, dwell_s) {
                 inside += 1;
             }
         }
@@ -223,13 +223,10 @@ impl GoalTracker {
     }
 
     /// Advances one object's dwell timer; true once it has held for `need` s.
-    fn dwell_step(&mut self, i: usize, ok: bool, dt: f32, need: f32) -> bool {
-        if ok {
-            self.dwell[i] += dt;
-        } else {
-            self.dwell[i] = 0.0;
-        }
-        ok && self.dwell[i] >= need
+    fn dwell_step(&mut self, id: ObjectId, ok: bool, dt: f32, need: f32) -> bool {
+        let dwell = &mut self.dwell[id.index()];
+        *dwell = if ok { *dwell + dt } else { 0.0 };
+        ok && *dwell >= need
     }
 
     fn soft_dwell_step(&mut self, ok: bool, dt: f32, need: f32) -> bool {
@@ -238,13 +235,13 @@ impl GoalTracker {
     }
 
     fn steer(&mut self, world: &mut World, g: &SteeringGoal, poses: &[ObjectPose]) -> bool {
-        let p = poses[g.object].position;
+        let p = poses[g.object.index()].position;
         if g.platform.is_some() && p.z < self.platform_top - DROP_MARGIN {
             // Dropped off the platform: the task restarts.
             self.progress.restarts += 1;
             self.progress.waypoints_passed = 0;
-            if let Some((i, pos, rot)) = self.start {
-                world.place_object(i, pos, rot);
+            if let Some((id, pos, rot)) = self.start {
+                world.place_object(id, pos, rot);
             }
             return false;
         }
@@ -317,8 +314,9 @@ tolerance = 0.015
 "#;
 
     fn put(world: &mut World, i: usize, x: f32, y: f32) {
-        let z = world.scene().objects[i].position.z;
-        world.place_object(i, Vec3::new(x, y, z), Quat::IDENTITY);
+        let id = ObjectId::new(i);
+        let z = world.scene().object(id).position.z;
+        world.place_object(id, Vec3::new(x, y, z), Quat::IDENTITY);
     }
 
     #[test]
@@ -332,7 +330,7 @@ tolerance = 0.015
         assert_eq!((p.placed, p.complete), (0, false), "25 steps (0.42 s) is short of the 0.5 s dwell");
         let p = run(&mut world, &mut tracker, 10);
         assert_eq!((p.placed, p.complete), (1, true), "35 steps (0.58 s) is past it");
-        assert!(tracker.is_placed(0) && !world.is_active(0), "a placed object vanishes");
+        assert!(tracker.is_placed(ObjectId::new(0)) && !world.is_active(ObjectId::new(0)), "a placed object vanishes");
         // 60 steps away, then 30 or 31 steps of dwell (0.5 s in f32 sums of 1/60).
         let at = p.completed_at.expect("completion time");
         assert!((90.0 / 60.0..=91.5 / 60.0).contains(&at), "completed at {at} s");
@@ -390,7 +388,7 @@ max = [0.3, 0.3]
         put(&mut world, 0, 0.15, 0.15);
         let p = run(&mut world, &mut tracker, 20);
         assert_eq!((p.placed, p.complete), (1, true));
-        assert!(world.is_active(0), "sorted objects stay on the table");
+        assert!(world.is_active(ObjectId::new(0)), "sorted objects stay on the table");
     }
 
     const STEERING: &str = r#"name = "st"
@@ -423,7 +421,7 @@ finish_radius = 0.04
 "#;
 
     fn put_on_platform(world: &mut World, x: f32, y: f32) {
-        world.place_object(1, Vec3::new(x, y, 0.061), Quat::IDENTITY);
+        world.place_object(ObjectId::new(1), Vec3::new(x, y, 0.061), Quat::IDENTITY);
     }
 
     #[test]
@@ -455,10 +453,10 @@ finish_radius = 0.04
         put_on_platform(&mut world, 0.1, 0.0);
         assert_eq!(run(&mut world, &mut tracker, 5).waypoints_passed, 1);
         // Off the platform's edge, on the table: 5 cm below its top.
-        world.place_object(1, Vec3::new(0.45, 0.3, 0.011), Quat::IDENTITY);
+        world.place_object(ObjectId::new(1), Vec3::new(0.45, 0.3, 0.011), Quat::IDENTITY);
         let p = run(&mut world, &mut tracker, 1);
         assert_eq!((p.restarts, p.waypoints_passed, p.complete), (1, 0, false));
-        let back = world.object_pose(1).position;
+        let back = world.object_pose(ObjectId::new(1)).position;
         assert!((back - Vec3::new(0.3, 0.0, 0.061)).length() < 0.01, "back at the start: {back}");
         assert_eq!(tracker.next_waypoint(), Some(Vec2::new(0.1, 0.0)));
         // Resting on the platform is no drop.
