@@ -596,205 +596,221 @@ impl Checker<'_> {
         let span = g.span();
         let g = g.into_inner();
         let dwell_s = self.num(&span, "goal.dwell_s", g.dwell_s.unwrap_or(default::DWELL_S), 0.0, 60.0)?;
-        let object_named = |name: &Option<String>, field: &str| -> Result<ObjectId, SceneError> {
-            let n = name.as_ref().ok_or_else(|| self.err(&span, field, format!("this goal needs `{field}`")))?;
-            objects
-                .iter()
-                .position(|o| &o.name == n)
-                .map(ObjectId::new)
-                .ok_or_else(|| self.err(&span, field, format!("no object named `{n}`")))
-        };
-        let on_table = |p: [f32; 2], sp: &Range<usize>, field: &str| -> Result<Vec2, SceneError> {
-            let v = Vec2::from(p);
-            if !v.is_finite() {
-                return Err(self.err(sp, field, "must be finite"));
-            }
-            if !table_contains(table, v) {
-                return Err(self.err(
-                    sp,
-                    field,
-                    format!(
-                        "({:.3}, {:.3}) lies off the table (±{:.3} × ±{:.3})",
-                        v.x,
-                        v.y,
-                        table.width / 2.0,
-                        table.depth / 2.0
-                    ),
-                ));
-            }
-            Ok(v)
-        };
-        Ok(match g.kind {
-            GoalKind::None => Goal::None,
-            GoalKind::Positioning => {
-                if g.targets.is_empty() {
-                    return Err(self.err(
-                        &span,
-                        "goal.targets",
-                        "a positioning goal needs at least one [[goal.targets]]",
-                    ));
-                }
-                let mut targets = Vec::new();
-                for (i, t) in g.targets.into_iter().enumerate() {
-                    let tspan = t.span();
-                    let t = t.into_inner();
-                    let object =
-                        objects.iter().position(|o| o.name == t.object).map(ObjectId::new).ok_or_else(|| {
-                            self.err(
-                                &tspan,
-                                format!("goal.targets[{i}].object"),
-                                format!("no object named `{}`", t.object),
-                            )
-                        })?;
-                    targets.push(Target {
-                        object,
-                        position: on_table(t.position, &tspan, &format!("goal.targets[{i}].position"))?,
-                        tolerance: self.positive_upto(
-                            &tspan,
-                            &format!("goal.targets[{i}].tolerance"),
-                            t.tolerance.unwrap_or(default::TARGET_TOLERANCE),
-                            bounds::GOAL_LENGTH_M,
-                        )?,
-                    });
-                }
-                Goal::Positioning { targets, dwell_s }
-            }
-            GoalKind::Sorting => {
-                if g.zones.is_empty() {
-                    return Err(self.err(&span, "goal.zones", "a sorting goal needs at least one [[goal.zones]]"));
-                }
-                let mut zones = Vec::new();
-                for (i, z) in g.zones.into_iter().enumerate() {
-                    let zspan = z.span();
-                    let z = z.into_inner();
-                    let min = on_table(z.min, &zspan, &format!("goal.zones[{i}].min"))?;
-                    let max = on_table(z.max, &zspan, &format!("goal.zones[{i}].max"))?;
-                    if min.x >= max.x || min.y >= max.y {
-                        return Err(self.err(&zspan, format!("goal.zones[{i}]"), "min must be below max on both axes"));
-                    }
-                    let color = Color::parse(&z.color).ok_or_else(|| {
-                        self.err(&zspan, format!("goal.zones[{i}].color"), format!("unknown colour `{}`", z.color))
-                    })?;
-                    zones.push(SortingZone { color, min, max });
-                }
-                Goal::Sorting { zones, dwell_s }
-            }
-            GoalKind::Steering => {
-                let object = object_named(&g.object, "goal.object")?;
-                let platform = match &g.platform {
-                    Some(_) => Some(object_named(&g.platform, "goal.platform")?),
-                    None => None,
-                };
-                let mut waypoints = Vec::new();
-                for (i, w) in g.waypoints.iter().enumerate() {
-                    waypoints.push(on_table(*w, &span, &format!("goal.waypoints[{i}]"))?);
-                }
-                let finish = on_table(
-                    g.finish.ok_or_else(|| self.err(&span, "goal.finish", "a steering goal needs `finish`"))?,
-                    &span,
-                    "goal.finish",
-                )?;
-                Goal::Steering(SteeringGoal {
-                    object,
-                    platform,
-                    waypoints,
-                    waypoint_radius: self.positive_upto(
-                        &span,
-                        "goal.waypoint_radius",
-                        g.waypoint_radius.unwrap_or(default::WAYPOINT_RADIUS),
-                        bounds::GOAL_LENGTH_M,
-                    )?,
-                    finish,
-                    finish_radius: self.positive_upto(
-                        &span,
-                        "goal.finish_radius",
-                        g.finish_radius.unwrap_or(default::FINISH_RADIUS),
-                        bounds::GOAL_LENGTH_M,
-                    )?,
-                })
-            }
-            GoalKind::Gather => Goal::Gather {
-                center: on_table(
-                    g.center.ok_or_else(|| self.err(&span, "goal.center", "a gather goal needs `center`"))?,
-                    &span,
-                    "goal.center",
-                )?,
-                radius: self.positive_upto(
-                    &span,
-                    "goal.radius",
-                    g.radius.ok_or_else(|| self.err(&span, "goal.radius", "a gather goal needs `radius`"))?,
+        let r = GoalReader { c: self, span, table, objects, soft, dwell_s };
+        match g.kind {
+            GoalKind::None => Ok(Goal::None),
+            GoalKind::Positioning => r.positioning(g),
+            GoalKind::Sorting => r.sorting(g),
+            GoalKind::Steering => r.steering(&g),
+            GoalKind::Gather => r.gather(&g),
+            GoalKind::Region => r.region(&g),
+            GoalKind::ClothFlat | GoalKind::Torn => r.soft_body(&g),
+        }
+    }
+}
+
+/// What a `[goal]` table's kinds share while they are checked: where the
+/// table is written, and the table, objects and soft bodies its names and
+/// points refer to. One method per goal kind.
+struct GoalReader<'a> {
+    c: &'a Checker<'a>,
+    span: Range<usize>,
+    table: &'a Table,
+    objects: &'a [ObjectSpec],
+    soft: &'a [SoftBodySpec],
+    dwell_s: f32,
+}
+
+impl GoalReader<'_> {
+    fn err(&self, field: impl Into<String>, message: impl Into<String>) -> SceneError {
+        self.c.err(&self.span, field, message)
+    }
+
+    /// The object a required name field names.
+    fn object_named(&self, name: Option<&String>, field: &str) -> Result<ObjectId, SceneError> {
+        let n = name.ok_or_else(|| self.err(field, format!("this goal needs `{field}`")))?;
+        self.objects
+            .iter()
+            .position(|o| &o.name == n)
+            .map(ObjectId::new)
+            .ok_or_else(|| self.err(field, format!("no object named `{n}`")))
+    }
+
+    /// A finite point on the table, from the table written at `sp`.
+    fn on_table(&self, p: [f32; 2], sp: &Range<usize>, field: &str) -> Result<Vec2, SceneError> {
+        let v = Vec2::from(p);
+        if !v.is_finite() {
+            return Err(self.c.err(sp, field, "must be finite"));
+        }
+        if !table_contains(self.table, v) {
+            return Err(self.c.err(
+                sp,
+                field,
+                format!(
+                    "({:.3}, {:.3}) lies off the table (±{:.3} × ±{:.3})",
+                    v.x,
+                    v.y,
+                    self.table.width / 2.0,
+                    self.table.depth / 2.0
+                ),
+            ));
+        }
+        Ok(v)
+    }
+
+    /// A required point on the table.
+    fn point(&self, p: Option<[f32; 2]>, field: &str, kind: &str) -> Result<Vec2, SceneError> {
+        let name = field.trim_start_matches("goal.");
+        let p = p.ok_or_else(|| self.err(field, format!("a {kind} goal needs `{name}`")))?;
+        self.on_table(p, &self.span, field)
+    }
+
+    /// A length in `(0, GOAL_LENGTH_M]`.
+    fn length(&self, field: &str, v: f32) -> Result<f32, SceneError> {
+        self.c.positive_upto(&self.span, field, v, bounds::GOAL_LENGTH_M)
+    }
+
+    fn positioning(&self, g: GoalFile) -> Result<Goal, SceneError> {
+        if g.targets.is_empty() {
+            return Err(self.err("goal.targets", "a positioning goal needs at least one [[goal.targets]]"));
+        }
+        let mut targets = Vec::new();
+        for (i, t) in g.targets.into_iter().enumerate() {
+            let tspan = t.span();
+            let t = t.into_inner();
+            let object = self.objects.iter().position(|o| o.name == t.object).map(ObjectId::new).ok_or_else(|| {
+                self.c.err(&tspan, format!("goal.targets[{i}].object"), format!("no object named `{}`", t.object))
+            })?;
+            targets.push(Target {
+                object,
+                position: self.on_table(t.position, &tspan, &format!("goal.targets[{i}].position"))?,
+                tolerance: self.c.positive_upto(
+                    &tspan,
+                    &format!("goal.targets[{i}].tolerance"),
+                    t.tolerance.unwrap_or(default::TARGET_TOLERANCE),
                     bounds::GOAL_LENGTH_M,
                 )?,
-                fraction: self.num(&span, "goal.fraction", g.fraction.unwrap_or(default::GATHER_FRACTION), 0.0, 1.0)?,
-                dwell_s,
-            },
-            GoalKind::Region => {
-                let min = on_table(
-                    g.min.ok_or_else(|| self.err(&span, "goal.min", "a region goal needs `min`"))?,
-                    &span,
-                    "goal.min",
-                )?;
-                let max = on_table(
-                    g.max.ok_or_else(|| self.err(&span, "goal.max", "a region goal needs `max`"))?,
-                    &span,
-                    "goal.max",
-                )?;
-                let max_height = match g.max_height {
-                    Some(h) => self.positive_upto(&span, "goal.max_height", h, bounds::GOAL_LENGTH_M)?,
-                    None => f32::INFINITY,
-                };
-                // The named thing may be a soft body (a block squeezed into a cavity).
-                if let Some(body) =
-                    g.object.as_ref().and_then(|n| soft.iter().position(|b| &b.name == n)).map(SoftId::new)
-                {
-                    Goal::SoftRegion { body, min, max, max_height, dwell_s }
-                } else {
-                    let object = object_named(&g.object, "goal.object")?;
-                    Goal::Region { object, min, max, max_height, dwell_s }
-                }
+            });
+        }
+        Ok(Goal::Positioning { targets, dwell_s: self.dwell_s })
+    }
+
+    fn sorting(&self, g: GoalFile) -> Result<Goal, SceneError> {
+        if g.zones.is_empty() {
+            return Err(self.err("goal.zones", "a sorting goal needs at least one [[goal.zones]]"));
+        }
+        let mut zones = Vec::new();
+        for (i, z) in g.zones.into_iter().enumerate() {
+            let zspan = z.span();
+            let z = z.into_inner();
+            let min = self.on_table(z.min, &zspan, &format!("goal.zones[{i}].min"))?;
+            let max = self.on_table(z.max, &zspan, &format!("goal.zones[{i}].max"))?;
+            if min.x >= max.x || min.y >= max.y {
+                return Err(self.c.err(&zspan, format!("goal.zones[{i}]"), "min must be below max on both axes"));
             }
-            GoalKind::ClothFlat | GoalKind::Torn => {
-                let name = g
-                    .body
-                    .as_ref()
-                    .ok_or_else(|| self.err(&span, "goal.body", "this goal needs `body`, the name of a soft body"))?;
-                let body = soft
-                    .iter()
-                    .position(|b| &b.name == name)
-                    .map(SoftId::new)
-                    .ok_or_else(|| self.err(&span, "goal.body", format!("no soft body named `{name}`")))?;
-                if g.kind == GoalKind::ClothFlat {
-                    if soft[body.index()].kind != SoftKind::Cloth {
-                        return Err(self.err(&span, "goal.body", format!("`{name}` is not a cloth")));
-                    }
-                    let min_area_fraction = self.num(
-                        &span,
-                        "goal.min_area_fraction",
-                        g.min_area_fraction.unwrap_or(default::MIN_AREA_FRACTION),
-                        0.01,
-                        1.0,
-                    )?;
-                    Goal::ClothFlat { body, min_area_fraction, dwell_s }
-                } else {
-                    if soft[body.index()].tear_strain.is_none() {
-                        return Err(self.err(
-                            &span,
-                            "goal.body",
-                            format!("`{name}` cannot tear: give it a `tear_strain`"),
-                        ));
-                    }
-                    let pieces = self.count(&span, "goal.pieces", g.pieces.unwrap_or(default::TEAR_PIECES), 2, 100)?;
-                    let min_piece_fraction = self.num(
-                        &span,
-                        "goal.min_piece_fraction",
-                        g.min_piece_fraction.unwrap_or(default::MIN_PIECE_FRACTION),
-                        0.0,
-                        1.0 / pieces as f32,
-                    )?;
-                    Goal::Torn { body, pieces: pieces as usize, min_piece_fraction }
-                }
-            }
+            let color = Color::parse(&z.color).ok_or_else(|| {
+                self.c.err(&zspan, format!("goal.zones[{i}].color"), format!("unknown colour `{}`", z.color))
+            })?;
+            zones.push(SortingZone { color, min, max });
+        }
+        Ok(Goal::Sorting { zones, dwell_s: self.dwell_s })
+    }
+
+    fn steering(&self, g: &GoalFile) -> Result<Goal, SceneError> {
+        let object = self.object_named(g.object.as_ref(), "goal.object")?;
+        let platform = match &g.platform {
+            Some(_) => Some(self.object_named(g.platform.as_ref(), "goal.platform")?),
+            None => None,
+        };
+        let mut waypoints = Vec::new();
+        for (i, w) in g.waypoints.iter().enumerate() {
+            waypoints.push(self.on_table(*w, &self.span, &format!("goal.waypoints[{i}]"))?);
+        }
+        let finish = self.point(g.finish, "goal.finish", "steering")?;
+        Ok(Goal::Steering(SteeringGoal {
+            object,
+            platform,
+            waypoints,
+            waypoint_radius: self
+                .length("goal.waypoint_radius", g.waypoint_radius.unwrap_or(default::WAYPOINT_RADIUS))?,
+            finish,
+            finish_radius: self.length("goal.finish_radius", g.finish_radius.unwrap_or(default::FINISH_RADIUS))?,
+        }))
+    }
+
+    fn gather(&self, g: &GoalFile) -> Result<Goal, SceneError> {
+        let center = self.point(g.center, "goal.center", "gather")?;
+        let radius = g.radius.ok_or_else(|| self.err("goal.radius", "a gather goal needs `radius`"))?;
+        Ok(Goal::Gather {
+            center,
+            radius: self.length("goal.radius", radius)?,
+            fraction: self.c.num(
+                &self.span,
+                "goal.fraction",
+                g.fraction.unwrap_or(default::GATHER_FRACTION),
+                0.0,
+                1.0,
+            )?,
+            dwell_s: self.dwell_s,
         })
+    }
+
+    fn region(&self, g: &GoalFile) -> Result<Goal, SceneError> {
+        let min = self.point(g.min, "goal.min", "region")?;
+        let max = self.point(g.max, "goal.max", "region")?;
+        let max_height = match g.max_height {
+            Some(h) => self.length("goal.max_height", h)?,
+            None => f32::INFINITY,
+        };
+        let dwell_s = self.dwell_s;
+        // The named thing may be a soft body (a block squeezed into a cavity).
+        if let Some(body) = g.object.as_ref().and_then(|n| self.soft.iter().position(|b| &b.name == n)).map(SoftId::new)
+        {
+            Ok(Goal::SoftRegion { body, min, max, max_height, dwell_s })
+        } else {
+            let object = self.object_named(g.object.as_ref(), "goal.object")?;
+            Ok(Goal::Region { object, min, max, max_height, dwell_s })
+        }
+    }
+
+    /// `cloth_flat` and `torn`: goals on a named soft body.
+    fn soft_body(&self, g: &GoalFile) -> Result<Goal, SceneError> {
+        let (c, span) = (self.c, &self.span);
+        let name =
+            g.body.as_ref().ok_or_else(|| self.err("goal.body", "this goal needs `body`, the name of a soft body"))?;
+        let body = self
+            .soft
+            .iter()
+            .position(|b| &b.name == name)
+            .map(SoftId::new)
+            .ok_or_else(|| self.err("goal.body", format!("no soft body named `{name}`")))?;
+        let spec = &self.soft[body.index()];
+        if g.kind == GoalKind::ClothFlat {
+            if spec.kind != SoftKind::Cloth {
+                return Err(self.err("goal.body", format!("`{name}` is not a cloth")));
+            }
+            let min_area_fraction = c.num(
+                span,
+                "goal.min_area_fraction",
+                g.min_area_fraction.unwrap_or(default::MIN_AREA_FRACTION),
+                0.01,
+                1.0,
+            )?;
+            Ok(Goal::ClothFlat { body, min_area_fraction, dwell_s: self.dwell_s })
+        } else {
+            if spec.tear_strain.is_none() {
+                return Err(self.err("goal.body", format!("`{name}` cannot tear: give it a `tear_strain`")));
+            }
+            let pieces = c.count(span, "goal.pieces", g.pieces.unwrap_or(default::TEAR_PIECES), 2, 100)?;
+            let min_piece_fraction = c.num(
+                span,
+                "goal.min_piece_fraction",
+                g.min_piece_fraction.unwrap_or(default::MIN_PIECE_FRACTION),
+                0.0,
+                1.0 / pieces as f32,
+            )?;
+            Ok(Goal::Torn { body, pieces: pieces as usize, min_piece_fraction })
+        }
     }
 }
 
