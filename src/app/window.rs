@@ -403,19 +403,8 @@ impl App {
         gfx.target.resize(&device, &mut gfx.egui_renderer, size);
         gfx.renderer.prepare(&self.lab.draw_list(size), size)?;
 
-        let (frame, suboptimal) = match gfx.surface.get_current_texture() {
-            wgpu::CurrentSurfaceTexture::Success(f) => (f, false),
-            wgpu::CurrentSurfaceTexture::Suboptimal(f) => (f, true),
-            wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => {
-                return Ok(());
-            }
-            wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
-                gfx.surface.configure(&device, &gfx.config);
-                return Ok(());
-            }
-            wgpu::CurrentSurfaceTexture::Validation => {
-                bail!("the window surface reported a validation error")
-            }
+        let Some((frame, suboptimal)) = acquire(gfx, &device)? else {
+            return Ok(());
         };
         let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("frame") });
         gfx.renderer.paint(&mut encoder, &gfx.target.view);
@@ -435,22 +424,8 @@ impl App {
         let (cached, live) = primitives.split_at(split);
         let mut commands = Vec::new();
         if gfx.direct {
-            let size = [gfx.config.width, gfx.config.height];
-            let stale = !full.textures_delta.set.is_empty()
-                || gfx.panel.as_ref().is_none_or(|p| {
-                    [p.texture.width(), p.texture.height()] != size || !ui_cache::same_primitives(&p.drawn, cached)
-                });
-            if stale {
-                let texture = match gfx.panel.take() {
-                    Some(p) if [p.texture.width(), p.texture.height()] == size => p.texture,
-                    _ => twin_texture(&device, &gfx.config),
-                };
-                commands.extend(gfx.panel_renderer.update_buffers(&device, &queue, &mut encoder, cached, &screen));
-                let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
-                let clear = wgpu::LoadOp::Clear(wgpu::Color::BLACK);
-                gfx.panel_renderer.render(&mut pass(&mut encoder, &view, clear).forget_lifetime(), cached, &screen);
-                gfx.panel = Some(PanelTexture { texture, drawn: cached.to_vec() });
-            }
+            let textures_changed = !full.textures_delta.set.is_empty();
+            commands.extend(redraw_panel(gfx, &mut encoder, cached, &screen, textures_changed));
         }
         commands.extend(gfx.egui_renderer.update_buffers(&device, &queue, &mut encoder, live, &screen));
         let at = [min.x as u32, min.y as u32];
@@ -459,13 +434,7 @@ impl App {
         // `--screenshot-after`: this very frame, read back.
         let capture = match &self.screenshot {
             Some(s) if self.lab.wall >= s.after_s => {
-                Some(if gfx.config.usage.contains(wgpu::TextureUsages::COPY_SRC) {
-                    Readback::record(&device, &mut encoder, &frame.texture)
-                } else {
-                    let twin = twin_texture(&device, &gfx.config);
-                    compose(gfx, &mut encoder, &twin, at, live, &screen);
-                    Readback::record(&device, &mut encoder, &twin)
-                })
+                Some(read_back(gfx, &mut encoder, &frame.texture, at, live, &screen))
             }
             _ => None,
         };
@@ -490,15 +459,7 @@ impl App {
         if let Some(readback) = capture
             && let Some(shot) = self.screenshot.take()
         {
-            let image = readback.finish(&device)?;
-            save_png(&image, &shot.path)?;
-            eprintln!(
-                "surfacelab demo: window screenshot {}x{} at {:.1} s -> {}",
-                image.width(),
-                image.height(),
-                self.lab.wall,
-                shot.path.display()
-            );
+            save_screenshot(readback, &device, &shot, self.lab.wall)?;
         }
         for a in actions {
             self.apply(a);
@@ -673,6 +634,86 @@ fn pass<'e>(
 
 /// An off-screen texture like the window's, for captures when the surface
 /// itself cannot be copied.
+/// Records a read-back of this frame as the window shows it: the frame
+/// itself where the surface allows copies, else the same picture composed
+/// again on a twin texture.
+fn read_back(
+    gfx: &mut Gfx,
+    encoder: &mut wgpu::CommandEncoder,
+    frame: &wgpu::Texture,
+    at: [u32; 2],
+    live: &[egui::ClippedPrimitive],
+    screen: &egui_wgpu::ScreenDescriptor,
+) -> Readback {
+    let device = gfx.gpu.device.clone();
+    if gfx.config.usage.contains(wgpu::TextureUsages::COPY_SRC) {
+        Readback::record(&device, encoder, frame)
+    } else {
+        let twin = twin_texture(&device, &gfx.config);
+        compose(gfx, encoder, &twin, at, live, screen);
+        Readback::record(&device, encoder, &twin)
+    }
+}
+
+/// Waits for a read-back and writes it where `--screenshot-after` asked.
+fn save_screenshot(readback: Readback, device: &wgpu::Device, shot: &Screenshot, wall: f64) -> anyhow::Result<()> {
+    let image = readback.finish(device)?;
+    save_png(&image, &shot.path)?;
+    eprintln!(
+        "surfacelab demo: window screenshot {}x{} at {wall:.1} s -> {}",
+        image.width(),
+        image.height(),
+        shot.path.display()
+    );
+    Ok(())
+}
+
+/// The window's next surface texture, and whether it is suboptimal; `None`
+/// when there is nothing to draw on this frame (occluded, timed out, or the
+/// surface was just reconfigured).
+fn acquire(gfx: &mut Gfx, device: &wgpu::Device) -> anyhow::Result<Option<(wgpu::SurfaceTexture, bool)>> {
+    Ok(match gfx.surface.get_current_texture() {
+        wgpu::CurrentSurfaceTexture::Success(f) => Some((f, false)),
+        wgpu::CurrentSurfaceTexture::Suboptimal(f) => Some((f, true)),
+        wgpu::CurrentSurfaceTexture::Timeout | wgpu::CurrentSurfaceTexture::Occluded => None,
+        wgpu::CurrentSurfaceTexture::Outdated | wgpu::CurrentSurfaceTexture::Lost => {
+            gfx.surface.configure(device, &gfx.config);
+            None
+        }
+        wgpu::CurrentSurfaceTexture::Validation => bail!("the window surface reported a validation error"),
+    })
+}
+
+/// Redraws the cached panel texture if the panel changed (its primitives,
+/// its textures or the window size); returns the command buffers egui needs.
+fn redraw_panel(
+    gfx: &mut Gfx,
+    encoder: &mut wgpu::CommandEncoder,
+    cached: &[egui::ClippedPrimitive],
+    screen: &egui_wgpu::ScreenDescriptor,
+    textures_changed: bool,
+) -> Vec<wgpu::CommandBuffer> {
+    let size = [gfx.config.width, gfx.config.height];
+    let stale = textures_changed
+        || gfx.panel.as_ref().is_none_or(|p| {
+            [p.texture.width(), p.texture.height()] != size || !ui_cache::same_primitives(&p.drawn, cached)
+        });
+    if !stale {
+        return Vec::new();
+    }
+    let (device, queue) = (gfx.gpu.device.clone(), gfx.gpu.queue.clone());
+    let texture = match gfx.panel.take() {
+        Some(p) if [p.texture.width(), p.texture.height()] == size => p.texture,
+        _ => twin_texture(&device, &gfx.config),
+    };
+    let commands = gfx.panel_renderer.update_buffers(&device, &queue, encoder, cached, screen);
+    let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
+    let clear = wgpu::LoadOp::Clear(wgpu::Color::BLACK);
+    gfx.panel_renderer.render(&mut pass(encoder, &view, clear).forget_lifetime(), cached, screen);
+    gfx.panel = Some(PanelTexture { texture, drawn: cached.to_vec() });
+    commands
+}
+
 fn twin_texture(device: &wgpu::Device, config: &wgpu::SurfaceConfiguration) -> wgpu::Texture {
     device.create_texture(&wgpu::TextureDescriptor {
         label: Some("window capture"),
