@@ -106,3 +106,53 @@ fn cursors_and_blobs_sent_over_udp_become_hands() {
     // Dropping the listener stops its thread (the test would hang otherwise).
     drop(listener);
 }
+
+/// Each physics step sees the tracker's hands at its own wall time (issue
+/// 18): a step between two packets sees the finger on the line between
+/// the two reports, further along for a later step, and a step before a
+/// packet arrived does not see what it reports. Timing-free: every query
+/// lies between instants the test observed, so the answers are exact
+/// orderings, not tolerances.
+#[test]
+fn each_step_sees_the_tracker_at_its_own_time() {
+    use surfacelab::input::Input;
+    let listener = TuioListener::bind("127.0.0.1:0".parse().expect("address")).expect("binds a free port");
+    let sender = UdpSocket::bind("127.0.0.1:0").expect("sender socket");
+    let to = listener.local_addr();
+    let origin = Instant::now();
+    let wall = |at: Instant| at.duration_since(origin).as_secs_f64();
+    let cursor = |x: f32| vec![OscType::Int(5), f(x), f(0.5), f(0.0), f(0.0), f(0.0)];
+
+    sender.send_to(&frame("/tuio/2Dcur", 1, &[cursor(0.2)]), to).expect("sends");
+    let a = wait_for(&listener, |h| h.len() == 1);
+    assert_eq!(a.len(), 1, "the first report arrived");
+    let seen_a = Instant::now();
+    std::thread::sleep(Duration::from_millis(20));
+    let before_b = Instant::now();
+    sender
+        .send_to(
+            &frame("/tuio/2Dcur", 2, &[cursor(0.6), vec![OscType::Int(6), f(0.9), f(0.9), f(0.0), f(0.0), f(0.0)]]),
+            to,
+        )
+        .expect("sends");
+    let b = wait_for(&listener, |h| h.len() == 2);
+    assert_eq!(b.len(), 2, "the second report arrived");
+    let seen_b = Instant::now();
+
+    let mut input = Input::new(None, Some(listener));
+    input.set_clock(origin);
+    let x_at = |input: &mut Input, at: Instant| {
+        let hands = input.hands_at(wall(at), 0.0, TABLE);
+        (hands.len(), hands.iter().find(|h| (h.pose.y - 0.0).abs() < 1e-3).map(|h| h.pose.x))
+    };
+    // On a 1 m table, x = 0.2 is -0.3 m and x = 0.6 is +0.1 m.
+    let (n, x) = x_at(&mut input, seen_a);
+    assert_eq!(n, 1, "the second finger is not down before its packet arrived");
+    let early = x.expect("the first finger");
+    let (_, x) = x_at(&mut input, before_b);
+    let later = x.expect("the first finger");
+    assert!(-0.3 <= early && early < later && later < 0.1, "on the line, moving on: {early} then {later}");
+    let (n, x) = x_at(&mut input, seen_b);
+    assert_eq!(n, 2, "both down once the second packet arrived");
+    assert!((x.expect("the first finger") - 0.1).abs() < 1e-5, "at the second report");
+}

@@ -163,8 +163,10 @@ fn view_texture(
 }
 
 impl App {
-    fn new(options: DemoOptions, lab: Lab, interrupted: Arc<AtomicBool>) -> Self {
+    fn new(options: DemoOptions, mut lab: Lab, interrupted: Arc<AtomicBool>) -> Self {
         let now = Instant::now();
+        // Wall time (`Lab::wall`) counts from here; TUIO packets are timed by the same clock.
+        lab.input.set_clock(now);
         let screenshot = options.screenshot_after.clone();
         Self {
             options,

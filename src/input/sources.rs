@@ -62,6 +62,9 @@ pub struct Input {
     touch_from: Vec<(u64, f64, [f32; 2])>,
     /// The latest stamp pushed.
     newest: f64,
+    /// The instant wall time 0 stands for, once a window clock runs (see
+    /// [`Input::set_clock`]): TUIO packets are timed by the real clock.
+    clock: Option<std::time::Instant>,
 }
 
 impl Input {
@@ -135,7 +138,14 @@ impl Input {
     /// The hands on the table at session time `t`, on a table of `table`
     /// = [width, depth] metres, as the events applied so far leave them.
     pub fn hands(&self, t: f64, table: [f32; 2]) -> Vec<Hand> {
-        self.merge(self.mouse.hands(), self.touches.iter().copied(), t, table)
+        self.merge(self.mouse.hands(), self.touches.iter().copied(), t, None, table)
+    }
+
+    /// Wall time 0 is `origin`: from now on a TUIO tracker's hands are
+    /// taken at each step's own wall time, between the packets that
+    /// arrived before and after it, rather than as they are now.
+    pub fn set_clock(&mut self, origin: std::time::Instant) {
+        self.clock = Some(origin);
     }
 
     /// The hands at wall time `wall` (session time `t`) for one physics
@@ -164,7 +174,7 @@ impl Input {
                 }
             })
             .collect();
-        self.merge(mouse, touches.into_iter(), t, table)
+        self.merge(mouse, touches.into_iter(), t, Some(wall), table)
     }
 
     /// The first pending move after `wall` of the cursor (`None`) or of
@@ -187,6 +197,7 @@ impl Input {
         mut hands: Vec<Hand>,
         touches: impl Iterator<Item = (u64, [f32; 2])>,
         t: f64,
+        wall: Option<f64>,
         table: [f32; 2],
     ) -> Vec<Hand> {
         hands.extend(
@@ -199,7 +210,12 @@ impl Input {
             }));
         }
         if let Some(tuio) = &self.tuio {
-            hands.extend(tuio.hands(table));
+            match (self.clock, wall) {
+                (Some(origin), Some(wall)) => {
+                    hands.extend(tuio.hands_at(table, origin + std::time::Duration::from_secs_f64(wall.max(0.0))));
+                }
+                _ => hands.extend(tuio.hands(table)),
+            }
         }
         hands
     }

@@ -1,8 +1,10 @@
 //! The TUIO listener: a UDP socket read on its own thread, each datagram
-//! handed to the pure decoder ([`crate::input::tuio::TuioState`]). The
-//! window asks for the current hands once per physics step.
+//! handed to the pure decoder ([`crate::input::tuio::TuioState`]) and its
+//! result kept with its arrival time ([`Timeline`]), so that each physics
+//! step asks for the hands at its own time.
 
 use super::decode::{TuioState, TuioStats};
+use super::timeline::Timeline;
 use crate::pipeline::surface::Hand;
 use std::net::{SocketAddr, UdpSocket};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -18,7 +20,7 @@ const MAX_DATAGRAM: usize = 65_536;
 /// A bound socket and the thread reading it. Dropping it stops the thread.
 pub struct TuioListener {
     addr: SocketAddr,
-    state: Arc<Mutex<TuioState>>,
+    state: Arc<Mutex<Tracked>>,
     stop: Arc<AtomicBool>,
     thread: Option<JoinHandle<()>>,
     start: Instant,
@@ -37,7 +39,7 @@ impl TuioListener {
         let socket = UdpSocket::bind(addr)?;
         socket.set_read_timeout(Some(POLL))?;
         let addr = socket.local_addr()?;
-        let state = Arc::new(Mutex::new(TuioState::new()));
+        let state = Arc::new(Mutex::new(Tracked::default()));
         let stop = Arc::new(AtomicBool::new(false));
         let start = Instant::now();
         let thread = {
@@ -53,20 +55,28 @@ impl TuioListener {
 
     /// The hands touching a table of [width, depth] metres now.
     pub fn hands(&self, table: [f32; 2]) -> Vec<Hand> {
-        self.lock().hands(table, self.start.elapsed().as_secs_f64())
+        self.lock().now.hands(table, self.start.elapsed().as_secs_f64())
+    }
+
+    /// The hands on a table of [width, depth] metres as they were at
+    /// `at`, between the packets that arrived before and after it (see
+    /// [`Timeline`]).
+    pub fn hands_at(&self, table: [f32; 2], at: Instant) -> Vec<Hand> {
+        let t = at.saturating_duration_since(self.start).as_secs_f64();
+        self.lock().past.hands_at(table, t)
     }
 
     pub fn stats(&self) -> TuioStats {
-        self.lock().stats()
+        self.lock().now.stats()
     }
 
     /// Live (cursors, blobs) now.
     pub fn live_counts(&self) -> (usize, usize) {
-        let (c, b) = self.lock().live(self.start.elapsed().as_secs_f64());
+        let (c, b) = self.lock().now.live(self.start.elapsed().as_secs_f64());
         (c.len(), b.len())
     }
 
-    fn lock(&self) -> std::sync::MutexGuard<'_, TuioState> {
+    fn lock(&self) -> std::sync::MutexGuard<'_, Tracked> {
         // The decoder never panics mid-update; a poisoned lock still holds
         // a consistent state.
         self.state.lock().unwrap_or_else(PoisonError::into_inner)
@@ -82,15 +92,26 @@ impl Drop for TuioListener {
     }
 }
 
-fn read_loop(socket: &UdpSocket, state: &Mutex<TuioState>, stop: &AtomicBool, start: Instant) {
+/// The decoder's state now and after each packet of the last second.
+#[derive(Debug, Default)]
+struct Tracked {
+    now: TuioState,
+    past: Timeline,
+}
+
+fn read_loop(socket: &UdpSocket, state: &Mutex<Tracked>, stop: &AtomicBool, start: Instant) {
     let mut buf = vec![0u8; MAX_DATAGRAM];
     while !stop.load(Ordering::Relaxed) {
         match socket.recv_from(&mut buf) {
             Ok((n, from)) => {
                 let now = start.elapsed().as_secs_f64();
-                let result = state.lock().unwrap_or_else(PoisonError::into_inner).receive(&buf[..n], now);
-                if let Err(e) = result {
-                    tracing::debug!("TUIO packet from {from} ignored: {e}");
+                let mut tracked = state.lock().unwrap_or_else(PoisonError::into_inner);
+                match tracked.now.receive(&buf[..n], now) {
+                    Ok(()) => {
+                        let Tracked { now: current, past } = &mut *tracked;
+                        past.record(now, current);
+                    }
+                    Err(e) => tracing::debug!("TUIO packet from {from} ignored: {e}"),
                 }
             }
             Err(e) if matches!(e.kind(), std::io::ErrorKind::WouldBlock | std::io::ErrorKind::TimedOut) => {}

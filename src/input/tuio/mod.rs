@@ -3,6 +3,8 @@
 
 mod decode;
 mod listener;
+mod timeline;
 
 pub use decode::*;
 pub use listener::*;
+pub use timeline::Timeline;
