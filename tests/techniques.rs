@@ -358,3 +358,54 @@ fn joint_feedback_outlines_its_side_collision_prism() {
     s.step(&[]).expect("steps");
     assert!(s.feedback().is_empty(), "gone when the hand lifts");
 }
+
+/// Shape hit-testing (issue 20): a flat hand laid down with its fingers
+/// over a 6 cm ball and its palm, where the contact's centroid lies, on
+/// the table beside it, then slid 15 cm sideways. Joint grabs the ball
+/// under the fingers and carries it; Proxy puts its body on the ball and
+/// pushes it along. With the paper's centroid hit-testing neither touches
+/// it: Joint's side prism cannot stand where the ball is, and Proxy's cube
+/// stands on the table under the palm.
+#[test]
+fn a_flat_hand_whose_centre_misses_a_ball_still_moves_it() {
+    let base = std::fs::read_to_string(asset("tasks/cases/ball.toml")).expect("scene");
+    // The flat hand's contact centroid is 7 cm behind its pose point
+    // along the fingers; at (0, -0.09), fingers along +y, the fingertips
+    // reach over the ball at the origin and the centroid is off it.
+    let g = Gesture::from_str(
+        r#"format = "surfacelab-gesture"
+version = 1
+[[hands]]
+id = 1
+kind = "flat_hand"
+keys = [
+  { t = 0.0, pos = [0.0, -0.09], angle_deg = 0.0, spread = 0.3 },
+  { t = 0.3 },
+  { t = 1.3, pos = [0.15, -0.09] },
+]
+"#,
+        "sideways",
+    )
+    .expect("gesture");
+    for (hit_test, kind) in [
+        ("outline", TechniqueKind::Joint),
+        ("outline", TechniqueKind::Proxy),
+        ("centroid", TechniqueKind::Joint),
+        ("centroid", TechniqueKind::Proxy),
+    ] {
+        let text = format!("{base}\n[technique]\nhit_test = \"{hit_test}\"\n");
+        let sc = scene::parse(&text, "ball.toml").expect("scene");
+        let mut s = Session::new(&sc, kind, SessionOptions::default()).expect("session");
+        s.replay_until(&g, g.duration() + 0.5).expect("replay");
+        let moved = s.world().object_pose(ObjectId::new(0)).position.x;
+        println!("{hit_test} {kind}: the ball moved {moved:.3} m along the hand's 0.15 m");
+        if hit_test == "outline" {
+            // Joint carries what it holds (at least 80% of the hand's
+            // travel); Proxy's cube on the ball rolls it along (at least 40%).
+            let least = if kind == TechniqueKind::Joint { 0.12 } else { 0.06 };
+            assert!(moved > least, "{kind}: the hand's fingers over the ball moved it only {moved:.3} m");
+        } else {
+            assert!(moved.abs() < 0.01, "{kind}: centroid hit-testing moved the ball {moved:.3} m");
+        }
+    }
+}

@@ -24,6 +24,19 @@ pub enum PressureMode {
     Weight,
 }
 
+/// What Joint and Proxy take a contact to touch.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum HitTest {
+    /// The object under the contact's centroid, else the one its outline
+    /// overlaps (see `hit_test.rs`): a flat hand whose centre misses a ball
+    /// still grabs it (Joint) or lands its proxy on it (Proxy).
+    Outline,
+    /// The object under the contact's centroid only: the paper's
+    /// point-based techniques, as its study ran them.
+    Centroid,
+}
+
 /// Parameters of all four techniques. Units: kg, m, s, N.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -92,6 +105,8 @@ pub struct TechniqueConfig {
     /// Contact speeds above this are clamped (m/s): lost tracking never flings.
     pub max_contact_speed: f32,
     pub pressure: PressureMode,
+    /// How Joint and Proxy find what a contact touches.
+    pub hit_test: HitTest,
 }
 
 impl Default for TechniqueConfig {
@@ -117,6 +132,7 @@ impl Default for TechniqueConfig {
             particle_cull: true,
             max_contact_speed: 4.0,
             pressure: PressureMode::Off,
+            hit_test: HitTest::Outline,
         }
     }
 }

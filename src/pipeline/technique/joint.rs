@@ -27,8 +27,9 @@
 //! `joint_break_force`. Several contacts grab several particles, so two hands
 //! pulling apart stretch (and may tear) the sheet between them.
 
+use super::hit_test;
 use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
-use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use super::{Feedback, HitTest, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::vision::Contact;
 use crate::pipeline::world::{Layer, ObjectId, TechniqueBody, TechniqueJoint, World, WorldError};
 use glam::{Vec2, Vec3};
@@ -54,6 +55,9 @@ struct Grab {
     z: f32,
     /// Hand velocity last frame (m/s), for a clean release.
     v_hand: Vec2,
+    /// Where on the glass the grab point sits from the contact's centroid
+    /// (m): zero for a grab under the centroid (see `grab_by_outline`).
+    offset: Vec2,
 }
 
 /// A contact holding a soft-body particle through its kinematic anchor.
@@ -130,7 +134,32 @@ impl JointTechnique {
             .local_anchor2(local)
             .build();
         let joint = world.attach(anchor, object, joint)?;
-        Some(Hold::Object(Grab { anchor, joint, object, local, z: hit.point.z, v_hand }))
+        Some(Hold::Object(Grab { anchor, joint, object, local, z: hit.point.z, v_hand, offset: Vec2::ZERO }))
+    }
+
+    /// A grab where the contact's outline overlaps an object its centroid
+    /// misses, at the overlap point nearest the centroid (`hit_test`); the
+    /// anchor then keeps that offset from the centroid.
+    fn grab_by_outline(
+        &self,
+        world: &mut World,
+        c: &Contact,
+        input: &TechniqueInput<'_>,
+        centroid: Vec2,
+        v_hand: Vec2,
+    ) -> Option<Hold> {
+        if self.config.hit_test != HitTest::Outline {
+            return None;
+        }
+        let outline: Vec<Vec2> =
+            c.blob.hull.iter().map(|q| table_point(input.sensor, [q[0] as f32, q[1] as f32])).collect();
+        let nearest = hit_test::overlaps(world, &outline, centroid)
+            .into_iter()
+            .min_by(|a, b| (a.point - centroid).length().total_cmp(&(b.point - centroid).length()))?;
+        match self.try_grab(world, nearest.point, v_hand)? {
+            Hold::Object(g) => Some(Hold::Object(Grab { offset: nearest.point - centroid, ..g })),
+            soft @ Hold::Soft(_) => Some(soft),
+        }
     }
 
     /// The soft particle held by `anchor` (its position) and the force (N)
@@ -329,7 +358,7 @@ impl Technique for JointTechnique {
             }
             if let Some(mut g) = self.grabs.get(&c.id).copied() {
                 g.v_hand = v_hand;
-                let goal = at_height(world, target, g.z);
+                let goal = at_height(world, target + g.offset, g.z);
                 let cur = world.technique_body(g.anchor).map_or(Vec3::ZERO, RigidBody::translation);
                 let next = cur.truncate() + clamp_len(goal - cur.truncate(), max_step);
                 if let Some(a) = world.technique_body_mut(g.anchor) {
@@ -349,7 +378,9 @@ impl Technique for JointTechnique {
             }
             if !self.broken.contains(&c.id)
                 && !self.pushers.contains_key(&c.id)
-                && let Some(hold) = self.try_grab(world, target, v_hand)
+                && let Some(hold) = self
+                    .try_grab(world, target, v_hand)
+                    .or_else(|| self.grab_by_outline(world, c, input, target, v_hand))
             {
                 match hold {
                     Hold::Object(g) => self.grabs.insert(c.id, g).map(|_| ()),

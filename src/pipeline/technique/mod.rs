@@ -8,6 +8,7 @@
 mod config;
 mod direct;
 mod feedback;
+pub mod hit_test;
 mod hybrid;
 mod joint;
 mod kind;
@@ -15,7 +16,7 @@ mod particle;
 mod proxy;
 mod surface_point;
 
-pub use config::{ConfigError, PressureMode, ProxyShape, TechniqueConfig};
+pub use config::{ConfigError, HitTest, PressureMode, ProxyShape, TechniqueConfig};
 pub use direct::DirectForce;
 pub use feedback::Feedback;
 pub use hybrid::HybridTechnique;
