@@ -19,6 +19,8 @@ use criterion::{BenchmarkId, Criterion};
 use parry2d_f64::math::{Pose, Vector};
 use parry2d_f64::query;
 use parry2d_f64::shape::ConvexPolygon as ParryPolygon;
+use rand::{Rng, SeedableRng};
+use rand_chacha::ChaCha8Rng;
 use surfacelab::contact::{
     CachedBlock, CircleFit, ConvexPolygon, EntranceBlock, Relation, Vec2, brute_force_report, contact_report,
     discretize_circle, log_log_slope,
@@ -43,6 +45,49 @@ fn pair(n: usize) -> (ConvexPolygon, ConvexPolygon) {
     let a = discretize_circle(Vec2::ZERO, 1.0, n, CircleFit::Inscribed, 0.1).expect("n-gon");
     let b = discretize_circle(Vec2::new(0.6, 0.3), 1.0, n, CircleFit::Inscribed, 0.37).expect("n-gon");
     (a, b)
+}
+
+/// Sizes of the random-pair comparison with parry (issue 20).
+const RANDOM_SIZES: [usize; 8] = [8, 16, 32, 64, 128, 256, 512, 1024];
+/// Random pairs per size; each call takes the next, so no one pair's
+/// geometry decides a timing.
+const RANDOM_PAIRS: usize = 32;
+
+/// `n` random points, counter-clockwise, on an ellipse with random axes,
+/// turn and centre near `at`: a random convex polygon (no three collinear).
+fn random_points(rng: &mut ChaCha8Rng, n: usize, at: [f64; 2]) -> Vec<Vec2> {
+    let (ax, ay) = (rng.random_range(0.5..1.5), rng.random_range(0.5..1.5));
+    let turn: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+    let mut angles: Vec<f64> = (0..n).map(|_| rng.random_range(0.0..std::f64::consts::TAU)).collect();
+    angles.sort_by(f64::total_cmp);
+    angles.dedup();
+    angles
+        .iter()
+        .map(|t| {
+            let (x, y) = (ax * t.cos(), ay * t.sin());
+            Vec2::new(at[0] + x * turn.cos() - y * turn.sin(), at[1] + x * turn.sin() + y * turn.cos())
+        })
+        .collect()
+}
+
+/// Random convex pairs of `n` vertices each: overlapping (centres 0.5
+/// apart) or separated (4 apart, beyond the largest axes), as raw points.
+fn random_pairs(n: usize, separated: bool) -> Vec<(Vec<Vec2>, Vec<Vec2>)> {
+    let mut rng = ChaCha8Rng::seed_from_u64(20 + n as u64 + u64::from(separated));
+    let d = if separated { 4.0 } else { 0.5 };
+    (0..RANDOM_PAIRS)
+        .map(|_| {
+            let dir: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+            (random_points(&mut rng, n, [0.0, 0.0]), random_points(&mut rng, n, [d * dir.cos(), d * dir.sin()]))
+        })
+        .collect()
+}
+
+fn built(pairs: &[(Vec<Vec2>, Vec<Vec2>)]) -> Vec<(ConvexPolygon, ConvexPolygon)> {
+    pairs
+        .iter()
+        .map(|(a, b)| (ConvexPolygon::new(a).expect("convex"), ConvexPolygon::new(b).expect("convex")))
+        .collect()
 }
 
 fn parry(p: &ConvexPolygon) -> ParryPolygon {
@@ -116,6 +161,61 @@ fn benches(c: &mut Criterion) {
             k = k.wrapping_add(1);
             let angle = f64::from(k % 64) * 0.098;
             cached.signed_distance(black_box(Vec2::new(0.6 + 4.0 * angle.cos(), 0.3 + 4.0 * angle.sin())))
+        })
+    });
+    for (separated, ours, theirs) in
+        [(false, "random_overlap", "parry_random_overlap"), (true, "random_separated", "parry_random_separated")]
+    {
+        bench(c, ours, &RANDOM_SIZES, |n| {
+            let pairs = built(&random_pairs(n, separated));
+            let mut k = 0;
+            Box::new(move || {
+                k = (k + 1) % pairs.len();
+                contact_report(black_box(&pairs[k].0), black_box(&pairs[k].1)).distance
+            })
+        });
+        bench(c, theirs, &RANDOM_SIZES, |n| {
+            let pairs: Vec<(ParryPolygon, ParryPolygon)> =
+                built(&random_pairs(n, separated)).iter().map(|(a, b)| (parry(a), parry(b))).collect();
+            let id = Pose::identity();
+            let mut k = 0;
+            // A prediction distance past any gap, so parry returns the
+            // distance of separated pairs as ours does.
+            Box::new(move || {
+                k = (k + 1) % pairs.len();
+                query::contact(&id, black_box(&pairs[k].0), &id, black_box(&pairs[k].1), 100.0)
+                    .ok()
+                    .flatten()
+                    .map_or(f64::NAN, |contact| contact.dist)
+            })
+        });
+    }
+    bench(c, "random_from_points", &RANDOM_SIZES, |n| {
+        let pairs = random_pairs(n, false);
+        let mut k = 0;
+        Box::new(move || {
+            k = (k + 1) % pairs.len();
+            let a = ConvexPolygon::new(black_box(&pairs[k].0)).expect("convex");
+            let b = ConvexPolygon::new(black_box(&pairs[k].1)).expect("convex");
+            contact_report(&a, &b).distance
+        })
+    });
+    bench(c, "parry_random_from_points", &RANDOM_SIZES, |n| {
+        let pairs: Vec<(Vec<Vector>, Vec<Vector>)> = random_pairs(n, false)
+            .into_iter()
+            .map(|(a, b)| {
+                let v = |p: Vec<Vec2>| p.iter().map(|q| Vector::new(q.x, q.y)).collect::<Vec<_>>();
+                (v(a), v(b))
+            })
+            .collect();
+        let id = Pose::identity();
+        let mut k = 0;
+        Box::new(move || {
+            k = (k + 1) % pairs.len();
+            // parry's own cleaning constructor (drops collinear points).
+            let a = ParryPolygon::from_convex_polyline(black_box(pairs[k].0.clone())).expect("convex");
+            let b = ParryPolygon::from_convex_polyline(black_box(pairs[k].1.clone())).expect("convex");
+            query::contact(&id, &a, &id, &b, 100.0).ok().flatten().map_or(f64::NAN, |contact| contact.dist)
         })
     });
     bench(c, "parry_contact", &SIZES, |n| {
@@ -193,6 +293,41 @@ fn summary() {
     }
 }
 
+/// Ratios on random pairs (issue 20's targets): parry's time over ours.
+fn random_summary(medians: &BTreeMap<(&str, usize), f64>) {
+    let ratio = |slow: &str, fast: &str, n: usize| Some(medians.get(&(slow, n))? / medians.get(&(fast, n))?);
+    let any = RANDOM_SIZES.iter().any(|&n| ratio("parry_random_overlap", "random_overlap", n).is_some());
+    if !any {
+        return;
+    }
+    println!("\nrandom convex pairs (32 per size), parry2d contact time / ours:");
+    println!("{:>6}{:>16}{:>16}{:>20}", "n", "overlapping", "separated", "from raw points");
+    let fmt = |r: Option<f64>| r.map_or_else(|| "-".to_owned(), |r| format!("{r:.2}x"));
+    for n in RANDOM_SIZES {
+        println!(
+            "{n:>6}{:>16}{:>16}{:>20}",
+            fmt(ratio("parry_random_overlap", "random_overlap", n)),
+            fmt(ratio("parry_random_separated", "random_separated", n)),
+            fmt(ratio("parry_random_from_points", "random_from_points", n)),
+        );
+    }
+    println!("targets: overlapping >= 1.5x, separated >= 1x, from raw points >= 1x");
+    for method in ["random_overlap", "random_separated", "random_from_points"] {
+        let row: Vec<(f64, f64)> =
+            RANDOM_SIZES.iter().filter_map(|&n| medians.get(&(method, n)).map(|&t| (n as f64, t))).collect();
+        if let Some(slope) = log_log_slope(&row) {
+            println!("log-log slope of {method}: {slope:.2} (target <= 1.05)");
+        }
+    }
+    for (cached, what) in [("cached_relation", "overlapping"), ("cached_distance_separated", "separated")] {
+        if let Some(r) = ratio("parry_random_overlap", cached, 64) {
+            println!(
+                "cached block translation queries, {what}, at n = 64: parry random overlap / ours {r:.1}x (target >= 20x)"
+            );
+        }
+    }
+}
+
 fn main() {
     let mut c = Criterion::default()
         .sample_size(10)
@@ -202,4 +337,8 @@ fn main() {
     benches(&mut c);
     c.final_summary();
     summary();
+    if let Ok(samples) = SAMPLES.lock() {
+        let medians: BTreeMap<(&str, usize), f64> = samples.iter().map(|(&k, v)| (k, median(v))).collect();
+        random_summary(&medians);
+    }
 }
