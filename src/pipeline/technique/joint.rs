@@ -1,5 +1,8 @@
 //! Joint: a spring from each contact to an anchor point on the touched object
-//! (`BumpTop` style: an off-centre anchor gives torque).
+//! (`BumpTop` style: an off-centre anchor gives torque). A contact whose
+//! centroid misses every movable object grabs the one its outline overlaps,
+//! at the overlap point nearest the centroid (`hit_test.rs`; the paper's
+//! point-based variant is `hit_test = "centroid"`).
 //!
 //! The contact drives an invisible kinematic anchor body; a rapier spring
 //! joint (rest length 0) ties it to the object at the ray-cast point. A joint
