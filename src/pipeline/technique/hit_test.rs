@@ -15,7 +15,10 @@
 //! ray-cast. The overlap depth and witness points come from the Contact
 //! Theory entrance block ([`crate::contact::contact_report`]).
 
+use super::surface_point::table_point;
 use crate::contact::{ConvexPolygon, Vec2 as CVec2, contact_report};
+use crate::pipeline::surface::Sensor;
+use crate::pipeline::vision::Contact;
 use crate::pipeline::world::{ObjectId, World};
 use crate::scene::Shape;
 use glam::{Quat, Vec2, Vec3};
@@ -61,6 +64,11 @@ pub fn overlaps(world: &World, outline: &[Vec2], centroid: Vec2) -> Vec<Overlap>
         .collect();
     out.sort_by(|a, b| b.depth.total_cmp(&a.depth).then(a.object.cmp(&b.object)));
     out
+}
+
+/// A contact's convex hull on the glass (metres).
+pub fn outline(contact: &Contact, sensor: &Sensor) -> Vec<Vec2> {
+    contact.blob.hull.iter().map(|q| table_point(sensor, [q[0] as f32, q[1] as f32])).collect()
 }
 
 /// The object's outline as the camera sees it, on the glass (metres).

@@ -154,8 +154,7 @@ impl JointTechnique {
         if self.config.hit_test != HitTest::Outline {
             return None;
         }
-        let outline: Vec<Vec2> =
-            c.blob.hull.iter().map(|q| table_point(input.sensor, [q[0] as f32, q[1] as f32])).collect();
+        let outline = hit_test::outline(c, input.sensor);
         let nearest = hit_test::overlaps(world, &outline, centroid)
             .into_iter()
             .min_by(|a, b| (a.point - centroid).length().total_cmp(&(b.point - centroid).length()))?;

@@ -109,8 +109,7 @@ impl ProxyTechnique {
         {
             return centroid;
         }
-        let outline: Vec<Vec2> =
-            c.blob.hull.iter().map(|q| table_point(input.sensor, [q[0] as f32, q[1] as f32])).collect();
+        let outline = hit_test::outline(c, input.sensor);
         hit_test::overlaps(world, &outline, centroid)
             .first()
             .map_or(centroid, |o| o.point + (o.centre - o.point).clamp_length_max(self.config.proxy_size))
