@@ -139,3 +139,49 @@ fn touching_where_an_object_appears_hits_its_top() {
         assert!((hit.point.truncate() - Vec2::new(c.x + dx, c.y + dy)).length() < 1e-3);
     }
 }
+
+/// Two of the `gather` task's 2.2 cm discs, one driven into the other at
+/// 0.2 m/s (a hand's sweep) for half a second: they push, not pass
+/// through each other. parry's GJK/EPA gave up at this size (absolute
+/// tolerances; `pipeline/world/magnified.rs`) and let them sink up to
+/// 10 mm into each other in `surfacelab behaviours --case gather`.
+#[test]
+fn small_discs_pushed_together_do_not_interpenetrate() {
+    let s = scene::parse(
+        r#"
+name = "two_discs"
+effects = ["gravity", "friction"]
+[table]
+size = [1.0, 0.75]
+[[objects]]
+name = "a"
+shape = "cylinder"
+radius = 0.011
+height = 0.01
+mass = 0.01
+position = [-0.03, 0.0]
+color = "blue"
+[[objects]]
+name = "b"
+shape = "cylinder"
+radius = 0.011
+height = 0.01
+mass = 0.01
+position = [0.0, 0.003]
+color = "blue"
+"#,
+        "two_discs.toml",
+    )
+    .expect("scene");
+    let mut w = World::new(&s);
+    let (a, b) = (ObjectId::new(0), ObjectId::new(1));
+    let mut deepest = 0.0f32;
+    for _ in 0..30 {
+        w.push_object(a).expect("a").set_linvel(Vec3::new(0.2, 0.0, 0.0));
+        w.step();
+        deepest = deepest.max(w.max_object_overlap());
+    }
+    let moved = w.object_pose(b).position.x;
+    assert!(moved > 0.01, "the pushed disc moved only {moved} m");
+    assert!(deepest < 0.002, "discs sank {:.1} mm into each other", deepest * 1000.0);
+}

@@ -7,6 +7,7 @@
 mod config;
 mod error;
 mod groups;
+mod magnified;
 mod object;
 mod overlap;
 mod ray;
@@ -22,6 +23,7 @@ pub use crate::scene::{ObjectId, SoftId};
 pub use config::WorldConfig;
 pub use error::WorldError;
 pub use groups::{Layer, collider_layer};
+pub use magnified::{MAGNIFICATION, MagnifiedDispatcher};
 pub use object::ObjectPush;
 pub use ray::RayHit;
 pub use reach::Reach;

@@ -4,11 +4,12 @@
 //! whether a technique body would be created inside a movable object (it
 //! would be shoved out at once, with whatever speed the solver needs).
 
+use super::magnified::MagnifiedDispatcher;
 use super::world::World;
 use crate::scene::ObjectId;
 use glam::Vec3;
 use rapier3d::parry::bounding_volume::BoundingVolume;
-use rapier3d::parry::query;
+use rapier3d::parry::query::{self, QueryDispatcher};
 use rapier3d::parry::shape::Capsule;
 use rapier3d::prelude::{Pose, RigidBody};
 
@@ -30,7 +31,8 @@ impl World {
                 if !box_a.intersects(box_b) {
                     continue;
                 }
-                if let Ok(Some(c)) = query::contact(a.position(), a.shape(), b.position(), b.shape(), 0.0) {
+                let pos12 = a.position().inv_mul(b.position());
+                if let Ok(Some(c)) = MagnifiedDispatcher.contact(&pos12, a.shape(), b.shape(), 0.0) {
                     deepest = deepest.max(-c.dist);
                 }
             }

@@ -3,6 +3,7 @@
 use super::config::WorldConfig;
 use super::error::WorldError;
 use super::groups::Layer;
+use super::magnified::MagnifiedDispatcher;
 use super::ray::RayHit;
 use super::soft::{self, SOFT_TAG, SoftBodies};
 use super::stats::WorldStats;
@@ -74,6 +75,8 @@ impl World {
     pub fn with_effects(scene: &Scene, effects: EffectSet) -> World {
         let config = WorldConfig::new(scene, effects);
         let mut physics = PhysicsWorld::new();
+        // Centimetre pieces need GJK/EPA decided at a larger scale (see `magnified`).
+        physics.narrow_phase = NarrowPhase::with_query_dispatcher(MagnifiedDispatcher);
         physics.gravity = config.gravity;
         let ip = &mut physics.integration_parameters;
         ip.dt = config.dt;
