@@ -194,7 +194,9 @@ where
         };
         // The previous step's points are matched against the new ones (warm
         // starts), so they enter in the magnified frame too.
-        manifolds.iter_mut().for_each(|m| scale_manifold(m, MAGNIFICATION));
+        for m in manifolds.iter_mut() {
+            scale_manifold(m, MAGNIFICATION);
+        }
         let result = DefaultQueryDispatcher.contact_manifolds(
             &magnify_pose(pos12),
             m1.shape(),
@@ -203,7 +205,9 @@ where
             manifolds,
             workspace,
         );
-        manifolds.iter_mut().for_each(|m| scale_manifold(m, 1.0 / MAGNIFICATION));
+        for m in manifolds.iter_mut() {
+            scale_manifold(m, 1.0 / MAGNIFICATION);
+        }
         result
     }
 
@@ -295,8 +299,8 @@ mod tests {
         let ball = rapier3d::parry::shape::Ball::new(0.003);
         let cube = Cuboid::new(Vec3::splat(0.03));
         let pos12 = Pose::from_translation(Vec3::new(0.01, 0.0, 0.0325));
-        let ours = MagnifiedDispatcher.contact(&pos12, &cube, &ball, 0.0).unwrap().unwrap();
-        let theirs = DefaultQueryDispatcher.contact(&pos12, &cube, &ball, 0.0).unwrap().unwrap();
+        let ours = MagnifiedDispatcher.contact(&pos12, &cube, &ball, 0.0).expect("supported").expect("touching");
+        let theirs = DefaultQueryDispatcher.contact(&pos12, &cube, &ball, 0.0).expect("supported").expect("touching");
         assert_eq!(ours.dist, theirs.dist);
         assert!((ours.dist + 0.0005).abs() < 1e-6, "0.5 mm deep, got {}", ours.dist);
         assert!(magnified_pair(&cube, &ball).is_none());
