@@ -30,16 +30,9 @@ const FINGERTIP_FRICTION: &str = "two fingertips twisting 90 degrees about the b
      table resists turning 1.85x as hard as the same press spread over the 6 cm face would (mean radius 0.38 of the \
      side, 2.3 cm); the 1.6 N of table friction at the corners balances the fingers' torque with the box turning at \
      a quarter of their rate (pin and spin, pivoting about one corner, turns it 62-66 degrees)";
-const HYBRID_PIN: &str = "the pinning fingertip overhangs the box's corner, so its outline beside the box becomes grips \
-     at table depth; they cage the corner from the side and the box slides along them instead of pivoting (3.7 and \
-     7.5 cm of drift, 30-32 degrees turned)";
 const TWO_CUBES_TWIST: &str = "44.1 degrees against 45: each proxy cube is one rotation-locked body whose 8 mm face \
      resists the box turning under it with per-point Coulomb friction; under rapier's simplified friction model it \
      turned 46.8, but that model also gave every sliding box full torsional friction (pin and spin turned 0)";
-const FLANK_WEDGE: &str = "Hybrid's ball particles (see HybridTechnique::new): the finger moves at twice the speed \
-     a ball rolls under it, so it reaches the ball's front flank, which the camera sees edge-on; there the paper's ray \
-     projection (Figure 6) turns the hand's motion into a slide down the flank into the wedge under the ball, and the \
-     particles kick it back as the finger lifts (0.19 m/s in one frame); Particle's line-of-sight capsules roll it 10 cm";
 const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each other (21.6 for Particle's forearms) \
      once the two swept fronts meet, after 1.6 s (hands 20 cm apart, room for every piece): the pushers, \
      re-placed where the hands are each frame, never yield, so pieces caught between the fronts are squeezed instead \
@@ -49,21 +42,16 @@ const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each o
      centimetre convex shapes were decided in a magnified frame (pipeline/world/magnified.rs), discs also passed \
      through each other mid-sweep: parry's GJK/EPA gave a wrong manifold for 270 of 400 overlapping disc pairs";
 
-use Metric::{Along as Distance, Carry, MaxOverlap as Overlap, PinDrift, Yaw as Turn};
+use Metric::{Along as Distance, Carry, MaxOverlap as Overlap, Yaw as Turn};
 use TechniqueKind::{Hybrid, Joint, Particle, Proxy};
 
 /// The known gaps, as measured by `surfacelab behaviours` on this build.
 pub const GAPS: &[Gap] = &[
-    Gap { case: "pin_and_spin_small_box", technique: Hybrid, metric: Turn, why: HYBRID_PIN },
-    Gap { case: "pin_and_spin_small_box", technique: Hybrid, metric: PinDrift, why: HYBRID_PIN },
-    Gap { case: "pin_and_spin_one_box", technique: Hybrid, metric: Turn, why: HYBRID_PIN },
-    Gap { case: "pin_and_spin_one_box", technique: Hybrid, metric: PinDrift, why: HYBRID_PIN },
     Gap { case: "two_finger_twist", technique: Proxy, metric: Turn, why: TWO_CUBES_TWIST },
     Gap { case: "two_finger_twist", technique: Particle, metric: Turn, why: FINGERTIP_FRICTION },
     Gap { case: "two_finger_twist", technique: Hybrid, metric: Turn, why: FINGERTIP_FRICTION },
     Gap { case: "cylinder_top_drag", technique: Particle, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
     Gap { case: "cylinder_top_drag", technique: Hybrid, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
-    Gap { case: "ball_light_touch", technique: Hybrid, metric: Distance, why: FLANK_WEDGE },
     Gap {
         case: "ball_under_hand",
         technique: Particle,
@@ -76,8 +64,8 @@ pub const GAPS: &[Gap] = &[
         case: "ball_under_hand",
         technique: Hybrid,
         metric: Carry,
-        why: "the hand's outline beside the ball becomes grips at table depth that cage the ball: it is carried, not \
-              rolled",
+        why: "as for Particle: a flat hand landing on a ball makes no grips (it rests on the ball), and its trailing \
+              edge's line-of-sight capsules reach the ball's silhouette and push it at the hand's speed (0.95)",
     },
     Gap { case: "gather_hand_edges", technique: Joint, metric: Overlap, why: PILE_CONTACTS },
     Gap { case: "gather_hand_edges", technique: Particle, metric: Overlap, why: PILE_CONTACTS },

@@ -14,6 +14,12 @@
 //! carry it; when the contact lifts, its grips go and the object is free.
 //!
 //! Choices, each for a reason:
+//! - A contact whose middle landed on a movable object rests on it and
+//!   makes no grips (see `touch_down`); it is a Particle contact.
+//! - A gripping contact's particles are balls, not line-of-sight capsules:
+//!   its grips are its contact from the side, and capsules standing beside
+//!   a pinched ball pushed it out of the grip and threw it on release
+//!   (strayed 1.6 cm, 0.099 m/s after the fingers opened; `tests/hybrid.rs`).
 //! - Grips are made only where the touch landed on fixed ground. A grip
 //!   made on a movable object's top would hang in the air at that height as
 //!   soon as the object moved from under it; the per-frame particles already
@@ -78,13 +84,6 @@ pub struct HybridTechnique {
 
 impl HybridTechnique {
     pub fn new(config: TechniqueConfig) -> Self {
-        // Ball particles: the grips are the hybrid's contact from the side.
-        // With line-of-sight capsules as well, those standing beside a
-        // pinched ball pushed it out of the grip and threw it on release
-        // (strayed 1.6 cm, 0.099 m/s after the fingers opened;
-        // `tests/hybrid.rs`).
-        let mut config = config;
-        config.particle_capsules = false;
         let particles = ParticleTechnique::new(config);
         HybridTechnique { particles, held: BTreeMap::new(), grip_positions: Vec::new() }
     }
@@ -106,6 +105,18 @@ impl HybridTechnique {
         let r = config.particle_radius;
         let share = config.particle_stride as f32 * input.sensor.metres_per_pixel() / REFERENCE_SPACING;
         let centroid = table_point(input.sensor, contact.blob.weighted_centroid);
+        // A contact whose middle landed on a movable object rests on it (a
+        // fingertip pinning a box's corner, a flat hand on a ball): the part
+        // of its outline beyond the object's silhouette is a finger hanging
+        // over the edge, not flesh at table depth, so it makes no grips.
+        // Gripped there, a pinning fingertip caged the corner it overhung
+        // and the box slid along its grips instead of pivoting.
+        let rests_on_movable = world
+            .cast_contact_ray(centroid)
+            .is_some_and(|h| h.soft.is_some() || h.object.is_some_and(|i| world.is_movable(i)));
+        if rests_on_movable {
+            return Held::default();
+        }
         let samples: Vec<_> = input.frame.edges.iter().filter(|e| e.contact_id == contact.id).collect();
         let n = samples.len();
         let keep = n.min(MAX_GRIPS_PER_CONTACT);
@@ -156,15 +167,24 @@ impl Technique for HybridTechnique {
     }
 
     fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+        let mut fresh = Vec::new();
+        for c in &input.frame.contacts {
+            if !self.held.contains_key(&c.id) {
+                let held = self.touch_down(input, world, c);
+                self.held.insert(c.id, held);
+                fresh.push(c.id);
+            }
+        }
+        // Ball particles for gripping contacts (module doc).
+        let gripping = self.held.iter().filter(|(_, h)| !h.grips.is_empty()).map(|(id, _)| *id);
+        self.particles.set_ball_contacts(gripping);
         self.particles.apply(input, world)?;
         let dt = input.dt;
         let max_speed = self.config().max_contact_speed;
         let mut seen = Vec::with_capacity(input.frame.contacts.len());
         for c in &input.frame.contacts {
             seen.push(c.id);
-            if !self.held.contains_key(&c.id) {
-                let held = self.touch_down(input, world, c);
-                self.held.insert(c.id, held);
+            if fresh.contains(&c.id) {
                 continue;
             }
             let Some(held) = self.held.get_mut(&c.id) else { continue };

@@ -105,6 +105,9 @@ pub struct ParticleTechnique {
     /// again by `apply` in the same frame (the world has not stepped since).
     reach: Option<Vec<Reach>>,
     contacts: usize,
+    /// Contacts whose particles are balls this frame even with
+    /// `particle_capsules` (see [`ParticleTechnique::set_ball_contacts`]).
+    ball_contacts: Vec<u32>,
 }
 
 /// One particle to place this frame.
@@ -138,7 +141,16 @@ impl ParticleTechnique {
             sensed_only: Vec::new(),
             reach: None,
             contacts: 0,
+            ball_contacts: Vec::new(),
         }
+    }
+
+    /// Makes the particles of these contacts balls, not line-of-sight
+    /// capsules, from the next `apply` on: Hybrid's gripping contacts,
+    /// whose contact from the side is their grips (see `HybridTechnique`).
+    pub(super) fn set_ball_contacts(&mut self, ids: impl IntoIterator<Item = u32>) {
+        self.ball_contacts.clear();
+        self.ball_contacts.extend(ids);
     }
 
     pub(super) fn config(&self) -> &TechniqueConfig {
@@ -229,7 +241,8 @@ impl ParticleTechnique {
             let center = hit.point + hit.normal * (r - 0.0001);
             let up = (world.eye() - center).normalize_or(Vec3::Z);
             let top = center + up * Self::sight_length(world);
-            let sight = self.config.particle_capsules && hit.soft.is_none();
+            let sight =
+                self.config.particle_capsules && hit.soft.is_none() && !self.ball_contacts.contains(&e.contact_id);
             let reaches = |b: &Reach| {
                 if sight {
                     b.can_touch_segment(center, top, r, v.length(), input.dt, CULL_SLACK)
