@@ -13,7 +13,7 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::sync::OnceLock;
 use surfacelab::harness::behaviour::{
-    Case, Expectation, GAPS, Outcome, Verdict, cases, cells, markdown, run_case, suite_kinds,
+    Case, CellVerdict, Expectation, GAPS, Measurement, cases, cells, markdown, run_case, suite_kinds,
 };
 
 fn root() -> &'static Path {
@@ -26,8 +26,8 @@ fn all_cases() -> &'static [Case] {
 }
 
 /// Each case's outcomes under every suite technique, computed once.
-fn outcomes(name: &str) -> &'static [Outcome] {
-    static CACHE: OnceLock<BTreeMap<&'static str, OnceLock<Vec<Outcome>>>> = OnceLock::new();
+fn outcomes(name: &str) -> &'static [Measurement] {
+    static CACHE: OnceLock<BTreeMap<&'static str, OnceLock<Vec<Measurement>>>> = OnceLock::new();
     let cache = CACHE.get_or_init(|| all_cases().iter().map(|c| (c.name, OnceLock::new())).collect());
     let case = all_cases().iter().find(|c| c.name == name).unwrap_or_else(|| panic!("no behaviour case `{name}`"));
     cache[name].get_or_init(|| {
@@ -138,7 +138,7 @@ fn known_gaps_name_real_cells_that_still_miss() {
             .unwrap_or_else(|| panic!("gap names a measure the case does not show: {g:?}"));
         assert_eq!(
             cell.verdict,
-            Verdict::KnownGap,
+            CellVerdict::KnownGap,
             "{} / {} / {} = {:.4} now meets its check: take it off GAPS",
             g.case,
             g.technique,
@@ -154,7 +154,7 @@ fn known_gaps_name_real_cells_that_still_miss() {
 #[test]
 fn behaviour_table() {
     let kinds = suite_kinds();
-    let all: Vec<Outcome> = all_cases().iter().flat_map(|c| outcomes(c.name).iter().cloned()).collect();
+    let all: Vec<Measurement> = all_cases().iter().flat_map(|c| outcomes(c.name).iter().cloned()).collect();
     assert_eq!(all.len(), all_cases().len() * kinds.len(), "one outcome per case and technique");
     let table = markdown(all_cases(), &kinds, &all);
     println!("\n{table}");
@@ -168,7 +168,7 @@ fn behaviour_table() {
                 cell.case,
                 cell.technique,
                 cell.metric.label(),
-                if cell.verdict == Verdict::LimitBroken { " (limit)" } else { "" }
+                if cell.verdict == CellVerdict::LimitBroken { " (limit)" } else { "" }
             )
         })
         .collect();

@@ -7,7 +7,7 @@
 use std::path::{Path, PathBuf};
 use surfacelab::harness::study::analysis::{analyze, read_anova, write_anova, write_pairwise};
 use surfacelab::harness::study::anova::{TwoWayData, rm_anova};
-use surfacelab::harness::study::findings::{FINDINGS, Verdict};
+use surfacelab::harness::study::findings::{FINDINGS, FindingVerdict};
 use surfacelab::harness::study::pairwise::{holm, paired_t};
 use surfacelab::harness::study::report::{REPORT_HTML, REPORT_MD};
 use surfacelab::harness::study::within_ci::cousineau_morey_half_widths;
@@ -248,14 +248,16 @@ fn findings_are_decided_by_their_tests() {
     let rows: Vec<TrialRow> =
         design.trials().iter().map(|spec| TrialRow::new(spec, &MdRunner.run(spec).expect("trial"))).collect();
     let analysis = analyze(&design, &rows);
-    let verdicts: Vec<(&str, Verdict)> = FINDINGS.iter().map(|f| (f.id, f.judge(&analysis).verdict)).collect();
+    let verdicts: Vec<(&str, FindingVerdict)> = FINDINGS.iter().map(|f| (f.id, f.judge(&analysis).verdict)).collect();
     // Joint (0°) beats 4° and 8° (Holm p .00032, .000057). Joint's feedback
     // effect (+3.0 s, scipy p = .244) is not significant. Particle's (8°)
     // feedback cost exceeds Joint's by 20.4 s (scipy t = 9.16, p = 7.4e-6).
-    assert_eq!(verdicts[0], ("joint_fastest_positioning", Verdict::Reproduced));
-    assert_eq!(verdicts[1], ("feedback_little_for_joint", Verdict::Reproduced));
-    assert_eq!(verdicts[2], ("feedback_more_for_particle", Verdict::Reproduced));
-    assert!(matches!(verdicts[3].1, Verdict::NotTested(_)) && matches!(verdicts[4].1, Verdict::NotTested(_)));
+    assert_eq!(verdicts[0], ("joint_fastest_positioning", FindingVerdict::Reproduced));
+    assert_eq!(verdicts[1], ("feedback_little_for_joint", FindingVerdict::Reproduced));
+    assert_eq!(verdicts[2], ("feedback_more_for_particle", FindingVerdict::Reproduced));
+    assert!(
+        matches!(verdicts[3].1, FindingVerdict::NotTested(_)) && matches!(verdicts[4].1, FindingVerdict::NotTested(_))
+    );
     let little = FINDINGS[1].judge(&analysis);
     assert!(little.evidence.contains("+3.0 s") && little.evidence.contains("0.244"), "{}", little.evidence);
 
@@ -272,9 +274,9 @@ fn findings_are_decided_by_their_tests() {
         })
         .collect();
     let analysis = analyze(&design, &swapped);
-    assert_eq!(FINDINGS[0].judge(&analysis).verdict, Verdict::NotReproduced);
-    assert_eq!(FINDINGS[1].judge(&analysis).verdict, Verdict::NotReproduced);
-    assert_eq!(FINDINGS[2].judge(&analysis).verdict, Verdict::NotReproduced);
+    assert_eq!(FINDINGS[0].judge(&analysis).verdict, FindingVerdict::NotReproduced);
+    assert_eq!(FINDINGS[1].judge(&analysis).verdict, FindingVerdict::NotReproduced);
+    assert_eq!(FINDINGS[2].judge(&analysis).verdict, FindingVerdict::NotReproduced);
 }
 
 #[test]

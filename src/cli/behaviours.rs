@@ -1,11 +1,11 @@
 //! `surfacelab behaviours`: the behaviour suite's table (src/harness/behaviour).
 
 use super::{BehavioursArgs, EXIT_USAGE};
-use crate::harness::behaviour::{Verdict, cases, cells, markdown, run_suite, suite_kinds};
+use crate::harness::behaviour::{CellVerdict, cases, cells, markdown, run_suite, suite_kinds};
 use std::process::ExitCode;
 use std::time::Instant;
 
-pub fn run(args: &BehavioursArgs) -> super::Outcome {
+pub fn run(args: &BehavioursArgs) -> super::CommandResult {
     let kinds = args.techniques.clone().unwrap_or_else(suite_kinds);
     let all = cases();
     let chosen: Vec<_> = all.into_iter().filter(|c| args.case.as_deref().is_none_or(|f| c.name.contains(f))).collect();
@@ -22,7 +22,7 @@ pub fn run(args: &BehavioursArgs) -> super::Outcome {
         .flat_map(|c| outcomes.iter().filter(move |o| o.case == c.name).flat_map(move |o| cells(c, o)))
         .collect();
     let failures = all_cells.iter().filter(|cell| cell.verdict.is_failure()).count();
-    let gaps = all_cells.iter().filter(|cell| cell.verdict == Verdict::KnownGap).count();
+    let gaps = all_cells.iter().filter(|cell| cell.verdict == CellVerdict::KnownGap).count();
     eprintln!(
         "surfacelab behaviours: {} cases x {} techniques in {:.1} s; {failures} cells miss their expectation, \
          {gaps} more are known gaps (src/harness/behaviour/gaps.rs)",

@@ -28,7 +28,7 @@ impl Default for DemoArgs {
     }
 }
 
-pub fn run(args: &DemoArgs) -> super::Outcome {
+pub fn run(args: &DemoArgs) -> super::CommandResult {
     let options = match options(args) {
         Ok(o) => o,
         Err(message) => {
@@ -62,26 +62,19 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
         o.screenshot_after = Some(Screenshot { after_s: f64::from(after_s), path: PathBuf::from(path) });
     }
     o.quit_after = args.quit_after.map(f64::from);
-    match (args.participant, &args.condition) {
-        (Some(id), Some(_)) => {
-            // The participant sees the table and their own hands, not the sensor's image.
-            o.contact_overlay = false;
-            o.participant = Some(ParticipantOptions {
-                id,
-                technique,
-                feedback,
-                repetitions: args.reps.unwrap_or(REPETITIONS).max(1),
-                trials_csv: args.trials_csv.clone().unwrap_or_else(|| PathBuf::from(TRIALS_CSV)),
-                gestures: Some(args.out.join("gestures")),
-            });
-        }
-        (Some(_), None) => return Err("--participant needs --condition TECHNIQUE:on|off".into()),
-        (None, _) if args.trials_csv.is_some() || args.reps.is_some() => {
-            return Err(
-                "--trials-csv and --reps belong to participant mode (--participant ID --condition T:on|off)".into()
-            );
-        }
-        (None, _) => {}
+    // clap enforces the pairs (`--participant` requires `--condition`;
+    // `--trials-csv` and `--reps` require `--participant`).
+    if let (Some(id), Some(_)) = (args.participant, &args.condition) {
+        // The participant sees the table and their own hands, not the sensor's image.
+        o.contact_overlay = false;
+        o.participant = Some(ParticipantOptions {
+            id,
+            technique,
+            feedback,
+            repetitions: args.reps.unwrap_or(REPETITIONS).max(1),
+            trials_csv: args.trials_csv.clone().unwrap_or_else(|| PathBuf::from(TRIALS_CSV)),
+            gestures: Some(args.out.join("gestures")),
+        });
     }
     Ok(o)
 }

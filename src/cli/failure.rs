@@ -9,7 +9,7 @@ use std::process::ExitCode;
 pub const EXIT_USAGE: u8 = 2;
 
 /// What a subcommand returns.
-pub type Outcome = Result<ExitCode, Failure>;
+pub type CommandResult = Result<ExitCode, Failure>;
 
 /// A subcommand's error with its kind, decided where the error was made
 /// (each module's [`Kind`]), not guessed here.

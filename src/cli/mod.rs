@@ -19,7 +19,7 @@ use clap::{Args, Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-pub use failure::{EXIT_USAGE, Failure, Outcome};
+pub use failure::{CommandResult, EXIT_USAGE, Failure};
 
 /// Tabletop physics on a (synthetic) vision-based surface, with a study harness.
 #[derive(Debug, Parser)]
@@ -322,7 +322,7 @@ fn init_tracing() {
     let _ = tracing_subscriber::fmt().with_env_filter(filter).with_writer(std::io::stderr).try_init();
 }
 
-fn run(command: Command) -> Outcome {
+fn run(command: Command) -> CommandResult {
     match command {
         Command::Doctor => Ok(doctor::run()),
         Command::Demo(_) if !doctor::has_display() => headless_main(),
@@ -339,7 +339,7 @@ fn run(command: Command) -> Outcome {
 /// What `surfacelab` does with no display: the headless job, so the
 /// README's main command is useful on a server or in CI — a one-participant
 /// scripted study (18 measured trials) with its CSVs and figure.
-fn headless_main() -> Outcome {
+fn headless_main() -> CommandResult {
     eprintln!("surfacelab: no display, so no demo window; running a small scripted study headless instead");
     let _ = doctor::run();
     let stamp = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());

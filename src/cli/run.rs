@@ -8,7 +8,7 @@ use anyhow::Context;
 use std::process::ExitCode;
 use std::time::Instant;
 
-pub fn run(args: &RunArgs) -> super::Outcome {
+pub fn run(args: &RunArgs) -> super::CommandResult {
     let scene = scene::load(&args.task)?;
     let gesture = Gesture::load(&args.gesture)?;
     let options = SessionOptions { measure_penetration: true, ..SessionOptions::default() };

@@ -10,7 +10,7 @@ use crate::session::{Session, SessionOptions};
 use anyhow::Context;
 use std::process::ExitCode;
 
-pub fn run(args: &ScreenshotArgs) -> super::Outcome {
+pub fn run(args: &ScreenshotArgs) -> super::CommandResult {
     let (w, h) = args.size;
     let scene = scene::load(&args.task)?;
     let gesture = args.gesture.as_ref().map(Gesture::load).transpose()?;

@@ -12,7 +12,7 @@ use crate::harness::study::{self, RunFile, RunOptions, Shard, StudyDesign, Trial
 use anyhow::Context;
 use std::process::ExitCode;
 
-pub fn run(args: &StudyArgs) -> super::Outcome {
+pub fn run(args: &StudyArgs) -> super::CommandResult {
     if let Some(StudyAction::Merge { out, dirs }) = &args.action {
         let m = study::merge(out, dirs)?;
         println!("surfacelab study merge: {m:?}");
@@ -123,7 +123,7 @@ fn cpu_since(before: Option<f64>) -> Option<f64> {
 }
 
 /// `--seeds N`: N whole studies, one folder each, then findings.csv.
-fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> super::Outcome {
+fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> super::CommandResult {
     let base = design_from(args)?;
     base.validate()?;
     if let Some(note) = base.balance_note() {
@@ -156,7 +156,7 @@ pub fn parse_shard(s: &str) -> Result<Shard, String> {
 
 /// `study findings DIR`: findings.csv and seeds.png from `DIR/seed-1`,
 /// `DIR/seed-2`, ... (every consecutive seed folder holding a run.toml).
-fn findings(dir: &std::path::Path) -> super::Outcome {
+fn findings(dir: &std::path::Path) -> super::CommandResult {
     let dirs: Vec<_> = (1..=u32::MAX)
         .map(|k| study::seeds::seed_dir(dir, k))
         .take_while(|d| d.join(study::output::RUN_TOML).exists())
@@ -175,7 +175,7 @@ fn findings(dir: &std::path::Path) -> super::Outcome {
 
 /// `--slurm N`: the design fixed in run.toml files and the two batch scripts
 /// (see `study::slurm`); with `--submit`, both submitted.
-fn run_slurm(args: &StudyArgs, shards: u32) -> super::Outcome {
+fn run_slurm(args: &StudyArgs, shards: u32) -> super::CommandResult {
     let design = design_from(args)?;
     design.validate()?;
     if let Some(note) = design.balance_note() {

@@ -5,7 +5,7 @@ use crate::harness::tradeoff::{TradeoffOptions, run_tradeoff};
 use std::io::IsTerminal;
 use std::process::ExitCode;
 
-pub fn run(args: &TradeoffArgs) -> super::Outcome {
+pub fn run(args: &TradeoffArgs) -> super::CommandResult {
     let t0 = std::time::Instant::now();
     let rows = run_tradeoff(&TradeoffOptions {
         out: args.out.clone(),

@@ -156,52 +156,60 @@ fn uniform_entry() -> wgpu::BindGroupLayoutEntry {
     )
 }
 
+/// The frame's bind groups: the main pass's (uniforms, shadow map and its
+/// comparison sampler), the shadow pass's (uniforms) and the contact
+/// image overlay's (texture and sampler).
+fn bind_group_layouts(device: &wgpu::Device) -> [wgpu::BindGroupLayout; 3] {
+    let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("frame bind group layout"),
+        entries: &[
+            uniform_entry(),
+            layout_entry(
+                1,
+                wgpu::ShaderStages::FRAGMENT,
+                wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Depth,
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+            ),
+            layout_entry(
+                2,
+                wgpu::ShaderStages::FRAGMENT,
+                wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
+            ),
+        ],
+    });
+    let shadow_pass_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("shadow pass bind group layout"),
+        entries: &[uniform_entry()],
+    });
+    let overlay_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+        label: Some("contact image bind group layout"),
+        entries: &[
+            layout_entry(
+                0,
+                wgpu::ShaderStages::FRAGMENT,
+                wgpu::BindingType::Texture {
+                    sample_type: wgpu::TextureSampleType::Float { filterable: true },
+                    view_dimension: wgpu::TextureViewDimension::D2,
+                    multisampled: false,
+                },
+            ),
+            layout_entry(
+                1,
+                wgpu::ShaderStages::FRAGMENT,
+                wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
+            ),
+        ],
+    });
+    [frame_layout, shadow_pass_layout, overlay_layout]
+}
+
 impl Pipelines {
     pub fn new(device: &wgpu::Device, config: PipelineConfig) -> Self {
         use wgpu::CompareFunction::{Always, Greater, LessEqual};
-        let frame_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("frame bind group layout"),
-            entries: &[
-                uniform_entry(),
-                layout_entry(
-                    1,
-                    wgpu::ShaderStages::FRAGMENT,
-                    wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Depth,
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                ),
-                layout_entry(
-                    2,
-                    wgpu::ShaderStages::FRAGMENT,
-                    wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Comparison),
-                ),
-            ],
-        });
-        let shadow_pass_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("shadow pass bind group layout"),
-            entries: &[uniform_entry()],
-        });
-        let overlay_layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-            label: Some("contact image bind group layout"),
-            entries: &[
-                layout_entry(
-                    0,
-                    wgpu::ShaderStages::FRAGMENT,
-                    wgpu::BindingType::Texture {
-                        sample_type: wgpu::TextureSampleType::Float { filterable: true },
-                        view_dimension: wgpu::TextureViewDimension::D2,
-                        multisampled: false,
-                    },
-                ),
-                layout_entry(
-                    1,
-                    wgpu::ShaderStages::FRAGMENT,
-                    wgpu::BindingType::Sampler(wgpu::SamplerBindingType::Filtering),
-                ),
-            ],
-        });
+        let [frame_layout, shadow_pass_layout, overlay_layout] = bind_group_layouts(device);
         let pipeline_layout = |label: &str, groups: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                 label: Some(label),

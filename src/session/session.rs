@@ -156,10 +156,10 @@ impl Session {
         self.frame = self.vision.process_rows(&self.image, self.lit.clone(), &interest);
         let t2 = Instant::now();
         let input = TechniqueInput { frame: &self.frame, sensor: &self.sensor, dt: self.world.dt() };
-        self.technique.apply(&input, &mut self.world)?;
+        self.technique.apply(&input, &mut self.world.for_technique())?;
         let t3 = Instant::now();
         self.world.step();
-        self.technique.after_step(&mut self.world);
+        self.technique.after_step(&mut self.world.for_technique());
         if measure {
             self.world.measure_penetration();
         }
@@ -192,7 +192,7 @@ impl Session {
 
     /// Removes the technique's bodies and puts every object back.
     pub fn reset(&mut self) {
-        self.technique.clear(&mut self.world);
+        self.technique.clear(&mut self.world.for_technique());
         self.world.reset_objects();
         self.vision.reset();
         self.tracker = GoalTracker::new(&self.scene);

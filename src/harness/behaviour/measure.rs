@@ -39,7 +39,7 @@ impl crate::error::Kind for BehaviourError {
 
 /// What one run measured.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Outcome {
+pub struct Measurement {
     pub case: &'static str,
     pub technique: TechniqueKind,
     pub values: BTreeMap<Metric, f32>,
@@ -47,7 +47,7 @@ pub struct Outcome {
     pub nan_count: u64,
 }
 
-impl Outcome {
+impl Measurement {
     /// The value of `m` (NaN when it was not measured).
     pub fn get(&self, m: Metric) -> f32 {
         self.values.get(&m).copied().unwrap_or(f32::NAN)
@@ -68,7 +68,7 @@ struct Track {
 }
 
 /// Runs `case` under `kind` (files relative to `root`) and measures it.
-pub fn run_case(case: &Case, kind: TechniqueKind, root: &Path) -> Result<Outcome, BehaviourError> {
+pub fn run_case(case: &Case, kind: TechniqueKind, root: &Path) -> Result<Measurement, BehaviourError> {
     let scene_path = root.join(case.scene);
     let scene = scene::load(&scene_path.to_string_lossy())?;
     let gesture = Gesture::load(root.join(case.gesture))?;
@@ -147,7 +147,7 @@ pub fn run_case(case: &Case, kind: TechniqueKind, root: &Path) -> Result<Outcome
         values.insert(Metric::MaxOverlap, t.max_overlap);
     }
     values.insert(Metric::Gathered, gathered(&s, &scene));
-    Ok(Outcome { case: case.name, technique: kind, values, nan_count: s.world().stats().nan_count })
+    Ok(Measurement { case: case.name, technique: kind, values, nan_count: s.world().stats().nan_count })
 }
 
 /// Share of the dynamic scene objects whose centre lies within
@@ -170,7 +170,7 @@ pub fn run_suite(
     kinds: &[TechniqueKind],
     root: &Path,
     jobs: usize,
-) -> Result<Vec<Outcome>, BehaviourError> {
+) -> Result<Vec<Measurement>, BehaviourError> {
     let work: Vec<(usize, &Case, TechniqueKind)> = cases
         .iter()
         .flat_map(|c| kinds.iter().map(move |k| (c, *k)))

@@ -19,5 +19,5 @@ mod table;
 pub use case::{Axis, Case, Check, Expectation, Metric};
 pub use cases::{cases, suite_kinds};
 pub use gaps::{GAPS, Gap, known_gap};
-pub use measure::{BehaviourError, Outcome, run_case, run_suite};
-pub use table::{Cell, Verdict, cells, markdown};
+pub use measure::{BehaviourError, Measurement, run_case, run_suite};
+pub use table::{Cell, CellVerdict, cells, markdown};

@@ -2,13 +2,13 @@
 
 use super::case::{Case, Check, Expectation, Metric};
 use super::gaps::known_gap;
-use super::measure::Outcome;
+use super::measure::Measurement;
 use crate::pipeline::technique::TechniqueKind;
 use std::fmt::Write as _;
 
 /// How a measured value stands against the expectation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Verdict {
+pub enum CellVerdict {
     /// Meets the check where the manipulation should work.
     Pass,
     /// Misses it.
@@ -23,19 +23,19 @@ pub enum Verdict {
     Shown,
 }
 
-impl Verdict {
+impl CellVerdict {
     pub fn is_failure(self) -> bool {
-        matches!(self, Verdict::Fail | Verdict::LimitBroken)
+        matches!(self, CellVerdict::Fail | CellVerdict::LimitBroken)
     }
 
     fn mark(self) -> &'static str {
         match self {
-            Verdict::Pass => "ok",
-            Verdict::Fail => "**FAIL**",
-            Verdict::LimitHolds => "limit ok",
-            Verdict::LimitBroken => "**FAIL** (limit)",
-            Verdict::KnownGap => "**FAIL** (known gap)",
-            Verdict::Shown => "shown",
+            CellVerdict::Pass => "ok",
+            CellVerdict::Fail => "**FAIL**",
+            CellVerdict::LimitHolds => "limit ok",
+            CellVerdict::LimitBroken => "**FAIL** (limit)",
+            CellVerdict::KnownGap => "**FAIL** (known gap)",
+            CellVerdict::Shown => "shown",
         }
     }
 }
@@ -49,11 +49,11 @@ pub struct Cell {
     pub value: f32,
     /// The check applied to it, if any.
     pub check: Option<Check>,
-    pub verdict: Verdict,
+    pub verdict: CellVerdict,
 }
 
 /// The cells of one outcome: one per metric the case shows.
-pub fn cells(case: &Case, outcome: &Outcome) -> Vec<Cell> {
+pub fn cells(case: &Case, outcome: &Measurement) -> Vec<Cell> {
     let kind = outcome.technique;
     let expectation = case.expectation(kind);
     let applied = case.checks_for(kind);
@@ -63,15 +63,15 @@ pub fn cells(case: &Case, outcome: &Outcome) -> Vec<Cell> {
             let value = outcome.get(metric);
             let check = applied.iter().find(|c| c.metric == metric).copied();
             let verdict = match (&expectation, check) {
-                (_, None) | (Expectation::Shown { .. }, _) => Verdict::Shown,
-                (Expectation::Works, Some(c)) if c.holds(value) && outcome.nan_count == 0 => Verdict::Pass,
-                (Expectation::Works, Some(_)) => Verdict::Fail,
-                (Expectation::Limit { .. }, Some(c)) if c.holds(value) => Verdict::LimitHolds,
-                (Expectation::Limit { .. }, Some(_)) => Verdict::LimitBroken,
+                (_, None) | (Expectation::Shown { .. }, _) => CellVerdict::Shown,
+                (Expectation::Works, Some(c)) if c.holds(value) && outcome.nan_count == 0 => CellVerdict::Pass,
+                (Expectation::Works, Some(_)) => CellVerdict::Fail,
+                (Expectation::Limit { .. }, Some(c)) if c.holds(value) => CellVerdict::LimitHolds,
+                (Expectation::Limit { .. }, Some(_)) => CellVerdict::LimitBroken,
             };
             let verdict = match verdict {
-                Verdict::Fail | Verdict::LimitBroken if known_gap(case.name, kind, metric).is_some() => {
-                    Verdict::KnownGap
+                CellVerdict::Fail | CellVerdict::LimitBroken if known_gap(case.name, kind, metric).is_some() => {
+                    CellVerdict::KnownGap
                 }
                 v => v,
             };
@@ -94,7 +94,7 @@ fn format_value(metric: Metric, value: f32) -> String {
 /// The markdown table: one row per case and metric, one column per
 /// technique, each cell the measured value and its verdict; then the
 /// paper's limits quoted.
-pub fn markdown(cases: &[Case], kinds: &[TechniqueKind], outcomes: &[Outcome]) -> String {
+pub fn markdown(cases: &[Case], kinds: &[TechniqueKind], outcomes: &[Measurement]) -> String {
     let mut s = String::new();
     let _ = write!(s, "| behaviour | measure | works when |");
     for k in kinds {
@@ -119,7 +119,7 @@ pub fn markdown(cases: &[Case], kinds: &[TechniqueKind], outcomes: &[Outcome]) -
                 match cell {
                     Some(c) => {
                         let bound = match (c.verdict, c.check) {
-                            (Verdict::LimitHolds | Verdict::LimitBroken, Some(ch)) => format!(" ({ch})"),
+                            (CellVerdict::LimitHolds | CellVerdict::LimitBroken, Some(ch)) => format!(" ({ch})"),
                             _ => String::new(),
                         };
                         let _ = write!(s, " {} {}{} |", format_value(metric, c.value), c.verdict.mark(), bound);

@@ -88,12 +88,6 @@ impl Manner {
     pub fn hands(self) -> usize {
         if matches!(self, Manner::TwoHandGather | Manner::BimanualDrag) { 2 } else { 1 }
     }
-
-    /// Pressed on top of (or around) the object and dragged, rather than
-    /// pushed from behind.
-    pub fn carries(self) -> bool {
-        matches!(self, Manner::Fingertips(_) | Manner::Pinch | Manner::FlatHand | Manner::BimanualDrag)
-    }
 }
 
 impl fmt::Display for Manner {

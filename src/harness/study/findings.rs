@@ -85,19 +85,19 @@ pub const FINDINGS: [Finding; 5] = [
 
 /// What a run says about a finding.
 #[derive(Debug, Clone, PartialEq)]
-pub enum Verdict {
+pub enum FindingVerdict {
     Reproduced,
     NotReproduced,
     /// The design or the data cannot test it; why.
     NotTested(String),
 }
 
-impl Verdict {
+impl FindingVerdict {
     pub fn label(&self) -> &'static str {
         match self {
-            Verdict::Reproduced => "reproduced",
-            Verdict::NotReproduced => "not reproduced",
-            Verdict::NotTested(_) => "not tested",
+            FindingVerdict::Reproduced => "reproduced",
+            FindingVerdict::NotReproduced => "not reproduced",
+            FindingVerdict::NotTested(_) => "not tested",
         }
     }
 }
@@ -105,7 +105,7 @@ impl Verdict {
 /// A verdict and the numbers behind it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Judgement {
-    pub verdict: Verdict,
+    pub verdict: FindingVerdict,
     /// Which test decided, in words.
     pub test: String,
     /// The test's numbers (mean differences, p-values).
@@ -115,8 +115,11 @@ pub struct Judgement {
 impl Finding {
     /// Decides this finding on a run's statistics.
     pub fn judge(&self, analysis: &Analysis) -> Judgement {
-        let not_tested =
-            |test: String, why: String| Judgement { verdict: Verdict::NotTested(why.clone()), test, evidence: why };
+        let not_tested = |test: String, why: String| Judgement {
+            verdict: FindingVerdict::NotTested(why.clone()),
+            test,
+            evidence: why,
+        };
         let Some(cells) = analysis.task(self.task) else {
             return not_tested(self.test(), format!("the design has no {} task", self.task));
         };
@@ -207,7 +210,7 @@ impl Finding {
 }
 
 fn decided(yes: bool, test: String, evidence: String) -> Judgement {
-    Judgement { verdict: if yes { Verdict::Reproduced } else { Verdict::NotReproduced }, test, evidence }
+    Judgement { verdict: if yes { FindingVerdict::Reproduced } else { FindingVerdict::NotReproduced }, test, evidence }
 }
 
 fn mean(v: &[f64]) -> f64 {

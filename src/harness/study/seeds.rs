@@ -12,7 +12,7 @@
 
 use super::analysis::analyze;
 use super::error::StudyError;
-use super::findings::{FINDINGS, Verdict};
+use super::findings::{FINDINGS, FindingVerdict};
 use super::output::{RUN_TOML, RunFile, TRIALS_CSV, read_trials, write_atomically};
 use super::seeds_figure::write_seeds_figure;
 use super::summary::{SummaryRow, summarize};
@@ -65,12 +65,12 @@ pub fn summarize_seeds(dir: &Path, runs: &[PathBuf]) -> Result<Vec<FindingsRow>,
         let analysis = analyze(&file.design, &trials);
         for (row, finding) in rows.iter_mut().zip(FINDINGS.iter()) {
             match finding.judge(&analysis).verdict {
-                Verdict::Reproduced => {
+                FindingVerdict::Reproduced => {
                     row.seeds += 1;
                     row.reproduced += 1;
                 }
-                Verdict::NotReproduced => row.seeds += 1,
-                Verdict::NotTested(_) => {}
+                FindingVerdict::NotReproduced => row.seeds += 1,
+                FindingVerdict::NotTested(_) => {}
             }
         }
         summaries.push(summarize(&file.design, &trials));

@@ -38,11 +38,6 @@ impl Sensor {
         Self { width_px, height_px, table_width_m, table_depth_m }
     }
 
-    /// The default 640 x 480 camera over a table of the scene's size.
-    pub const fn for_table(table_width_m: f32, table_depth_m: f32) -> Self {
-        Self::new(640, 480, table_width_m, table_depth_m)
-    }
-
     /// Pixel position (`[column, row]`, integers at pixel centres) to table
     /// metres.
     pub fn to_table(&self, px: [f32; 2]) -> [f32; 2] {

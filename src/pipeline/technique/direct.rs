@@ -8,7 +8,7 @@ use super::surface_point::{clamp_len, table_point, table_velocity};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::Blob;
-use crate::pipeline::world::{World, WorldError};
+use crate::pipeline::world::{TechniqueWorld, World, WorldError};
 use glam::Vec3;
 use rapier3d::prelude::SoftBodyHandle;
 
@@ -50,7 +50,7 @@ impl Technique for DirectForce {
         TechniqueKind::Direct
     }
 
-    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {
         self.touched.clear();
         self.contacts = input.frame.contacts.len();
         for c in &input.frame.contacts {
@@ -109,7 +109,7 @@ impl Technique for DirectForce {
         Ok(())
     }
 
-    fn after_step(&mut self, world: &mut World) {
+    fn after_step(&mut self, world: &mut TechniqueWorld<'_>) {
         // Forces are per step: clear what we added so they do not accumulate.
         for id in world.object_ids() {
             if let Some(mut b) = world.push_object(id) {
@@ -130,7 +130,7 @@ impl Technique for DirectForce {
         TechniqueCounts { contacts: self.contacts, bodies: 0, joints: 0 }
     }
 
-    fn clear(&mut self, _world: &mut World) {
+    fn clear(&mut self, _world: &mut TechniqueWorld<'_>) {
         self.touched.clear();
     }
 

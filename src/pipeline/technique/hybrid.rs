@@ -40,7 +40,7 @@ use super::surface_point::{at_height, clamp_len, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{Contact, FlowInterest};
-use crate::pipeline::world::{Layer, TechniqueBody, World, WorldError};
+use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::BTreeMap;
@@ -100,7 +100,7 @@ impl HybridTechnique {
     }
 
     /// Grips for a contact seen for the first time.
-    fn touch_down(&self, input: &TechniqueInput<'_>, world: &mut World, contact: &Contact) -> Held {
+    fn touch_down(&self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>, contact: &Contact) -> Held {
         let config = self.config();
         let r = config.particle_radius;
         let share = config.particle_stride as f32 * input.sensor.metres_per_pixel() / REFERENCE_SPACING;
@@ -166,7 +166,7 @@ impl Technique for HybridTechnique {
         self.particles.flow_interest(world, sensor, dt)
     }
 
-    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {
         let mut fresh = Vec::new();
         for c in &input.frame.contacts {
             if !self.held.contains_key(&c.id) {
@@ -221,7 +221,7 @@ impl Technique for HybridTechnique {
         Ok(())
     }
 
-    fn after_step(&mut self, world: &mut World) {
+    fn after_step(&mut self, world: &mut TechniqueWorld<'_>) {
         self.particles.after_step(world);
         self.grip_positions.clear();
         for g in self.held.values().flat_map(|h| &h.grips) {
@@ -244,7 +244,7 @@ impl Technique for HybridTechnique {
         c
     }
 
-    fn clear(&mut self, world: &mut World) {
+    fn clear(&mut self, world: &mut TechniqueWorld<'_>) {
         self.particles.clear(world);
         for (_, held) in std::mem::take(&mut self.held) {
             for g in held.grips {

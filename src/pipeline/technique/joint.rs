@@ -34,7 +34,7 @@ use super::hit_test;
 use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
 use super::{Feedback, HitTest, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::vision::Contact;
-use crate::pipeline::world::{Layer, ObjectId, TechniqueBody, TechniqueJoint, World, WorldError};
+use crate::pipeline::world::{Layer, ObjectId, TechniqueBody, TechniqueJoint, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::{BTreeMap, BTreeSet};
@@ -117,7 +117,7 @@ impl JointTechnique {
         }
     }
 
-    fn try_grab(&self, world: &mut World, target: Vec2, v_hand: Vec2) -> Option<Hold> {
+    fn try_grab(&self, world: &mut TechniqueWorld<'_>, target: Vec2, v_hand: Vec2) -> Option<Hold> {
         let hit = world.cast_contact_ray(target)?;
         if let Some((h, particle)) = hit.soft {
             let at = world.soft_particle_position(h, particle)?;
@@ -145,7 +145,7 @@ impl JointTechnique {
     /// anchor then keeps that offset from the centroid.
     fn grab_by_outline(
         &self,
-        world: &mut World,
+        world: &mut TechniqueWorld<'_>,
         c: &Contact,
         input: &TechniqueInput<'_>,
         centroid: Vec2,
@@ -173,12 +173,12 @@ impl JointTechnique {
         })
     }
 
-    fn release_soft(world: &mut World, g: SoftGrab) {
+    fn release_soft(world: &mut TechniqueWorld<'_>, g: SoftGrab) {
         world.detach_particles(g.anchor);
         world.remove_body(g.anchor);
     }
 
-    fn release(world: &mut World, g: Grab) {
+    fn release(world: &mut TechniqueWorld<'_>, g: Grab) {
         world.remove_joint(g.joint);
         world.remove_body(g.anchor);
         // No slingshot: the object leaves with the hand's velocity, not with
@@ -194,7 +194,7 @@ impl JointTechnique {
         }
     }
 
-    fn update_pusher(&mut self, world: &mut World, c: &Contact, input: &TechniqueInput<'_>, screen: Vec2) {
+    fn update_pusher(&mut self, world: &mut TechniqueWorld<'_>, c: &Contact, input: &TechniqueInput<'_>, screen: Vec2) {
         let max_step = self.config.max_contact_speed * input.dt;
         if let Some(mut p) = self.pushers.get(&c.id).copied() {
             let (target, shape) = pusher_shape(world, c, input, screen, p.base_z, p.scale);
@@ -333,7 +333,7 @@ impl Technique for JointTechnique {
         TechniqueKind::Joint
     }
 
-    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {
         world.require_joints("the Joint technique")?;
         self.contacts = input.frame.contacts.len();
         let dt = input.dt;
@@ -441,7 +441,7 @@ impl Technique for JointTechnique {
         TechniqueCounts { contacts: self.contacts, bodies: held + self.pushers.len(), joints: held }
     }
 
-    fn clear(&mut self, world: &mut World) {
+    fn clear(&mut self, world: &mut TechniqueWorld<'_>) {
         for (_, g) in std::mem::take(&mut self.grabs) {
             Self::release(world, g);
         }

@@ -27,7 +27,7 @@ pub use proxy::ProxyTechnique;
 
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{FlowInterest, VisionFrame};
-use crate::pipeline::world::{World, WorldError};
+use crate::pipeline::world::{TechniqueWorld, World, WorldError};
 use crate::scene::{Effect, EffectSet};
 
 /// What every technique sees each frame.
@@ -61,10 +61,10 @@ pub trait Technique: Send {
     }
 
     /// Applies this frame's effect to the world, before the step.
-    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError>;
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError>;
 
     /// Runs after the step (the paper's per-frame particles are destroyed here).
-    fn after_step(&mut self, _world: &mut World) {}
+    fn after_step(&mut self, _world: &mut TechniqueWorld<'_>) {}
 
     /// Feedback geometry as of the last step, in world coordinates.
     fn feedback(&self, world: &World) -> Feedback;
@@ -72,7 +72,7 @@ pub trait Technique: Send {
     fn counts(&self) -> TechniqueCounts;
 
     /// Removes everything the technique added to the world.
-    fn clear(&mut self, world: &mut World);
+    fn clear(&mut self, world: &mut TechniqueWorld<'_>);
 
     /// Live parameter changes (the demo's sliders).
     fn config_mut(&mut self) -> &mut TechniqueConfig;

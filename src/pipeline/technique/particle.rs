@@ -36,7 +36,7 @@ use super::surface_point::{clamp_len, project_flow, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::FlowInterest;
-use crate::pipeline::world::{Layer, Reach, TechniqueBody, World, WorldError};
+use crate::pipeline::world::{Layer, Reach, TechniqueBody, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::HashMap;
@@ -280,7 +280,7 @@ impl ParticleTechnique {
         (out, culled)
     }
 
-    fn new_body(&self, world: &mut World, p: &Placement) -> TechniqueBody {
+    fn new_body(&self, world: &mut TechniqueWorld<'_>, p: &Placement) -> TechniqueBody {
         let r = self.config.particle_radius;
         let shape = if p.sight {
             // From the touched point (the body's origin) up its line of sight.
@@ -316,7 +316,7 @@ impl ParticleTechnique {
         world.spawn_body(body, col)
     }
 
-    fn place_pooled(&mut self, world: &mut World, placements: &[Placement]) {
+    fn place_pooled(&mut self, world: &mut TechniqueWorld<'_>, placements: &[Placement]) {
         // Index last frame's active slots by where they sat.
         let key = |px: [f32; 2]| ((px[0] / CELL).floor() as i32, (px[1] / CELL).floor() as i32);
         let mut grid: HashMap<(i32, i32), Vec<usize>> = HashMap::new();
@@ -461,7 +461,7 @@ impl Technique for ParticleTechnique {
         FlowInterest::Near { boxes, flow_scale: MAX_SURFACE_SPEEDUP * MAX_PERSPECTIVE }
     }
 
-    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {
         self.contacts = input.frame.contacts.len();
         let (placements, culled) = self.placements(input, world);
         self.sensed_only = culled;
@@ -477,7 +477,7 @@ impl Technique for ParticleTechnique {
         Ok(())
     }
 
-    fn after_step(&mut self, world: &mut World) {
+    fn after_step(&mut self, world: &mut TechniqueWorld<'_>) {
         self.positions.clear();
         for s in self.slots.iter().filter(|s| s.active) {
             if let Some(b) = world.technique_body(s.body) {
@@ -501,7 +501,7 @@ impl Technique for ParticleTechnique {
         TechniqueCounts { contacts: self.contacts, bodies: self.positions.len(), joints: 0 }
     }
 
-    fn clear(&mut self, world: &mut World) {
+    fn clear(&mut self, world: &mut TechniqueWorld<'_>) {
         for s in std::mem::take(&mut self.slots) {
             world.remove_body(s.body);
         }

@@ -16,7 +16,7 @@ use super::{
     TechniqueKind,
 };
 use crate::pipeline::vision::Contact;
-use crate::pipeline::world::{Layer, TechniqueBody, World, WorldError};
+use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::BTreeMap;
@@ -55,7 +55,7 @@ impl ProxyTechnique {
         }
     }
 
-    fn spawn(&self, world: &mut World, target: Vec2, velocity: Vec2, weight: f32) -> Proxy {
+    fn spawn(&self, world: &mut TechniqueWorld<'_>, target: Vec2, velocity: Vec2, weight: f32) -> Proxy {
         let hit = support_below(world, target);
         let light = hit.is_some_and(|h| h.soft.is_some());
         let mass = if light { soft_mass(weight) } else { self.config.proxy_mass };
@@ -160,7 +160,7 @@ impl Technique for ProxyTechnique {
         TechniqueKind::Proxy
     }
 
-    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut World) -> Result<(), WorldError> {
+    fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {
         self.contacts = input.frame.contacts.len();
         let dt = input.dt;
         let mut seen = Vec::with_capacity(input.frame.contacts.len());
@@ -226,7 +226,7 @@ impl Technique for ProxyTechnique {
         TechniqueCounts { contacts: self.contacts, bodies: self.proxies.len(), joints: 0 }
     }
 
-    fn clear(&mut self, world: &mut World) {
+    fn clear(&mut self, world: &mut TechniqueWorld<'_>) {
         for (_, p) in std::mem::take(&mut self.proxies) {
             world.remove_body(p.body);
         }

@@ -16,6 +16,7 @@ mod soft;
 mod soft_access;
 mod stats;
 mod technique_body;
+mod technique_world;
 #[allow(clippy::module_inception)]
 mod world;
 
@@ -31,4 +32,5 @@ pub use soft::SoftSurface;
 pub use soft_access::SoftPush;
 pub use stats::WorldStats;
 pub use technique_body::{TechniqueBody, TechniqueJoint};
+pub use technique_world::TechniqueWorld;
 pub use world::{ObjectPose, World};
