@@ -409,3 +409,26 @@ keys = [
         }
     }
 }
+
+/// The session's image input: contact images made elsewhere (here, the
+/// rasterizer's own frames, copied out) drive the same vision → technique
+/// → world path as hands do, to the bit; an image of the wrong size is
+/// refused as bad input, not cropped.
+#[test]
+fn contact_images_drive_the_session_like_hands() {
+    let gesture = Gesture::load(asset("assets/gestures/fingertip_drag.toml")).expect("gesture");
+    let mut from_hands = session("tasks/positioning.toml", TechniqueKind::Particle);
+    let mut from_images = session("tasks/positioning.toml", TechniqueKind::Particle);
+    let start = from_hands.world().state_bits();
+    while from_hands.time() < gesture.duration() + 0.2 {
+        let hands = gesture.sample(from_hands.time());
+        from_hands.step(&hands).expect("step");
+        from_images.step_image(from_hands.image()).expect("step_image");
+    }
+    assert_ne!(from_hands.world().state_bits(), start, "the drag moved nothing");
+    assert_eq!(from_hands.world().state_bits(), from_images.world().state_bits());
+
+    let small = surfacelab::pipeline::surface::ContactImage::new(320, 240);
+    let err = from_images.step_image(&small).expect_err("wrong size");
+    assert_eq!(err.to_string(), "contact image is 320x240 pixels; this session's sensor is 640x480");
+}

@@ -19,6 +19,10 @@ pub enum SessionError {
     Config(#[from] ConfigError),
     #[error(transparent)]
     World(#[from] WorldError),
+    /// A contact image from outside (a camera, a recording) that is not the
+    /// sensor's size.
+    #[error("contact image is {got_w}x{got_h} pixels; this session's sensor is {want_w}x{want_h}")]
+    ImageSize { got_w: usize, got_h: usize, want_w: usize, want_h: usize },
 }
 
 impl crate::error::Kind for SessionError {
@@ -26,6 +30,7 @@ impl crate::error::Kind for SessionError {
         match self {
             SessionError::Config(e) => e.kind(),
             SessionError::World(e) => e.kind(),
+            SessionError::ImageSize { .. } => crate::error::ErrorKind::BadInput,
         }
     }
 }
@@ -147,10 +152,31 @@ impl Session {
     /// One frame: draw the hands, see them, act, step, judge the goal.
     pub fn step(&mut self, hands: &[Hand]) -> Result<Progress, SessionError> {
         let t0 = Instant::now();
-        let measure = self.measure_penetration;
         // Only the rows the hands light are cleared, labelled and copied
         // (see `rasterize_rows`).
         self.lit = rasterize_rows(hands, &self.sensor, &self.raster, &mut self.image, self.lit.clone());
+        self.see_act_step(t0)
+    }
+
+    /// One frame from a contact image made elsewhere (a camera's rectified
+    /// frame, a recording): the same frame as [`Session::step`] from its
+    /// vision stage on, with no hands to draw. It must be the sensor's size.
+    pub fn step_image(&mut self, image: &ContactImage) -> Result<Progress, SessionError> {
+        let t0 = Instant::now();
+        let (w, h) = (self.sensor.width_px as usize, self.sensor.height_px as usize);
+        if image.width != w || image.height != h || image.pixels.len() != w * h {
+            return Err(SessionError::ImageSize { got_w: image.width, got_h: image.height, want_w: w, want_h: h });
+        }
+        self.image.pixels.copy_from_slice(&image.pixels);
+        // Any row may be lit: the vision stage reads them all.
+        self.lit = 0..h;
+        self.see_act_step(t0)
+    }
+
+    /// The frame after the contact image is ready (`t0`: when it began):
+    /// vision, technique, step, goal.
+    fn see_act_step(&mut self, t0: Instant) -> Result<Progress, SessionError> {
+        let measure = self.measure_penetration;
         let t1 = Instant::now();
         let interest = self.technique.flow_interest(&self.world, &self.sensor, self.world.dt());
         self.frame = self.vision.process_rows(&self.image, self.lit.clone(), &interest);
