@@ -6,7 +6,10 @@ use super::defaults as default;
 use super::effects::EffectSet;
 use super::error::SceneError;
 use super::fields::FieldReader;
-use super::file::{BodyKindFile, GoalFile, GoalKind, ObjectFile, SceneFile, ShapeKind, SoftBodyFile, SoftKindFile};
+use super::file::{
+    BodyKindFile, CameraFile, GoalFile, GoalKind, ObjectFile, PhysicsFile, SceneFile, ShapeKind, SoftBodyFile,
+    SoftKindFile, TableFile,
+};
 use super::id::{ObjectId, SoftId};
 use super::model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
@@ -127,104 +130,11 @@ impl Checker<'_> {
 
     fn scene(&self, raw: SceneFile) -> Result<Scene, SceneError> {
         let effects: EffectSet = raw.effects.iter().copied().collect();
-
-        let tspan = raw.table.span();
-        let t = raw.table.into_inner();
-        let width = self.within(&tspan, "table.size[0]", t.size[0], bounds::TABLE_SIDE_M)?;
-        let depth = self.within(&tspan, "table.size[1]", t.size[1], bounds::TABLE_SIDE_M)?;
-        let table_color = match &t.color {
-            Some(c) => {
-                Color::parse(c).ok_or_else(|| self.err(&tspan, "table.color", format!("unknown colour `{c}`")))?
-            }
-            None => Color { rgba: default::TABLE_COLOR },
-        };
-        let table = Table {
-            width,
-            depth,
-            friction: self.num(&tspan, "table.friction", t.friction.unwrap_or(default::TABLE_FRICTION), 0.0, 10.0)?,
-            restitution: self.num(
-                &tspan,
-                "table.restitution",
-                t.restitution.unwrap_or(default::TABLE_RESTITUTION),
-                0.0,
-                1.0,
-            )?,
-            color: table_color,
-            walls: t.walls.unwrap_or(default::TABLE_WALLS),
-        };
-
-        let camera = match raw.camera {
-            Some(c) => {
-                let span = c.span();
-                CameraSpec {
-                    height: self.within(&span, "camera.height", c.into_inner().height, bounds::CAMERA_HEIGHT_M)?,
-                }
-            }
-            None => CameraSpec { height: default::CAMERA_HEIGHT },
-        };
-
-        let mut physics = PhysicsSpec::default();
-        if let Some(p) = raw.physics {
-            let span = p.span();
-            let p = p.into_inner();
-            if let Some(hz) = p.timestep_hz {
-                physics.dt = 1.0 / self.num(&span, "physics.timestep_hz", hz, 10.0, 10_000.0)?;
-            }
-            if let Some(n) = p.solver_iterations {
-                physics.solver_iterations = self.count(&span, "physics.solver_iterations", n, 1, 100)?;
-            }
-            if let Some(n) = p.pgs_iterations {
-                physics.pgs_iterations = self.count(&span, "physics.pgs_iterations", n, 1, 100)?;
-            }
-            if let Some(l) = p.length_unit {
-                physics.length_unit = self.within(&span, "physics.length_unit", l, bounds::LENGTH_UNIT_M)?;
-            }
-            if let Some(n) = p.ccd_substeps {
-                physics.ccd_substeps = self.count(&span, "physics.ccd_substeps", n, 0, bounds::CCD_SUBSTEPS)?;
-            }
-            if let Some(hz) = p.contact_hz {
-                physics.contact_hz = self.num(&span, "physics.contact_hz", hz, 1.0, 10_000.0)?;
-            }
-            if let Some(v) = p.max_speed {
-                physics.max_speed = self.within(&span, "physics.max_speed", v, bounds::MAX_SPEED_M_S)?;
-            }
-        }
-
-        let mut objects = Vec::new();
-        // Where each object was written (its entry's index and span), for
-        // the duplicate-name error.
-        let mut written = Vec::new();
-        for (i, o) in raw.objects.into_iter().enumerate() {
-            let span = o.span();
-            self.objects(i, o, &table, &mut objects)?;
-            written.resize(objects.len(), (i, span));
-        }
-        // O(n log n): 40,000 names took 4 s with the pairwise check.
-        let mut seen = std::collections::HashSet::with_capacity(objects.len());
-        for (a, (i, span)) in objects.iter().zip(&written) {
-            if !seen.insert(a.name.as_str()) {
-                return Err(self.err(
-                    span,
-                    format!("objects[{i}].name"),
-                    format!("`{}` is the name of two objects", a.name),
-                ));
-            }
-        }
-
-        let mut soft_bodies = Vec::new();
-        let mut soft_names = std::collections::HashSet::new();
-        for (i, b) in raw.soft_bodies.into_iter().enumerate() {
-            let span = b.span();
-            let spec = self.soft_body(i, b, &table, effects)?;
-            if seen.contains(spec.name.as_str()) || !soft_names.insert(spec.name.clone()) {
-                return Err(self.err(
-                    &span,
-                    format!("soft_bodies[{i}].name"),
-                    format!("`{}` is already the name of an object or soft body", spec.name),
-                ));
-            }
-            soft_bodies.push(spec);
-        }
+        let table = self.table(raw.table)?;
+        let camera = self.camera(raw.camera)?;
+        let physics = self.physics(raw.physics)?;
+        let (objects, names) = self.all_objects(raw.objects, &table)?;
+        let soft_bodies = self.soft_bodies(raw.soft_bodies, &table, effects, &names)?;
 
         let time_limit_s = match raw.time_limit_s {
             Some(s) => {
@@ -262,6 +172,131 @@ impl Checker<'_> {
         })
     }
 
+    fn table(&self, raw: Spanned<TableFile>) -> Result<Table, SceneError> {
+        let tspan = raw.span();
+        let t = raw.into_inner();
+        let width = self.within(&tspan, "table.size[0]", t.size[0], bounds::TABLE_SIDE_M)?;
+        let depth = self.within(&tspan, "table.size[1]", t.size[1], bounds::TABLE_SIDE_M)?;
+        let table_color = match &t.color {
+            Some(c) => {
+                Color::parse(c).ok_or_else(|| self.err(&tspan, "table.color", format!("unknown colour `{c}`")))?
+            }
+            None => Color { rgba: default::TABLE_COLOR },
+        };
+        let table = Table {
+            width,
+            depth,
+            friction: self.num(&tspan, "table.friction", t.friction.unwrap_or(default::TABLE_FRICTION), 0.0, 10.0)?,
+            restitution: self.num(
+                &tspan,
+                "table.restitution",
+                t.restitution.unwrap_or(default::TABLE_RESTITUTION),
+                0.0,
+                1.0,
+            )?,
+            color: table_color,
+            walls: t.walls.unwrap_or(default::TABLE_WALLS),
+        };
+        Ok(table)
+    }
+
+    fn camera(&self, raw: Option<Spanned<CameraFile>>) -> Result<CameraSpec, SceneError> {
+        let camera = match raw {
+            Some(c) => {
+                let span = c.span();
+                CameraSpec {
+                    height: self.within(&span, "camera.height", c.into_inner().height, bounds::CAMERA_HEIGHT_M)?,
+                }
+            }
+            None => CameraSpec { height: default::CAMERA_HEIGHT },
+        };
+        Ok(camera)
+    }
+
+    fn physics(&self, raw: Option<Spanned<PhysicsFile>>) -> Result<PhysicsSpec, SceneError> {
+        let mut physics = PhysicsSpec::default();
+        if let Some(p) = raw {
+            let span = p.span();
+            let p = p.into_inner();
+            if let Some(hz) = p.timestep_hz {
+                physics.dt = 1.0 / self.num(&span, "physics.timestep_hz", hz, 10.0, 10_000.0)?;
+            }
+            if let Some(n) = p.solver_iterations {
+                physics.solver_iterations = self.count(&span, "physics.solver_iterations", n, 1, 100)?;
+            }
+            if let Some(n) = p.pgs_iterations {
+                physics.pgs_iterations = self.count(&span, "physics.pgs_iterations", n, 1, 100)?;
+            }
+            if let Some(l) = p.length_unit {
+                physics.length_unit = self.within(&span, "physics.length_unit", l, bounds::LENGTH_UNIT_M)?;
+            }
+            if let Some(n) = p.ccd_substeps {
+                physics.ccd_substeps = self.count(&span, "physics.ccd_substeps", n, 0, bounds::CCD_SUBSTEPS)?;
+            }
+            if let Some(hz) = p.contact_hz {
+                physics.contact_hz = self.num(&span, "physics.contact_hz", hz, 1.0, 10_000.0)?;
+            }
+            if let Some(v) = p.max_speed {
+                physics.max_speed = self.within(&span, "physics.max_speed", v, bounds::MAX_SPEED_M_S)?;
+            }
+        }
+        Ok(physics)
+    }
+
+    /// Every object (copies expanded), and their names, each once.
+    fn all_objects(
+        &self,
+        raw: Vec<Spanned<ObjectFile>>,
+        table: &Table,
+    ) -> Result<(Vec<ObjectSpec>, std::collections::HashSet<String>), SceneError> {
+        let mut objects = Vec::new();
+        // Where each object was written (its entry's index and span), for
+        // the duplicate-name error.
+        let mut written = Vec::new();
+        for (i, o) in raw.into_iter().enumerate() {
+            let span = o.span();
+            self.objects(i, o, table, &mut objects)?;
+            written.resize(objects.len(), (i, span));
+        }
+        // O(n log n): 40,000 names took 4 s with the pairwise check.
+        let mut seen = std::collections::HashSet::with_capacity(objects.len());
+        for (a, (i, span)) in objects.iter().zip(&written) {
+            if !seen.insert(a.name.clone()) {
+                return Err(self.err(
+                    span,
+                    format!("objects[{i}].name"),
+                    format!("`{}` is the name of two objects", a.name),
+                ));
+            }
+        }
+        Ok((objects, seen))
+    }
+
+    /// Every soft body; a name may not repeat an object's or another's.
+    fn soft_bodies(
+        &self,
+        raw: Vec<Spanned<SoftBodyFile>>,
+        table: &Table,
+        effects: EffectSet,
+        object_names: &std::collections::HashSet<String>,
+    ) -> Result<Vec<SoftBodySpec>, SceneError> {
+        let mut soft_bodies = Vec::new();
+        let mut soft_names = std::collections::HashSet::new();
+        for (i, b) in raw.into_iter().enumerate() {
+            let span = b.span();
+            let spec = self.soft_body(i, b, table, effects)?;
+            if object_names.contains(&spec.name) || !soft_names.insert(spec.name.clone()) {
+                return Err(self.err(
+                    &span,
+                    format!("soft_bodies[{i}].name"),
+                    format!("`{}` is already the name of an object or soft body", spec.name),
+                ));
+            }
+            soft_bodies.push(spec);
+        }
+        Ok(soft_bodies)
+    }
+
     fn objects(
         &self,
         i: usize,
@@ -272,30 +307,7 @@ impl Checker<'_> {
         let span = o.span();
         let o = o.into_inner();
         let f = |field: &str| format!("objects[{i}].{field}");
-        let need = |v: Option<f32>, field: &str| {
-            v.ok_or_else(|| self.err(&span, f(field), format!("a {:?} needs `{field}`", o.shape).to_lowercase()))
-        };
-        let shape = match o.shape {
-            ShapeKind::Box => {
-                let s = o.size.ok_or_else(|| self.err(&span, f("size"), "a box needs `size = [x, y, z]`"))?;
-                for (k, v) in s.iter().enumerate() {
-                    self.within(&span, &f(&format!("size[{k}]")), *v, bounds::OBJECT_SIZE_M)?;
-                }
-                Shape::Box { half_extents: Vec3::from(s) / 2.0 }
-            }
-            ShapeKind::Sphere => Shape::Sphere {
-                radius: self.within(&span, &f("radius"), need(o.radius, "radius")?, bounds::OBJECT_SIZE_M)?,
-            },
-            ShapeKind::Cylinder => Shape::Cylinder {
-                radius: self.within(&span, &f("radius"), need(o.radius, "radius")?, bounds::OBJECT_SIZE_M)?,
-                half_height: self.within(&span, &f("height"), need(o.height, "height")?, bounds::OBJECT_SIZE_M)? / 2.0,
-            },
-            ShapeKind::Capsule => Shape::Capsule {
-                radius: self.within(&span, &f("radius"), need(o.radius, "radius")?, bounds::OBJECT_SIZE_M)?,
-                half_height: self.num(&span, &f("height"), need(o.height, "height")?, 0.0, bounds::OBJECT_SIZE_M.1)?
-                    / 2.0,
-            },
-        };
+        let shape = self.object_shape(&span, i, &o)?;
         let body = match o.body.unwrap_or(BodyKindFile::Dynamic) {
             BodyKindFile::Dynamic => BodyKind::Dynamic,
             BodyKindFile::Fixed => BodyKind::Fixed,
@@ -341,56 +353,11 @@ impl Checker<'_> {
                 ),
             ));
         }
-        let vector = |name: &str, v: Option<[f32; 2]>| -> Result<Vec2, SceneError> {
-            let v = v.unwrap_or([0.0, 0.0]);
-            for (k, c) in v.iter().enumerate() {
-                self.num(&span, &f(&format!("{name}[{k}]")), *c, -p, p)?;
-            }
-            Ok(Vec2::from(v))
-        };
-        let step = vector("step", o.step)?;
-        let row_step = vector("row_step", o.row_step)?;
-        let per_row = o.per_row.unwrap_or(count).clamp(1, count);
-        // Copies at one spot are one solid overlap the solver cannot
-        // separate (10,000 boxes at one spot: 4.4 GB, no end in sight).
-        if per_row > 1 && step == Vec2::ZERO {
-            return Err(self.err(&span, f("step"), format!("{count} copies need a `step` that is not [0, 0]")));
-        }
-        if count > per_row && row_step == Vec2::ZERO {
-            return Err(self.err(
-                &span,
-                f("row_step"),
-                format!("{count} copies in rows of {per_row} need a `row_step` that is not [0, 0]"),
-            ));
-        }
+        let (step, row_step, per_row) = self.copy_layout(&span, i, &o, count)?;
         for k in 0..count {
             let offset = step * (k % per_row) as f32 + row_step * (k / per_row) as f32;
             let position = base + offset.extend(0.0);
-            if !(position.is_finite() && position.abs().max_element() <= p) {
-                return Err(self.err(
-                    &span,
-                    f("position"),
-                    format!(
-                        "copy {} lies at ({}, {}), farther than {p} m from the table centre",
-                        k + 1,
-                        human(position.x),
-                        human(position.y)
-                    ),
-                ));
-            }
-            if !table_contains(table, position.truncate()) && body == BodyKind::Dynamic {
-                return Err(self.err(
-                    &span,
-                    f("position"),
-                    format!(
-                        "({:.3}, {:.3}) lies off the table (±{:.3} × ±{:.3})",
-                        position.x,
-                        position.y,
-                        table.width / 2.0,
-                        table.depth / 2.0
-                    ),
-                ));
-            }
+            self.copy_on_table(&span, i, k, position, body, table)?;
             let name = if count == 1 { o.name.clone() } else { format!("{}{}", o.name, k + 1) };
             out.push(ObjectSpec {
                 name,
@@ -423,6 +390,113 @@ impl Checker<'_> {
                     100.0,
                 )?,
             });
+        }
+        Ok(())
+    }
+
+    /// An object's shape, from the keys its `shape` needs.
+    fn object_shape(&self, span: &Range<usize>, i: usize, o: &ObjectFile) -> Result<Shape, SceneError> {
+        let span = span.clone();
+        let f = |field: &str| format!("objects[{i}].{field}");
+        let need = |v: Option<f32>, field: &str| {
+            v.ok_or_else(|| self.err(&span, f(field), format!("a {:?} needs `{field}`", o.shape).to_lowercase()))
+        };
+        Ok(match o.shape {
+            ShapeKind::Box => {
+                let s = o.size.ok_or_else(|| self.err(&span, f("size"), "a box needs `size = [x, y, z]`"))?;
+                for (k, v) in s.iter().enumerate() {
+                    self.within(&span, &f(&format!("size[{k}]")), *v, bounds::OBJECT_SIZE_M)?;
+                }
+                Shape::Box { half_extents: Vec3::from(s) / 2.0 }
+            }
+            ShapeKind::Sphere => Shape::Sphere {
+                radius: self.within(&span, &f("radius"), need(o.radius, "radius")?, bounds::OBJECT_SIZE_M)?,
+            },
+            ShapeKind::Cylinder => Shape::Cylinder {
+                radius: self.within(&span, &f("radius"), need(o.radius, "radius")?, bounds::OBJECT_SIZE_M)?,
+                half_height: self.within(&span, &f("height"), need(o.height, "height")?, bounds::OBJECT_SIZE_M)? / 2.0,
+            },
+            ShapeKind::Capsule => Shape::Capsule {
+                radius: self.within(&span, &f("radius"), need(o.radius, "radius")?, bounds::OBJECT_SIZE_M)?,
+                half_height: self.num(&span, &f("height"), need(o.height, "height")?, 0.0, bounds::OBJECT_SIZE_M.1)?
+                    / 2.0,
+            },
+        })
+    }
+
+    /// Where an object's `count` copies go: `step` between copies in a row,
+    /// `row_step` between rows of `per_row`.
+    fn copy_layout(
+        &self,
+        span: &Range<usize>,
+        i: usize,
+        o: &ObjectFile,
+        count: u32,
+    ) -> Result<(Vec2, Vec2, u32), SceneError> {
+        let span = span.clone();
+        let f = |field: &str| format!("objects[{i}].{field}");
+        let p = bounds::POSITION_M;
+        let vector = |name: &str, v: Option<[f32; 2]>| -> Result<Vec2, SceneError> {
+            let v = v.unwrap_or([0.0, 0.0]);
+            for (k, c) in v.iter().enumerate() {
+                self.num(&span, &f(&format!("{name}[{k}]")), *c, -p, p)?;
+            }
+            Ok(Vec2::from(v))
+        };
+        let step = vector("step", o.step)?;
+        let row_step = vector("row_step", o.row_step)?;
+        let per_row = o.per_row.unwrap_or(count).clamp(1, count);
+        // Copies at one spot are one solid overlap the solver cannot
+        // separate (10,000 boxes at one spot: 4.4 GB, no end in sight).
+        if per_row > 1 && step == Vec2::ZERO {
+            return Err(self.err(&span, f("step"), format!("{count} copies need a `step` that is not [0, 0]")));
+        }
+        if count > per_row && row_step == Vec2::ZERO {
+            return Err(self.err(
+                &span,
+                f("row_step"),
+                format!("{count} copies in rows of {per_row} need a `row_step` that is not [0, 0]"),
+            ));
+        }
+        Ok((step, row_step, per_row))
+    }
+
+    /// Copy `k` of object `i` lies near the table, and on it if it moves.
+    fn copy_on_table(
+        &self,
+        span: &Range<usize>,
+        i: usize,
+        k: u32,
+        position: Vec3,
+        body: BodyKind,
+        table: &Table,
+    ) -> Result<(), SceneError> {
+        let f = |field: &str| format!("objects[{i}].{field}");
+        let p = bounds::POSITION_M;
+        if !(position.is_finite() && position.abs().max_element() <= p) {
+            return Err(self.err(
+                span,
+                f("position"),
+                format!(
+                    "copy {} lies at ({}, {}), farther than {p} m from the table centre",
+                    k + 1,
+                    human(position.x),
+                    human(position.y)
+                ),
+            ));
+        }
+        if !table_contains(table, position.truncate()) && body == BodyKind::Dynamic {
+            return Err(self.err(
+                span,
+                f("position"),
+                format!(
+                    "({:.3}, {:.3}) lies off the table (±{:.3} × ±{:.3})",
+                    position.x,
+                    position.y,
+                    table.width / 2.0,
+                    table.depth / 2.0
+                ),
+            ));
         }
         Ok(())
     }
@@ -470,34 +544,7 @@ impl Checker<'_> {
                 format!("{thickness} is out of range (up to {} m)", default::MAX_SOFT_THICKNESS),
             ));
         }
-        let spacing = if kind == SoftKind::Cloth { default::CLOTH_SPACING } else { default::VOLUME_SPACING };
-        let resolution = if let Some(r) = &b.resolution {
-            if r.len() != dims {
-                return Err(self.err(
-                    &span,
-                    f("resolution"),
-                    format!("needs {dims} entries, one per side, got {}", r.len()),
-                ));
-            }
-            let mut out = [1usize; 3];
-            let (lo, hi) = default::RESOLUTION_RANGE;
-            for (k, n) in r.iter().enumerate() {
-                out[k] = self.count(&span, &f(&format!("resolution[{k}]")), *n, lo, hi)? as usize;
-            }
-            out
-        } else {
-            let (lo, hi) = default::AUTO_RESOLUTION;
-            let n = |l: f32| ((l / spacing).round() as usize + 1).clamp(lo, hi);
-            [n(size.x), n(size.y), if dims == 3 { n(size.z) } else { 1 }]
-        };
-        let particles = resolution.iter().product::<usize>();
-        if particles > default::MAX_SOFT_PARTICLES {
-            return Err(self.err(
-                &span,
-                f("resolution"),
-                format!("{particles} particles is too many (at most {})", default::MAX_SOFT_PARTICLES),
-            ));
-        }
+        let resolution = self.soft_resolution(&span, i, &b, kind, size)?;
         let position = match b.position.as_slice() {
             [x, y] => Vec3::new(*x, *y, if kind == SoftKind::Cloth { thickness } else { size.z / 2.0 + thickness }),
             [x, y, z] => Vec3::new(*x, *y, *z),
@@ -513,26 +560,7 @@ impl Checker<'_> {
                 format!("({:.3}, {:.3}) lies off the table", position.x, position.y),
             ));
         }
-        let measure = if dims == 2 { size.x * size.y } else { size.x * size.y * size.z };
-        let mass = match (b.mass, b.density) {
-            (Some(m), None) => self.within(&span, &f("mass"), m, bounds::MASS_KG)?,
-            (None, Some(d)) => {
-                let mass = self.within(&span, &f("density"), d, bounds::DENSITY)? * measure;
-                let (lo, hi) = bounds::MASS_KG;
-                if !(lo..=hi).contains(&mass) {
-                    return Err(self.err(
-                        &span,
-                        f("density"),
-                        format!("gives a mass of {} kg, out of range ({}..={} kg)", human(mass), human(lo), human(hi)),
-                    ));
-                }
-                mass
-            }
-            (Some(_), Some(_)) => return Err(self.err(&span, f("density"), "give `mass` or `density`, not both")),
-            (None, None) => {
-                return Err(self.err(&span, f("mass"), format!("a {} needs `mass` (kg) or `density`", kind.name())));
-            }
-        };
+        let mass = self.soft_mass(&span, i, &b, kind, size)?;
         if b.bending.is_some() && kind != SoftKind::Cloth {
             return Err(self.err(&span, f("bending"), "only a cloth has bending springs"));
         }
@@ -584,6 +612,86 @@ impl Checker<'_> {
             }
         }
         Ok(spec)
+    }
+
+    /// A soft body's particle grid: as written, or from its size at the
+    /// kind's default spacing; never more particles than the bound.
+    fn soft_resolution(
+        &self,
+        span: &Range<usize>,
+        i: usize,
+        b: &SoftBodyFile,
+        kind: SoftKind,
+        size: Vec3,
+    ) -> Result<[usize; 3], SceneError> {
+        let span = span.clone();
+        let f = |field: &str| format!("soft_bodies[{i}].{field}");
+        let dims = if kind == SoftKind::Cloth { 2 } else { 3 };
+        let spacing = if kind == SoftKind::Cloth { default::CLOTH_SPACING } else { default::VOLUME_SPACING };
+        let resolution = if let Some(r) = &b.resolution {
+            if r.len() != dims {
+                return Err(self.err(
+                    &span,
+                    f("resolution"),
+                    format!("needs {dims} entries, one per side, got {}", r.len()),
+                ));
+            }
+            let mut out = [1usize; 3];
+            let (lo, hi) = default::RESOLUTION_RANGE;
+            for (k, n) in r.iter().enumerate() {
+                out[k] = self.count(&span, &f(&format!("resolution[{k}]")), *n, lo, hi)? as usize;
+            }
+            out
+        } else {
+            let (lo, hi) = default::AUTO_RESOLUTION;
+            let n = |l: f32| ((l / spacing).round() as usize + 1).clamp(lo, hi);
+            [n(size.x), n(size.y), if dims == 3 { n(size.z) } else { 1 }]
+        };
+        let particles = resolution.iter().product::<usize>();
+        if particles > default::MAX_SOFT_PARTICLES {
+            return Err(self.err(
+                &span,
+                f("resolution"),
+                format!("{particles} particles is too many (at most {})", default::MAX_SOFT_PARTICLES),
+            ));
+        }
+        Ok(resolution)
+    }
+
+    /// A soft body's mass: `mass`, or `density` times its area (cloth) or
+    /// volume, one of the two.
+    fn soft_mass(
+        &self,
+        span: &Range<usize>,
+        i: usize,
+        b: &SoftBodyFile,
+        kind: SoftKind,
+        size: Vec3,
+    ) -> Result<f32, SceneError> {
+        let span = span.clone();
+        let f = |field: &str| format!("soft_bodies[{i}].{field}");
+        let dims = if kind == SoftKind::Cloth { 2 } else { 3 };
+        let measure = if dims == 2 { size.x * size.y } else { size.x * size.y * size.z };
+        let mass = match (b.mass, b.density) {
+            (Some(m), None) => self.within(&span, &f("mass"), m, bounds::MASS_KG)?,
+            (None, Some(d)) => {
+                let mass = self.within(&span, &f("density"), d, bounds::DENSITY)? * measure;
+                let (lo, hi) = bounds::MASS_KG;
+                if !(lo..=hi).contains(&mass) {
+                    return Err(self.err(
+                        &span,
+                        f("density"),
+                        format!("gives a mass of {} kg, out of range ({}..={} kg)", human(mass), human(lo), human(hi)),
+                    ));
+                }
+                mass
+            }
+            (Some(_), Some(_)) => return Err(self.err(&span, f("density"), "give `mass` or `density`, not both")),
+            (None, None) => {
+                return Err(self.err(&span, f("mass"), format!("a {} needs `mass` (kg) or `density`", kind.name())));
+            }
+        };
+        Ok(mass)
     }
 
     fn goal(

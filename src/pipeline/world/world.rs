@@ -74,6 +74,34 @@ impl World {
     /// benchmark that measures what ignoring the declaration costs.
     pub fn with_effects(scene: &Scene, effects: EffectSet) -> World {
         let config = WorldConfig::new(scene, effects);
+        let mut physics = Self::physics_for(&config);
+        let env = Self::environment(scene, &config, &mut physics);
+        let objects = Self::scene_objects(scene, &config, &mut physics);
+        let scene_colliders = env
+            .into_iter()
+            .map(|h| (h, None))
+            .chain(objects.iter().enumerate().map(|(i, s)| (s.collider, Some(i))))
+            .map(|(h, o)| (h, o, physics.colliders[h].compute_aabb()))
+            .collect();
+        let mut world = World {
+            physics,
+            config,
+            scene: scene.clone(),
+            objects,
+            soft: SoftBodies::default(),
+            scene_colliders,
+            time: 0.0,
+            stats: WorldStats::default(),
+        };
+        world.soft = SoftBodies::spawn(&world.scene.soft_bodies, &world.config, &mut world.physics);
+        // Build the query structures now: a contact on the very first frame
+        // must be able to ray-cast onto the scene before anything has stepped.
+        world.physics.detect_collisions(&(), &());
+        world
+    }
+
+    /// An empty rapier world set up as `config` says.
+    fn physics_for(config: &WorldConfig) -> PhysicsWorld {
         let mut physics = PhysicsWorld::new();
         // Centimetre pieces need GJK/EPA decided at a larger scale (see `magnified`).
         physics.narrow_phase = NarrowPhase::with_query_dispatcher(MagnifiedDispatcher);
@@ -97,9 +125,12 @@ impl World {
         // 0.41 per point. It costs about a fifth more time (the suite: 1.7 s ->
         // 2.1 s; the default study, 96 s on 2 cores).
         ip.friction_model = rapier3d::dynamics::FrictionModel::Coulomb;
+        physics
+    }
 
+    /// The table and, when the scene asks, its rim walls.
+    fn environment(scene: &Scene, config: &WorldConfig, physics: &mut PhysicsWorld) -> Vec<ColliderHandle> {
         let friction = |mu: f32| if config.friction { mu } else { 0.0 };
-
         // The table: a slab whose top face is z = 0, a little larger than the
         // display so objects at the rim still rest on something.
         let t = scene.table;
@@ -131,7 +162,12 @@ impl World {
                 env.push(physics.colliders.insert(wall));
             }
         }
+        env
+    }
 
+    /// One body and collider per scene object, in scene order.
+    fn scene_objects(scene: &Scene, config: &WorldConfig, physics: &mut PhysicsWorld) -> Vec<ObjectSlot> {
+        let friction = |mu: f32| if config.friction { mu } else { 0.0 };
         let mut objects = Vec::with_capacity(scene.objects.len());
         for (i, o) in scene.objects.iter().enumerate() {
             let builder = match o.body {
@@ -156,28 +192,7 @@ impl World {
             let collider = physics.colliders.insert_with_parent(cb.build(), body, &mut physics.bodies);
             objects.push(ObjectSlot { body, collider, active: true });
         }
-
-        let scene_colliders = env
-            .into_iter()
-            .map(|h| (h, None))
-            .chain(objects.iter().enumerate().map(|(i, s)| (s.collider, Some(i))))
-            .map(|(h, o)| (h, o, physics.colliders[h].compute_aabb()))
-            .collect();
-        let mut world = World {
-            physics,
-            config,
-            scene: scene.clone(),
-            objects,
-            soft: SoftBodies::default(),
-            scene_colliders,
-            time: 0.0,
-            stats: WorldStats::default(),
-        };
-        world.soft = SoftBodies::spawn(&world.scene.soft_bodies, &world.config, &mut world.physics);
-        // Build the query structures now: a contact on the very first frame
-        // must be able to ray-cast onto the scene before anything has stepped.
-        world.physics.detect_collisions(&(), &());
-        world
+        objects
     }
 
     pub fn config(&self) -> &WorldConfig {
