@@ -83,8 +83,23 @@ pub fn report_blocks(
     analysis: &Analysis,
     strategies: Option<&StrategyCounts>,
 ) -> Vec<Block> {
-    let s = |x: &str| x.to_owned();
     let mut b = vec![Block::Heading(s("Study report"))];
+    design_blocks(&mut b, design);
+    time_blocks(&mut b, summary);
+    anova_blocks(&mut b, analysis);
+    pairwise_blocks(&mut b, analysis);
+    strategy_blocks(&mut b, strategies);
+    finding_blocks(&mut b, analysis);
+    b
+}
+
+/// Owned text: the blocks hold `String`s.
+fn s(x: &str) -> String {
+    x.to_owned()
+}
+
+/// What was run, and the design's balance and plan.
+fn design_blocks(b: &mut Vec<Block>, design: &StudyDesign) {
     let techniques: Vec<&str> = design.techniques.iter().map(|t| t.label()).collect();
     b.push(Block::Paragraph(format!(
         "{} participants × tasks {} (fixed order) × techniques {} × feedback {}; measured repetitions per condition: {}{}; seed {}{}.",
@@ -119,7 +134,10 @@ pub fn report_blocks(
             })
             .collect(),
     });
+}
 
+/// The completion-time figure and its table.
+fn time_blocks(b: &mut Vec<Block>, summary: &[SummaryRow]) {
     b.push(Block::Heading(s("Completion time")));
     b.push(Block::Figure { file: FIGURE_PNG.to_owned(), alt: s("Completion time per task, technique and feedback") });
     b.push(Block::Paragraph(s(
@@ -145,7 +163,10 @@ pub fn report_blocks(
             })
             .collect(),
     });
+}
 
+/// The RM-ANOVA table, naming participants left out.
+fn anova_blocks(b: &mut Vec<Block>, analysis: &Analysis) {
     b.push(Block::Heading(s("Repeated-measures ANOVA (anova.csv)")));
     let dropped: Vec<String> = analysis
         .cells
@@ -180,7 +201,10 @@ pub fn report_blocks(
             })
             .collect(),
     });
+}
 
+/// Holm-corrected pairwise comparisons of techniques.
+fn pairwise_blocks(b: &mut Vec<Block>, analysis: &Analysis) {
     b.push(Block::Heading(s("Pairwise comparisons (pairwise.csv)")));
     b.push(Block::Paragraph(s(
         "Paired t-tests between techniques on each participant's mean over feedback levels, Holm-corrected over the technique pairs of a task; mean difference a − b (negative: a faster); Cohen's dz.",
@@ -204,7 +228,10 @@ pub fn report_blocks(
             })
             .collect(),
     });
+}
 
+/// Which manners participants used, per technique.
+fn strategy_blocks(b: &mut Vec<Block>, strategies: Option<&StrategyCounts>) {
     b.push(Block::Heading(s("Strategies")));
     match strategies {
         None => b.push(Block::Paragraph(s(
@@ -230,7 +257,10 @@ pub fn report_blocks(
             b.push(Block::Table { head: ["technique", "strategy", "trials", "share"].map(s).to_vec(), rows });
         }
     }
+}
 
+/// Each of the paper's findings judged on this run.
+fn finding_blocks(b: &mut Vec<Block>, analysis: &Analysis) {
     b.push(Block::Heading(s("The paper's findings")));
     b.push(Block::Paragraph(s(
         "Each finding of Wilson et al. (2008) as one test at α = .05 on this run's statistics.",
@@ -245,7 +275,6 @@ pub fn report_blocks(
             })
             .collect(),
     });
-    b
 }
 
 /// The blocks as Markdown.
