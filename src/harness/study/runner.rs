@@ -278,16 +278,9 @@ fn execute(
     let index_of = index_by_key(&trials);
 
     let csv_path = dir.join(TRIALS_CSV);
-    let recovered = recover_trials(&csv_path)?;
-    let mut done: BTreeMap<usize, TrialRow> = BTreeMap::new();
-    let mut in_order = true;
-    for (k, row) in recovered.rows.into_iter().enumerate() {
-        let index = check_row(&csv_path, &trials, &index_of, shard, &row)?;
-        in_order &= mine.get(k) == Some(&index);
-        if done.insert(index, row).is_some() {
-            return Err(StudyError::mismatch(&csv_path, format!("trial index {index} has two rows")));
-        }
-    }
+    let mut recovered = recover_trials(&csv_path)?;
+    let (mut done, in_order) =
+        rows_by_index(&csv_path, std::mem::take(&mut recovered.rows), &trials, &index_of, shard, &mine)?;
     let already_done = done.len();
     let todo_index: Vec<usize> = mine.iter().copied().filter(|i| !done.contains_key(i)).collect();
     let todo: Vec<&TrialSpec> = todo_index.iter().map(|&i| &trials[i]).collect();
@@ -297,21 +290,7 @@ fn execute(
     let mut failed = 0usize;
     let mut written = 0usize;
     if !todo.is_empty() {
-        // Each participant's trials up to their last one to run, in session
-        // order; `Some(k)` marks the k-th trial to run, `None` one to replay.
-        let mut sessions: Vec<(u32, Vec<SessionStep>)> = Vec::new();
-        for &index in &todo_index {
-            let p = trials[index].participant;
-            if sessions.last().is_none_or(|(q, _)| *q != p) {
-                sessions.push((p, Vec::new()));
-            }
-        }
-        for (p, steps) in &mut sessions {
-            let last = todo_index.iter().rev().find(|&&i| trials[i].participant == *p).copied().unwrap_or(0);
-            for i in (0..=last).filter(|&i| trials[i].participant == *p) {
-                steps.push((i, todo_index.binary_search(&i).ok()));
-            }
-        }
+        let sessions = session_plan(&trials, &todo_index);
         let jobs =
             if options.jobs == 0 { std::thread::available_parallelism().map_or(1, usize::from) } else { options.jobs };
         let jobs = jobs.clamp(1, sessions.len().max(1));
@@ -415,6 +394,49 @@ fn execute(
         reported,
         elapsed: started.elapsed(),
     })
+}
+
+/// The rows already in `trials.csv`, by trial index, each checked against
+/// the design; and whether they are exactly this shard's first trials in
+/// order (as this harness writes them).
+fn rows_by_index(
+    csv_path: &Path,
+    rows: Vec<TrialRow>,
+    trials: &[TrialSpec],
+    index_of: &HashMap<Key, usize>,
+    shard: Shard,
+    mine: &[usize],
+) -> Result<(BTreeMap<usize, TrialRow>, bool), StudyError> {
+    let mut done: BTreeMap<usize, TrialRow> = BTreeMap::new();
+    let mut in_order = true;
+    for (k, row) in rows.into_iter().enumerate() {
+        let index = check_row(csv_path, trials, index_of, shard, &row)?;
+        in_order &= mine.get(k) == Some(&index);
+        if done.insert(index, row).is_some() {
+            return Err(StudyError::mismatch(csv_path, format!("trial index {index} has two rows")));
+        }
+    }
+    Ok((done, in_order))
+}
+
+/// Each participant's trials up to their last one to run, in session
+/// order; `Some(k)` marks the k-th trial to run, `None` one to replay (a
+/// participant's learning needs the trials before).
+fn session_plan(trials: &[TrialSpec], todo_index: &[usize]) -> Vec<(u32, Vec<SessionStep>)> {
+    let mut sessions: Vec<(u32, Vec<SessionStep>)> = Vec::new();
+    for &index in todo_index {
+        let p = trials[index].participant;
+        if sessions.last().is_none_or(|(q, _)| *q != p) {
+            sessions.push((p, Vec::new()));
+        }
+    }
+    for (p, steps) in &mut sessions {
+        let last = todo_index.iter().rev().find(|&&i| trials[i].participant == *p).copied().unwrap_or(0);
+        for i in (0..=last).filter(|&i| trials[i].participant == *p) {
+            steps.push((i, todo_index.binary_search(&i).ok()));
+        }
+    }
+    sessions
 }
 
 /// Of the rows in `trials.csv` for these trials: how many did not complete,
