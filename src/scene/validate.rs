@@ -561,15 +561,7 @@ impl Checker<'_> {
             ));
         }
         let mass = self.soft_mass(&span, i, &b, kind, size)?;
-        if b.bending.is_some() && kind != SoftKind::Cloth {
-            return Err(self.err(&span, f("bending"), "only a cloth has bending springs"));
-        }
-        if b.crumple.is_some() && kind != SoftKind::Cloth {
-            return Err(self.err(&span, f("crumple"), "only a cloth can start crumpled"));
-        }
-        if b.crease.is_some() && kind != SoftKind::Cloth {
-            return Err(self.err(&span, f("crease"), "only a cloth creases"));
-        }
+        self.cloth_only_keys(&span, i, &b, kind)?;
         let tear_strain = match b.tear_strain {
             Some(t) => Some(
                 self.positive(&span, &f("tear_strain"), t)
@@ -656,6 +648,30 @@ impl Checker<'_> {
             ));
         }
         Ok(resolution)
+    }
+
+    /// Keys only a cloth has, on anything else, are an error (not ignored).
+    fn cloth_only_keys(
+        &self,
+        span: &Range<usize>,
+        i: usize,
+        b: &SoftBodyFile,
+        kind: SoftKind,
+    ) -> Result<(), SceneError> {
+        if kind == SoftKind::Cloth {
+            return Ok(());
+        }
+        let f = |field: &str| format!("soft_bodies[{i}].{field}");
+        if b.bending.is_some() {
+            return Err(self.err(span, f("bending"), "only a cloth has bending springs"));
+        }
+        if b.crumple.is_some() {
+            return Err(self.err(span, f("crumple"), "only a cloth can start crumpled"));
+        }
+        if b.crease.is_some() {
+            return Err(self.err(span, f("crease"), "only a cloth creases"));
+        }
+        Ok(())
     }
 
     /// A soft body's mass: `mass`, or `density` times its area (cloth) or
