@@ -172,7 +172,18 @@ fn draw<DB: DrawingBackend>(
         }
     }
 
-    // One legend for all panels, centred under them.
+    draw_legend(&legend, levels, summary.iter().any(|r| r.failed > 0))?;
+    root.present().map_err(e)
+}
+
+/// One legend for all panels, centred under them; a note in red when some
+/// trials failed.
+fn draw_legend<DB: DrawingBackend>(
+    legend: &DrawingArea<DB, Shift>,
+    levels: &[bool],
+    any_failed: bool,
+) -> Result<(), String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
     let (width, _) = legend.dim_in_pixel();
     let entry_width = 240i32;
     let mut x = (width as i32 - entry_width * levels.len() as i32) / 2;
@@ -182,14 +193,14 @@ fn draw<DB: DrawingBackend>(
         legend.draw(&Text::new(text, (x + 30, 14), (FONT, TEXT_SIZE))).map_err(e)?;
         x += entry_width;
     }
-    if summary.iter().any(|r| r.failed > 0) {
+    if any_failed {
         let note = "Red: failed trials, counted at the time limit (so those means are lower bounds)";
         let (w, _) = legend.dim_in_pixel();
         let style =
             TextStyle::from((FONT, TEXT_SIZE).into_font()).color(&FAILED).pos(Pos::new(HPos::Center, VPos::Top));
         legend.draw(&Text::new(note, (w as i32 / 2, 46), style)).map_err(e)?;
     }
-    root.present().map_err(e)
+    Ok(())
 }
 
 /// A categorical x axis for bar groups: category `i` is centred on `i` over
