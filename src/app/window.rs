@@ -376,26 +376,7 @@ impl App {
             return Ok(());
         };
 
-        // Layout: the panel, then the view in what is left.
-        let raw = gfx.egui_state.take_egui_input(&gfx.window);
-        let participant = self.lab.participant.is_some();
-        let camera = gfx.renderer.camera().copied();
-        let frame_info = ViewFrame {
-            texture: (!gfx.direct).then_some(gfx.target.id),
-            camera: camera.as_ref().map(|c| (c, gfx.target.size())),
-            pointer_on_view,
-        };
-        let (lab, panel_state) = (&mut self.lab, &mut self.panel);
-        let mut actions = Vec::new();
-        let mut view_rect = egui::Rect::NOTHING;
-        let full = gfx.egui.run_ui(raw, |ui| {
-            if !participant {
-                actions = panel::show_side(ui, lab, panel_state);
-            }
-            let rect = ui.available_rect_before_wrap();
-            view_rect = view::show(ui, rect, lab, frame_info);
-        });
-        gfx.egui_state.handle_platform_output(&gfx.window, full.platform_output);
+        let (full, actions, view_rect) = layout(gfx, &mut self.lab, &mut self.panel, pointer_on_view);
         let ppp = full.pixels_per_point;
         let (min, max) = ((view_rect.min.to_vec2() * ppp).round(), (view_rect.max.to_vec2() * ppp).round());
         self.view_px = egui::Rect::from_min_max(min.to_pos2(), max.to_pos2());
@@ -556,6 +537,36 @@ impl App {
             panel: None,
         })
     }
+}
+
+/// This frame's egui pass: the panel (unless a participant sits), then the
+/// view in what is left. Returns egui's output (platform output handled),
+/// the panel's actions and where the view went, in points.
+fn layout(
+    gfx: &mut Gfx,
+    lab: &mut Lab,
+    panel_state: &mut PanelState,
+    pointer_on_view: bool,
+) -> (egui::FullOutput, Vec<Action>, egui::Rect) {
+    let raw = gfx.egui_state.take_egui_input(&gfx.window);
+    let participant = lab.participant.is_some();
+    let camera = gfx.renderer.camera().copied();
+    let frame_info = ViewFrame {
+        texture: (!gfx.direct).then_some(gfx.target.id),
+        camera: camera.as_ref().map(|c| (c, gfx.target.size())),
+        pointer_on_view,
+    };
+    let mut actions = Vec::new();
+    let mut view_rect = egui::Rect::NOTHING;
+    let mut full = gfx.egui.run_ui(raw, |ui| {
+        if !participant {
+            actions = panel::show_side(ui, lab, panel_state);
+        }
+        let rect = ui.available_rect_before_wrap();
+        view_rect = view::show(ui, rect, lab, frame_info);
+    });
+    gfx.egui_state.handle_platform_output(&gfx.window, std::mem::take(&mut full.platform_output));
+    (full, actions, view_rect)
 }
 
 fn window_title(lab: &Lab) -> String {
