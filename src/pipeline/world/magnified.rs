@@ -14,7 +14,9 @@
 //! value types, so the pair is rebuilt 10x larger, its contacts computed
 //! there, and the manifold scaled back: the geometry is exactly the same,
 //! only the tolerances shrink relative to it. Pairs with exact routines
-//! (balls, box–box, capsule–capsule) are left as they are.
+//! (balls, box–box, capsule–capsule) are left as they are, and so are the
+//! parts of composite shapes (parry's own dispatcher recurses into them;
+//! no scene or technique here builds one). Shape casts (CCD) are parry's.
 
 use glam::Vec3;
 use rapier3d::parry::query::details::NormalConstraints;
