@@ -296,33 +296,12 @@ fn execute(
         let jobs = jobs.clamp(1, sessions.len().max(1));
         let next = AtomicUsize::new(0);
         let stop = AtomicBool::new(false);
-        let (tx, rx) = mpsc::channel::<(usize, TrialRow, Option<String>)>();
+        let (tx, rx) = mpsc::channel::<Measured>();
         std::thread::scope(|scope| -> Result<(), StudyError> {
             for _ in 0..jobs {
                 let tx = tx.clone();
                 let (next, stop, sessions, trials) = (&next, &stop, &sessions, &trials);
-                scope.spawn(move || {
-                    while !stop.load(Ordering::Relaxed) {
-                        let s = next.fetch_add(1, Ordering::Relaxed);
-                        let Some((participant, steps)) = sessions.get(s) else { break };
-                        let mut session = runner.participant(*participant);
-                        for &(index, k) in steps {
-                            if stop.load(Ordering::Relaxed) {
-                                return;
-                            }
-                            let spec = &trials[index];
-                            match k {
-                                None => replay_one(session.as_mut(), spec),
-                                Some(k) => {
-                                    let (row, error) = run_one(session.as_mut(), spec);
-                                    if tx.send((k, row, error)).is_err() {
-                                        return;
-                                    }
-                                }
-                            }
-                        }
-                    }
-                });
+                scope.spawn(move || work(runner, sessions, trials, (next, stop), &tx));
             }
             drop(tx);
             // Results arrive in any order; rows leave in trial order.
@@ -337,10 +316,7 @@ fn execute(
                         }
                         if let Some(error) = error {
                             failed += 1;
-                            let line = format!(
-                                "P{} #{} {} {} feedback={} rep {}: {error}",
-                                row.participant, row.order_index, row.task, row.technique, row.feedback, row.repetition
-                            );
+                            let line = failure_line(&row, &error);
                             log_error(dir, &line)?;
                             if options.report_errors {
                                 progress.suspend(|| eprintln!("trial failed: {line}"));
@@ -394,6 +370,51 @@ fn execute(
         reported,
         elapsed: started.elapsed(),
     })
+}
+
+/// A measured trial's row, sent from a worker: its place among the trials
+/// to run, the row, and the runner's error if it failed.
+type Measured = (usize, TrialRow, Option<String>);
+
+/// One worker thread: takes the next participant's session until none is
+/// left or `stop` is set, and runs its trials in session order (replaying
+/// the ones before, which a participant's learning needs), sending each
+/// measured row.
+fn work(
+    runner: &dyn TrialRunner,
+    sessions: &[(u32, Vec<SessionStep>)],
+    trials: &[TrialSpec],
+    (next, stop): (&AtomicUsize, &AtomicBool),
+    tx: &mpsc::Sender<Measured>,
+) {
+    while !stop.load(Ordering::Relaxed) {
+        let s = next.fetch_add(1, Ordering::Relaxed);
+        let Some((participant, steps)) = sessions.get(s) else { break };
+        let mut session = runner.participant(*participant);
+        for &(index, k) in steps {
+            if stop.load(Ordering::Relaxed) {
+                return;
+            }
+            let spec = &trials[index];
+            match k {
+                None => replay_one(session.as_mut(), spec),
+                Some(k) => {
+                    let (row, error) = run_one(session.as_mut(), spec);
+                    if tx.send((k, row, error)).is_err() {
+                        return;
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The `errors.log` line of a failed trial.
+fn failure_line(row: &TrialRow, error: &str) -> String {
+    format!(
+        "P{} #{} {} {} feedback={} rep {}: {error}",
+        row.participant, row.order_index, row.task, row.technique, row.feedback, row.repetition
+    )
 }
 
 /// The rows already in `trials.csv`, by trial index, each checked against
