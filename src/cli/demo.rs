@@ -2,7 +2,7 @@
 //! [`DemoOptions`]; the window itself is `crate::app`.
 
 use super::{DemoArgs, EXIT_USAGE};
-use crate::app::{self, DemoOptions, ParticipantOptions, Screenshot};
+use crate::app::{self, DemoOptions, ParticipantOptions};
 use crate::input::Gesture;
 use crate::pipeline::technique::TechniqueKind;
 use clap::Parser;
@@ -54,13 +54,7 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
     if let Some(path) = &args.script {
         o.script = Some(Gesture::load(path).map_err(|e| format!("--script: {}", crate::error::chain(&e)))?);
     }
-    if let Some(values) = &args.screenshot_after {
-        let [seconds, path] = values.as_slice() else {
-            return Err("--screenshot-after takes SECONDS PATH".into());
-        };
-        let after_s = super::parse_seconds(seconds).map_err(|e| format!("--screenshot-after: {e}"))?;
-        o.screenshot_after = Some(Screenshot { after_s: f64::from(after_s), path: PathBuf::from(path) });
-    }
+    o.screenshot_after.clone_from(&args.screenshot_after.0);
     o.quit_after = args.quit_after.map(f64::from);
     // clap enforces the pairs (`--participant` requires `--condition`;
     // `--trials-csv` and `--reps` require `--participant`).
@@ -96,6 +90,7 @@ pub fn parse_condition(s: &str) -> Result<(TechniqueKind, bool), String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::app::Screenshot;
     use crate::input::tuio::DEFAULT_PORT;
 
     fn parse(args: &[&str]) -> Result<DemoOptions, String> {
@@ -126,7 +121,9 @@ mod tests {
         let o = parse(&["--screenshot-after", "2.5", "shot.png", "--quit-after", "4"]).expect("valid");
         assert_eq!(o.screenshot_after, Some(Screenshot { after_s: 2.5, path: "shot.png".into() }));
         assert_eq!(o.quit_after, Some(4.0));
-        assert!(parse(&["--screenshot-after", "soon", "shot.png"]).is_err());
+        let late = parse(&["--screenshot-after", "soon", "shot.png"]).expect_err("not seconds");
+        assert!(late.contains("--screenshot-after") && late.contains("`soon` is not a number of seconds"), "{late}");
+        assert!(parse(&["--screenshot-after", "2"]).is_err(), "PATH is required");
         assert!(parse(&["--tuio-bind", "0.0.0.0"]).is_err());
     }
 

@@ -71,9 +71,8 @@ pub struct DemoArgs {
     /// Replay a gesture file as live input, from the start of the session.
     #[arg(long, value_name = "GESTURE_FILE")]
     pub script: Option<PathBuf>,
-    /// Save a PNG of the window once SECONDS have passed.
-    #[arg(long, num_args = 2, value_names = ["SECONDS", "PATH"])]
-    pub screenshot_after: Option<Vec<String>>,
+    #[command(flatten)]
+    pub screenshot_after: ScreenshotAfter,
     /// Close the window after SECONDS.
     #[arg(long, value_name = "SECONDS", value_parser = parse_seconds)]
     pub quit_after: Option<f32>,
@@ -134,6 +133,57 @@ fn parse_task_name(s: &str) -> Result<String, String> {
 
 /// A finite number of seconds in `0..=scene::bounds::DURATION_S`: a
 /// longer run would simulate for hours (`--settle 1e30` never ended).
+/// `--screenshot-after SECONDS PATH`: two values of two types under one
+/// flag, which clap's per-flag value parser cannot type, so this argument
+/// reads its own matches (clap's `FromArgMatches`): a bad SECONDS is a clap
+/// error at parse time (exit 2, naming the flag), like every other value.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct ScreenshotAfter(pub Option<crate::app::Screenshot>);
+
+const SCREENSHOT_AFTER: &str = "screenshot_after";
+
+impl clap::FromArgMatches for ScreenshotAfter {
+    fn from_arg_matches(matches: &clap::ArgMatches) -> Result<Self, clap::Error> {
+        let Some(mut values) = matches.get_raw(SCREENSHOT_AFTER) else { return Ok(Self(None)) };
+        let invalid = |message: String| {
+            clap::Error::raw(
+                clap::error::ErrorKind::ValueValidation,
+                format!("invalid value for '--screenshot-after <SECONDS> <PATH>': {message}\n"),
+            )
+        };
+        let (Some(seconds), Some(path)) = (values.next(), values.next()) else {
+            return Err(invalid("takes SECONDS PATH".into()));
+        };
+        let seconds = seconds.to_str().ok_or_else(|| invalid("SECONDS is not text".into()))?;
+        let after_s = f64::from(parse_seconds(seconds).map_err(invalid)?);
+        Ok(Self(Some(crate::app::Screenshot { after_s, path: PathBuf::from(path) })))
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &clap::ArgMatches) -> Result<(), clap::Error> {
+        if matches.contains_id(SCREENSHOT_AFTER) && matches.get_raw(SCREENSHOT_AFTER).is_some() {
+            *self = Self::from_arg_matches(matches)?;
+        }
+        Ok(())
+    }
+}
+
+impl clap::Args for ScreenshotAfter {
+    fn augment_args(cmd: clap::Command) -> clap::Command {
+        cmd.arg(
+            clap::Arg::new(SCREENSHOT_AFTER)
+                .long("screenshot-after")
+                .num_args(2)
+                .value_names(["SECONDS", "PATH"])
+                .value_parser(clap::value_parser!(std::ffi::OsString))
+                .help("Save a PNG of the window once SECONDS have passed"),
+        )
+    }
+
+    fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_args(cmd)
+    }
+}
+
 fn parse_seconds(s: &str) -> Result<f32, String> {
     let v: f32 = s.parse().map_err(|_| format!("`{s}` is not a number of seconds"))?;
     let max = crate::scene::bounds::DURATION_S;
