@@ -208,7 +208,7 @@ fn bind_group_layouts(device: &wgpu::Device) -> [wgpu::BindGroupLayout; 3] {
 
 impl Pipelines {
     pub fn new(device: &wgpu::Device, config: PipelineConfig) -> Self {
-        use wgpu::CompareFunction::{Always, Greater, LessEqual};
+        use wgpu::CompareFunction::Always;
         let [frame_layout, shadow_pass_layout, overlay_layout] = bind_group_layouts(device);
         let pipeline_layout = |label: &str, groups: &[Option<&wgpu::BindGroupLayout>]| {
             device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
@@ -253,109 +253,19 @@ impl Pipelines {
                 },
             )
         };
-        let mesh = |label, cull| {
-            build(
-                device,
-                format,
-                Spec {
-                    label,
-                    layout: &main_layout,
-                    module: &mesh_module,
-                    vs: "vs_main",
-                    fs: Some("fs_main"),
-                    buffers: &mesh_buffers,
-                    cull,
-                    depth: Depth::opaque(),
-                    blend: None,
-                    sample_count: samples,
-                },
-            )
-        };
-        let line_buffers = [Some(LineInstance::layout())];
-        let cube_buffers = [Some(Vertex::layout()), Some(CubeInstance::layout())];
-        let feedback = |label, vs, fs, buffers, compare, write| {
-            build(
-                device,
-                format,
-                Spec {
-                    label,
-                    layout: &main_layout,
-                    module: &feedback_module,
-                    vs,
-                    fs: Some(fs),
-                    buffers,
-                    cull: Some(wgpu::Face::Back),
-                    depth: Depth { write, ..Depth::test_only(compare) },
-                    blend: alpha,
-                    sample_count: samples,
-                },
-            )
-        };
+        let main = MainPass { device, format, samples, layout: &main_layout };
+        let mesh = |label, cull| main.mesh(&mesh_module, &mesh_buffers, label, cull);
+        let [flat, grid, decal] = main.surfaces(&flat_module, &grid_module, &decal_module, &mesh_buffers);
+        let [feedback_lines_hidden, feedback_lines_visible, feedback_cubes_hidden, feedback_cubes_visible] =
+            main.feedback(&feedback_module);
         Self {
             shadow_solid: shadow("shadow pipeline (solid)", Some(wgpu::Face::Back)),
             shadow_two_sided: shadow("shadow pipeline (two-sided)", None),
-            flat: build(
-                device,
-                format,
-                Spec {
-                    label: "flat pipeline",
-                    layout: &main_layout,
-                    module: &flat_module,
-                    vs: "vs_main",
-                    fs: Some("fs_main"),
-                    buffers: &mesh_buffers,
-                    cull: Some(wgpu::Face::Back),
-                    depth: Depth::opaque(),
-                    blend: None,
-                    sample_count: samples,
-                },
-            ),
-            grid: build(
-                device,
-                format,
-                Spec {
-                    label: "grid pipeline",
-                    layout: &main_layout,
-                    module: &grid_module,
-                    vs: "vs_main",
-                    fs: Some("fs_main"),
-                    buffers: &[Some(StripInstance::layout())],
-                    cull: None,
-                    depth: Depth::test_only(LessEqual),
-                    // Multiplicative: the strip darkens what the table shows.
-                    blend: Some(wgpu::BlendState {
-                        color: wgpu::BlendComponent {
-                            src_factor: wgpu::BlendFactor::Dst,
-                            dst_factor: wgpu::BlendFactor::Zero,
-                            operation: wgpu::BlendOperation::Add,
-                        },
-                        alpha: wgpu::BlendComponent {
-                            src_factor: wgpu::BlendFactor::Zero,
-                            dst_factor: wgpu::BlendFactor::One,
-                            operation: wgpu::BlendOperation::Add,
-                        },
-                    }),
-                    sample_count: samples,
-                },
-            ),
             mesh_solid: mesh("mesh pipeline (solid)", Some(wgpu::Face::Back)),
             mesh_two_sided: mesh("mesh pipeline (two-sided)", None),
-            decal: build(
-                device,
-                format,
-                Spec {
-                    label: "decal pipeline",
-                    layout: &main_layout,
-                    module: &decal_module,
-                    vs: "vs_main",
-                    fs: Some("fs_main"),
-                    buffers: &[Some(DecalInstance::layout())],
-                    cull: None,
-                    depth: Depth::test_only(LessEqual),
-                    blend: alpha,
-                    sample_count: samples,
-                },
-            ),
+            flat,
+            grid,
+            decal,
             overlay: build(
                 device,
                 format,
@@ -374,60 +284,195 @@ impl Pipelines {
                     sample_count: samples,
                 },
             ),
-            // Lines are quads whose winding depends on the screen direction:
-            // no culling.
-            feedback_lines_hidden: build(
-                device,
-                format,
-                Spec {
-                    label: "feedback lines pipeline (hidden parts)",
-                    layout: &main_layout,
-                    module: &feedback_module,
-                    vs: "vs_line",
-                    fs: Some("fs_hidden"),
-                    buffers: &line_buffers,
-                    cull: None,
-                    depth: Depth::test_only(Greater),
-                    blend: alpha,
-                    sample_count: samples,
-                },
-            ),
-            feedback_lines_visible: build(
-                device,
-                format,
-                Spec {
-                    label: "feedback lines pipeline (visible parts)",
-                    layout: &main_layout,
-                    module: &feedback_module,
-                    vs: "vs_line",
-                    fs: Some("fs_visible"),
-                    buffers: &line_buffers,
-                    cull: None,
-                    depth: Depth { write: true, ..Depth::test_only(LessEqual) },
-                    blend: alpha,
-                    sample_count: samples,
-                },
-            ),
-            feedback_cubes_hidden: feedback(
-                "feedback cubes pipeline (hidden parts)",
-                "vs_cube",
-                "fs_hidden",
-                &cube_buffers,
-                Greater,
-                false,
-            ),
-            feedback_cubes_visible: feedback(
-                "feedback cubes pipeline (visible parts)",
-                "vs_cube",
-                "fs_visible",
-                &cube_buffers,
-                LessEqual,
-                true,
-            ),
+            feedback_lines_hidden,
+            feedback_lines_visible,
+            feedback_cubes_hidden,
+            feedback_cubes_visible,
             frame_layout,
             shadow_pass_layout,
             overlay_layout,
         }
+    }
+}
+
+/// What every pipeline of the main pass shares.
+struct MainPass<'a> {
+    device: &'a wgpu::Device,
+    format: wgpu::TextureFormat,
+    samples: u32,
+    layout: &'a wgpu::PipelineLayout,
+}
+
+impl MainPass<'_> {
+    /// Meshes (spheres, cylinders, soft bodies), culled or two-sided.
+    fn mesh(
+        &self,
+        module: &wgpu::ShaderModule,
+        buffers: &[Option<wgpu::VertexBufferLayout<'_>>],
+        label: &str,
+        cull: Option<wgpu::Face>,
+    ) -> wgpu::RenderPipeline {
+        build(
+            self.device,
+            self.format,
+            Spec {
+                label,
+                layout: self.layout,
+                module,
+                vs: "vs_main",
+                fs: Some("fs_main"),
+                buffers,
+                cull,
+                depth: Depth::opaque(),
+                blend: None,
+                sample_count: self.samples,
+            },
+        )
+    }
+
+    /// The table's flat faces, its grid strips and the zone decals.
+    fn surfaces(
+        &self,
+        flat_module: &wgpu::ShaderModule,
+        grid_module: &wgpu::ShaderModule,
+        decal_module: &wgpu::ShaderModule,
+        mesh_buffers: &[Option<wgpu::VertexBufferLayout<'_>>],
+    ) -> [wgpu::RenderPipeline; 3] {
+        use wgpu::CompareFunction::LessEqual;
+        let alpha = Some(wgpu::BlendState::ALPHA_BLENDING);
+        let flat = build(
+            self.device,
+            self.format,
+            Spec {
+                label: "flat pipeline",
+                layout: self.layout,
+                module: flat_module,
+                vs: "vs_main",
+                fs: Some("fs_main"),
+                buffers: mesh_buffers,
+                cull: Some(wgpu::Face::Back),
+                depth: Depth::opaque(),
+                blend: None,
+                sample_count: self.samples,
+            },
+        );
+        let grid = build(
+            self.device,
+            self.format,
+            Spec {
+                label: "grid pipeline",
+                layout: self.layout,
+                module: grid_module,
+                vs: "vs_main",
+                fs: Some("fs_main"),
+                buffers: &[Some(StripInstance::layout())],
+                cull: None,
+                depth: Depth::test_only(LessEqual),
+                // Multiplicative: the strip darkens what the table shows.
+                blend: Some(wgpu::BlendState {
+                    color: wgpu::BlendComponent {
+                        src_factor: wgpu::BlendFactor::Dst,
+                        dst_factor: wgpu::BlendFactor::Zero,
+                        operation: wgpu::BlendOperation::Add,
+                    },
+                    alpha: wgpu::BlendComponent {
+                        src_factor: wgpu::BlendFactor::Zero,
+                        dst_factor: wgpu::BlendFactor::One,
+                        operation: wgpu::BlendOperation::Add,
+                    },
+                }),
+                sample_count: self.samples,
+            },
+        );
+        let decal = build(
+            self.device,
+            self.format,
+            Spec {
+                label: "decal pipeline",
+                layout: self.layout,
+                module: decal_module,
+                vs: "vs_main",
+                fs: Some("fs_main"),
+                buffers: &[Some(DecalInstance::layout())],
+                cull: None,
+                depth: Depth::test_only(LessEqual),
+                blend: alpha,
+                sample_count: self.samples,
+            },
+        );
+        [flat, grid, decal]
+    }
+
+    /// The technique's feedback: lines and cubes, each in a pass for the
+    /// parts hidden behind objects and one for the visible parts.
+    fn feedback(&self, feedback_module: &wgpu::ShaderModule) -> [wgpu::RenderPipeline; 4] {
+        use wgpu::CompareFunction::{Greater, LessEqual};
+        let alpha = Some(wgpu::BlendState::ALPHA_BLENDING);
+        let line_buffers = [Some(LineInstance::layout())];
+        let cube_buffers = [Some(Vertex::layout()), Some(CubeInstance::layout())];
+        let feedback = |label, vs, fs, buffers, compare, write| {
+            build(
+                self.device,
+                self.format,
+                Spec {
+                    label,
+                    layout: self.layout,
+                    module: feedback_module,
+                    vs,
+                    fs: Some(fs),
+                    buffers,
+                    cull: Some(wgpu::Face::Back),
+                    depth: Depth { write, ..Depth::test_only(compare) },
+                    blend: alpha,
+                    sample_count: self.samples,
+                },
+            )
+        };
+        // Lines are quads whose winding depends on the screen direction:
+        // no culling.
+        let lines_hidden = build(
+            self.device,
+            self.format,
+            Spec {
+                label: "feedback lines pipeline (hidden parts)",
+                layout: self.layout,
+                module: feedback_module,
+                vs: "vs_line",
+                fs: Some("fs_hidden"),
+                buffers: &line_buffers,
+                cull: None,
+                depth: Depth::test_only(Greater),
+                blend: alpha,
+                sample_count: self.samples,
+            },
+        );
+        let lines_visible = build(
+            self.device,
+            self.format,
+            Spec {
+                label: "feedback lines pipeline (visible parts)",
+                layout: self.layout,
+                module: feedback_module,
+                vs: "vs_line",
+                fs: Some("fs_visible"),
+                buffers: &line_buffers,
+                cull: None,
+                depth: Depth { write: true, ..Depth::test_only(LessEqual) },
+                blend: alpha,
+                sample_count: self.samples,
+            },
+        );
+        let cubes_hidden =
+            feedback("feedback cubes pipeline (hidden parts)", "vs_cube", "fs_hidden", &cube_buffers, Greater, false);
+        let cubes_visible = feedback(
+            "feedback cubes pipeline (visible parts)",
+            "vs_cube",
+            "fs_visible",
+            &cube_buffers,
+            LessEqual,
+            true,
+        );
+        [lines_hidden, lines_visible, cubes_hidden, cubes_visible]
     }
 }
 
