@@ -46,6 +46,7 @@
 
 use super::polygon::ConvexPolygon;
 use super::report::{ContactReport, Feature, Features, Relation};
+use super::separated::separated_report;
 use super::tolerance::scale_tolerance;
 use super::vec2::Vec2;
 
@@ -230,10 +231,10 @@ impl EntranceBlock {
 /// `bⱼ` of B at the cover's start) and which edge moves on. Small on
 /// purpose: the one-shot query never builds the full [`ContactEdge`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct Cover {
-    i: usize,
-    j: usize,
-    step: Step,
+pub(crate) struct Cover {
+    pub(crate) i: usize,
+    pub(crate) j: usize,
+    pub(crate) step: Step,
 }
 
 /// Where the walk starts. The lowest point of `B ⊕ (−A)` is B's lowest
@@ -286,7 +287,7 @@ fn cover_normal(a: &ConvexPolygon, b: &ConvexPolygon, c: Cover) -> Vec2 {
 
 /// The full contact edge of a cover.
 #[inline]
-fn contact_edge(a: &ConvexPolygon, b: &ConvexPolygon, c: Cover) -> ContactEdge {
+pub(crate) fn contact_edge(a: &ConvexPolygon, b: &ConvexPolygon, c: Cover) -> ContactEdge {
     let (av, bv) = (a.vertices(), b.vertices());
     let i1 = if c.i + 1 == av.len() { 0 } else { c.i + 1 };
     let j1 = if c.j + 1 == bv.len() { 0 } else { c.j + 1 };
@@ -323,6 +324,9 @@ fn contact_edge(a: &ConvexPolygon, b: &ConvexPolygon, c: Cover) -> ContactEdge {
 /// bookkeeping cost as much as the geometry.
 pub fn contact_report(a: &ConvexPolygon, b: &ConvexPolygon) -> ContactReport {
     let tolerance = pair_tolerance(a, b);
+    if let Some(report) = separated_report(a, b, tolerance) {
+        return report;
+    }
     let (av, bv, na, nb) = (a.vertices(), b.vertices(), a.normals(), b.normals());
     let (n, m) = (av.len(), bv.len());
     let (mut i, mut j) = start_state(a, b);
@@ -436,12 +440,12 @@ fn extreme(points: &[Vec2], better: impl Fn(Vec2, Vec2) -> bool) -> usize {
 }
 
 /// Whether two unit normals point the same way within [`PARALLEL`].
-fn parallel(u: Vec2, v: Vec2) -> bool {
+pub(crate) fn parallel(u: Vec2, v: Vec2) -> bool {
     u.cross(v).abs() <= PARALLEL && u.dot(v) > 0.0
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Step {
+pub(crate) enum Step {
     /// Take B's edge: an angle–edge cover.
     B,
     /// Take −A's edge: an edge–angle cover.

@@ -10,6 +10,7 @@ mod json_query;
 mod polygon;
 mod report;
 mod scaling;
+mod separated;
 mod tolerance;
 mod vec2;
 
