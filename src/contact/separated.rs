@@ -52,7 +52,8 @@ const REFINEMENTS: usize = 3;
 pub(crate) fn separated_report(a: &ConvexPolygon, b: &ConvexPolygon, tolerance: f64) -> Option<ContactReport> {
     let (av, bv) = (a.vertices(), b.vertices());
     let mut n = a.centre() - b.centre();
-    if !(n.length_squared() > 0.0) {
+    // Coincident centres (or NaN): no direction to start from.
+    if n.length_squared().is_nan() || n.length_squared() <= 0.0 {
         return None;
     }
     // Block support point in direction n: B's vertex farthest along n minus
@@ -67,7 +68,7 @@ pub(crate) fn separated_report(a: &ConvexPolygon, b: &ConvexPolygon, tolerance: 
         }
         // The direction from the block's support point towards the origin.
         let next = -v;
-        if !(next.length_squared() > 0.0) {
+        if next.length_squared().is_nan() || next.length_squared() <= 0.0 {
             return None;
         }
         let (i2, j2) = support(next);
