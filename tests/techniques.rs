@@ -287,6 +287,43 @@ fn culled_particles_change_nothing_the_objects_feel() {
     }
 }
 
+/// Culling's guarantee, end to end: a particle is culled only where it can
+/// touch nothing movable in its step. Every culled particle's capsule (from
+/// its centre 25 cm up towards the eye, radius 3 mm) is measured against
+/// the box after the step, when the box has moved: none overlaps it.
+/// Measured: the nearest was 1.6 cm away (flat hand sweep, 32,055 culled
+/// particle-frames) and 1.4 cm (edge push, 7,417).
+#[test]
+fn no_culled_particle_could_have_touched_the_box() {
+    use rapier3d::parry::query;
+    use rapier3d::prelude::{Capsule, Pose};
+    let scene = scene::load(&asset("tasks/cases/one_box.toml")).expect("scene");
+    for gesture in ["flat_hand_sweep", "edge_push"] {
+        let g = Gesture::load(asset(&format!("assets/gestures/{gesture}.toml"))).expect("gesture");
+        let mut s = Session::new(&scene, TechniqueKind::Particle, SessionOptions::default()).expect("session");
+        let r = TechniqueConfig::default().particle_radius;
+        let (mut nearest, mut culled) = (f32::MAX, 0usize);
+        while s.time() < g.duration() + 0.5 {
+            let hands = g.sample(s.time());
+            s.step(&hands).expect("step");
+            // Feedback lists the simulated particles first, then the culled.
+            let cubes = s.feedback().cubes;
+            let w = s.world();
+            let c = &w.physics().colliders[w.object_collider(ObjectId::new(0))];
+            for (p, _) in &cubes[s.counts().bodies..] {
+                let up = (w.eye() - *p).normalize();
+                let pose = Pose::from_parts(*p + up * 0.125, Quat::from_rotation_arc(Vec3::Z, up));
+                let d = query::distance(&pose, &Capsule::new_z(0.125, r), c.position(), c.shape()).expect("convex");
+                nearest = nearest.min(d.distance);
+                culled += 1;
+            }
+        }
+        println!("{gesture}: {culled} culled particle-frames, the nearest {nearest:.4} m from the box");
+        assert!(culled > 1000, "{gesture}: only {culled} particles culled");
+        assert!(nearest > 0.0, "{gesture}: a culled particle overlapped the box ({nearest} m)");
+    }
+}
+
 #[test]
 fn lost_tracking_never_teleports_a_proxy() {
     // A contact that jumps 40 cm in one frame (tracking lost and found).

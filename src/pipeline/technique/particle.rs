@@ -32,11 +32,12 @@
 //! [`MAX_SURFACE_SPEEDUP`] times the hand moves over the table.
 
 use super::proxy::{gravity_scale_for, pressure_weight, soft_mass};
+use super::sight_reach::SightReach;
 use super::surface_point::{clamp_len, project_flow, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::FlowInterest;
-use crate::pipeline::world::{Layer, Reach, TechniqueBody, TechniqueWorld, World, WorldError};
+use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 use std::collections::HashMap;
@@ -54,12 +55,7 @@ const CULL_SLACK: f32 = 0.01;
 
 /// A particle's speed along the surface it touches, at most this many times
 /// the hand's speed over the table.
-const MAX_SURFACE_SPEEDUP: f32 = 1.2;
-
-/// How much larger a length looks on screen than on the table, at most:
-/// perspective scales a point at height z by H / (H - z), under 1.1 for
-/// anything a hand touches under the default camera.
-const MAX_PERSPECTIVE: f32 = 1.25;
+pub(super) const MAX_SURFACE_SPEEDUP: f32 = 1.2;
 
 /// Length (m) of a line-of-sight capsule (see `particle_capsules`). The
 /// paper's reaches the camera's near plane; this one reaches a quarter
@@ -103,7 +99,7 @@ pub struct ParticleTechnique {
     sensed_only: Vec<Vec3>,
     /// The movable bodies' reach, computed for `flow_interest` and used
     /// again by `apply` in the same frame (the world has not stepped since).
-    reach: Option<Vec<Reach>>,
+    reach: Option<SightReach>,
     contacts: usize,
     /// Contacts whose particles are balls this frame even with
     /// `particle_capsules` (see [`ParticleTechnique::set_ball_contacts`]).
@@ -163,6 +159,14 @@ impl ParticleTechnique {
         SIGHT_LENGTH.min(0.8 * world.eye().z)
     }
 
+    /// Where particles can touch something movable this step. A particle
+    /// moves at most `max_contact_speed` in each of its velocity's planar
+    /// and vertical parts.
+    fn sight_reach(&self, world: &World, dt: f32) -> SightReach {
+        let travel = self.config.max_contact_speed * std::f32::consts::SQRT_2 * dt;
+        SightReach::new(world, dt, self.config.particle_radius, CULL_SLACK, travel)
+    }
+
     /// The collision layer of a line-of-sight capsule or a ball.
     fn layer(sight: bool) -> Layer {
         if sight { Layer::Sight } else { Layer::Particle }
@@ -194,9 +198,9 @@ impl ParticleTechnique {
         let r = self.config.particle_radius;
         let share = self.config.particle_stride as f32 * input.sensor.metres_per_pixel() / REFERENCE_SPACING;
         let reach = match self.reach.take() {
-            Some(r) => r,
-            None if self.config.particle_cull => world.movable_reach(),
-            None => Vec::new(),
+            Some(r) => Some(r),
+            None if self.config.particle_cull => Some(self.sight_reach(world, input.dt)),
+            None => None,
         };
         let mut out = Vec::with_capacity(samples.len());
         let mut culled = Vec::new();
@@ -213,6 +217,7 @@ impl ParticleTechnique {
             // sit on the top and only rub it: a fingertip going from rest
             // to 1.6 m/s in one frame (2.7 cm, half a box) threw a 6 cm box
             // 1.3 cm, and 46 cm so (`surfacelab behaviours`, flick_from_rest).
+            let mut start = here;
             if e.flow_px[0].hypot(e.flow_px[1]) > MIN_SWEEP_PX {
                 let before = table_point(input.sensor, [e.px[0] - e.flow_px[0], e.px[1] - e.flow_px[1]]);
                 if let Some(low) = world.cast_contact_ray(before)
@@ -220,6 +225,7 @@ impl ParticleTechnique {
                 {
                     hit = low;
                     next = here;
+                    start = before;
                 }
             }
             let p_next = project_flow(world, &hit, next);
@@ -240,19 +246,17 @@ impl ParticleTechnique {
             };
             let center = hit.point + hit.normal * (r - 0.0001);
             let up = (world.eye() - center).normalize_or(Vec3::Z);
-            let top = center + up * Self::sight_length(world);
             let sight =
                 self.config.particle_capsules && hit.soft.is_none() && !self.ball_contacts.contains(&e.contact_id);
-            let reaches = |b: &Reach| {
-                if sight {
-                    b.can_touch_segment(center, top, r, v.length(), input.dt, CULL_SLACK)
-                } else {
-                    b.can_touch(center, r, v.length(), input.dt, CULL_SLACK)
-                }
-            };
+            let velocity = Vec3::new(vt.x, vt.y, vz);
             // No flow measured: the vision stage found it out of reach of
             // everything movable (see `flow_interest`).
-            if self.config.particle_cull && hit.soft.is_none() && (!e.has_flow || !reach.iter().any(reaches)) {
+            let travel = velocity.length() * input.dt;
+            let out_of_reach = !e.has_flow
+                || reach.as_ref().is_some_and(|r| {
+                    if sight { !r.may_touch(start, travel) } else { !r.ball_may_touch(center, travel) }
+                });
+            if self.config.particle_cull && hit.soft.is_none() && out_of_reach {
                 culled.push(center);
                 continue;
             }
@@ -271,7 +275,7 @@ impl ParticleTechnique {
                 center,
                 up,
                 sight,
-                velocity: Vec3::new(vt.x, vt.y, vz),
+                velocity,
                 weight,
                 // On a soft body a particle weighs what it presses (see `soft_mass`).
                 mass: if hit.soft.is_some() { soft_mass(weight) } else { self.config.particle_mass * share },
@@ -424,41 +428,17 @@ impl Technique for ParticleTechnique {
     }
 
     /// With culling, flow is needed only where a particle could reach
-    /// something movable: each body's box, grown by what `placements` adds
-    /// to it (the particle's size, the body's travel and the slack),
-    /// projected to the contact image. Vision grows each box further by the
-    /// point's own largest flow, times the speed cap and perspective, so
-    /// every particle `placements` keeps has its flow measured.
+    /// something movable (see [`SightReach::flow_interest`]); the reach is
+    /// kept for `apply` in the same frame (the world has not stepped since).
     fn flow_interest(&mut self, world: &World, sensor: &Sensor, dt: f32) -> FlowInterest {
         if !self.config.particle_cull {
             self.reach = None;
             return FlowInterest::All;
         }
-        let reach = world.movable_reach();
-        // A line-of-sight capsule lies along its pixel's camera ray, so it
-        // can touch a body only where that pixel sees the body grown by the
-        // capsule's radius: the same box as a ball particle's.
-        let offset = self.config.particle_radius;
-        let boxes = reach
-            .iter()
-            .map(|b| {
-                let grow = Vec3::splat(offset + b.speed * dt + CULL_SLACK);
-                let (lo, hi) = (b.min - grow, b.max + grow);
-                let mut px = [f32::MAX, f32::MAX, f32::MIN, f32::MIN];
-                for k in 0..8 {
-                    let corner = Vec3::new(
-                        if k & 1 == 0 { lo.x } else { hi.x },
-                        if k & 2 == 0 { lo.y } else { hi.y },
-                        if k & 4 == 0 { lo.z } else { hi.z },
-                    );
-                    let [x, y] = sensor.to_pixel(world.screen_point(corner).to_array());
-                    px = [px[0].min(x), px[1].min(y), px[2].max(x), px[3].max(y)];
-                }
-                px
-            })
-            .collect();
+        let reach = self.sight_reach(world, dt);
+        let interest = reach.flow_interest(sensor);
         self.reach = Some(reach);
-        FlowInterest::Near { boxes, flow_scale: MAX_SURFACE_SPEEDUP * MAX_PERSPECTIVE }
+        interest
     }
 
     fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {

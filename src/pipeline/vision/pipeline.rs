@@ -15,6 +15,7 @@ use crate::pipeline::surface::ContactImage;
 
 use super::components::{Blob, find_blobs_in_rows};
 use super::flow::BlockMatcher;
+use super::interest::FlowInterest;
 use super::sobel::find_edges;
 use super::threshold::{Mask, threshold_rows};
 use super::tracking::{BlobTracker, BlobTrackerParams};
@@ -99,41 +100,6 @@ pub struct EdgeSample {
     /// Whether `flow_px` was measured: false where the frame's
     /// [`FlowInterest`] asked for none (it is then zero).
     pub has_flow: bool,
-}
-
-/// Where this frame's caller needs flow. Block matching is most of the
-/// vision stage's cost (~0.5 µs per outline point) and only the Particle
-/// technique reads it, and only near bodies it can move.
-#[derive(Debug, Clone, PartialEq, Default)]
-pub enum FlowInterest {
-    /// Every outline point (the paper's way).
-    #[default]
-    All,
-    /// No outline point.
-    None,
-    /// Points inside any of these pixel boxes `[x0, y0, x1, y1]`, each grown
-    /// by `flow_scale` times the largest flow the point can have (its
-    /// predicted flow plus the search radius and a pixel of sub-pixel
-    /// refinement): a point that may move into a box within the frame is
-    /// measured.
-    Near { boxes: Vec<[f32; 4]>, flow_scale: f32 },
-}
-
-impl FlowInterest {
-    /// Whether a point at `px` with predicted flow `guess` needs its flow,
-    /// given the matcher's search radius.
-    pub fn wants(&self, px: [f32; 2], guess: [f32; 2], search_radius: f32) -> bool {
-        match self {
-            FlowInterest::All => true,
-            FlowInterest::None => false,
-            FlowInterest::Near { boxes, flow_scale } => {
-                let reach = flow_scale * (guess[0].hypot(guess[1]) + search_radius + 1.0);
-                boxes.iter().any(|b| {
-                    px[0] >= b[0] - reach && px[0] <= b[2] + reach && px[1] >= b[1] - reach && px[1] <= b[3] + reach
-                })
-            }
-        }
-    }
 }
 
 /// Microseconds spent in each stage of one `process` call.
@@ -333,20 +299,6 @@ mod tests {
         let g = rigid_guess([0.0, 10.0], [0.0, 0.0], [0.0, 0.0], std::f32::consts::FRAC_PI_2);
         assert!((g[0] + 10.0).abs() < 1e-4 && (g[1] - 10.0).abs() < 1e-4, "{g:?}");
         assert_eq!(rigid_guess([5.0, 5.0], [1.0, 1.0], [2.0, -1.0], 0.0), [2.0, -1.0]);
-    }
-
-    #[test]
-    fn flow_interest_grows_each_box_by_the_points_largest_flow() {
-        let near = FlowInterest::Near { boxes: vec![[100.0, 100.0, 120.0, 110.0]], flow_scale: 1.5 };
-        // Inside the box: always.
-        assert!(near.wants([110.0, 105.0], [0.0, 0.0], 3.0));
-        // 7 px left of it: reach is 1.5 * (0 + 3 + 1) = 6 px, so not...
-        assert!(!near.wants([93.0, 105.0], [0.0, 0.0], 3.0));
-        // ...unless the point is predicted to move 2 px (1.5 * 6 = 9 px).
-        assert!(near.wants([93.0, 105.0], [2.0, 0.0], 3.0));
-        assert!(FlowInterest::All.wants([0.0, 0.0], [0.0, 0.0], 3.0));
-        assert!(!FlowInterest::None.wants([110.0, 105.0], [0.0, 0.0], 3.0));
-        assert!(!FlowInterest::Near { boxes: Vec::new(), flow_scale: 1.0 }.wants([1.0, 1.0], [0.0, 0.0], 3.0));
     }
 
     #[test]

@@ -27,7 +27,7 @@ pub use groups::{Layer, collider_layer};
 pub use magnified::{MAGNIFICATION, MagnifiedDispatcher};
 pub use object::ObjectPush;
 pub use ray::RayHit;
-pub use reach::Reach;
+pub use reach::{Bound, Reach};
 pub use soft::SoftSurface;
 pub use soft_access::SoftPush;
 pub use stats::WorldStats;

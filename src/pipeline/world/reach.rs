@@ -1,5 +1,5 @@
-//! Where something can still move this step: the boxes around every body a
-//! technique body could push, grown by how far it can travel.
+//! Where something can still move this step: a bound around every body a
+//! technique body could push, and how fast it moves.
 //!
 //! The Particle technique asks this to skip particles that land on bare
 //! table far from anything that moves: such a particle touches nothing but
@@ -8,72 +8,107 @@
 //! 1400 particles, most of them on empty table).
 
 use super::world::World;
-use glam::Vec3;
+use crate::scene::Shape;
+use glam::{Quat, Vec3};
 
-/// An axis-aligned box around a movable body, and its speed.
+/// Points on a ring that circumscribes a circle: their polygon contains
+/// the circle when they sit `1 / cos(π / RING)` times its radius out.
+const RING: usize = 16;
+
+/// A solid that contains a body: an oriented box or an oriented upright
+/// cylinder (a ball and a capsule stand in their cylinders, which from a
+/// camera a metre above look at most a few per cent larger).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Bound {
+    Box { center: Vec3, rotation: Quat, half: Vec3 },
+    Cylinder { center: Vec3, rotation: Quat, radius: f32, half_height: f32 },
+}
+
+/// A movable body's bound, and its speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reach {
-    pub min: Vec3,
-    pub max: Vec3,
+    pub bound: Bound,
     /// Fastest point of the body (m/s): its linear speed, plus its spin
-    /// times its half-diagonal.
+    /// times the bound's half-diagonal.
     pub speed: f32,
 }
 
-impl Reach {
-    /// Whether a sphere of `radius` at `p`, moving at up to `speed`, can
-    /// touch the body within `dt` (plus a `slack`).
-    pub fn can_touch(&self, p: Vec3, radius: f32, speed: f32, dt: f32, slack: f32) -> bool {
-        let grow = Vec3::splat(radius + (speed + self.speed) * dt + slack);
-        let (lo, hi) = (self.min - grow, self.max + grow);
-        p.cmpge(lo).all() && p.cmple(hi).all()
+impl Bound {
+    /// The farthest a point of the bound lies from its centre.
+    pub fn half_diagonal(&self) -> f32 {
+        match *self {
+            Bound::Box { half, .. } => half.length(),
+            Bound::Cylinder { radius, half_height, .. } => radius.hypot(half_height),
+        }
     }
 
-    /// Whether a capsule (segment `a`–`b`, `radius`), moving at up to
-    /// `speed`, can touch the body within `dt` (plus a `slack`): the
-    /// segment clipped against the grown box (slab test) is not empty.
-    pub fn can_touch_segment(&self, a: Vec3, b: Vec3, radius: f32, speed: f32, dt: f32, slack: f32) -> bool {
-        let grow = Vec3::splat(radius + (speed + self.speed) * dt + slack);
-        let (lo, hi) = (self.min - grow, self.max + grow);
-        let d = b - a;
-        let (mut t0, mut t1) = (0.0f32, 1.0f32);
-        for k in 0..3 {
-            if d[k].abs() < 1e-9 {
-                if a[k] < lo[k] || a[k] > hi[k] {
-                    return false;
-                }
-                continue;
+    /// How far `p` lies outside the bound (0 inside).
+    pub fn distance(&self, p: Vec3) -> f32 {
+        match *self {
+            Bound::Box { center, rotation, half } => {
+                let q = (rotation.inverse() * (p - center)).abs() - half;
+                q.max(Vec3::ZERO).length()
             }
-            let (u, v) = ((lo[k] - a[k]) / d[k], (hi[k] - a[k]) / d[k]);
-            t0 = t0.max(u.min(v));
-            t1 = t1.min(u.max(v));
-            if t0 > t1 {
-                return false;
+            Bound::Cylinder { center, rotation, radius, half_height } => {
+                let q = rotation.inverse() * (p - center);
+                let radial = (q.truncate().length() - radius).max(0.0);
+                let axial = (q.z.abs() - half_height).max(0.0);
+                radial.hypot(axial)
             }
         }
-        true
+    }
+
+    /// Points whose convex hull contains every point within `grow` of the
+    /// bound: the corners of the box grown by `grow` on every side, or two
+    /// circumscribing rings of the cylinder grown so.
+    pub fn corners(&self, grow: f32) -> Vec<Vec3> {
+        match *self {
+            Bound::Box { center, rotation, half } => {
+                let h = half + Vec3::splat(grow);
+                (0..8)
+                    .map(|k| {
+                        let s = |bit: usize| if k & bit == 0 { -1.0 } else { 1.0 };
+                        center + rotation * Vec3::new(s(1) * h.x, s(2) * h.y, s(4) * h.z)
+                    })
+                    .collect()
+            }
+            Bound::Cylinder { center, rotation, radius, half_height } => {
+                let r = (radius + grow) / (std::f32::consts::PI / RING as f32).cos();
+                let z = half_height + grow;
+                (0..2 * RING)
+                    .map(|k| {
+                        let a = (k % RING) as f32 * std::f32::consts::TAU / RING as f32;
+                        let zk = if k < RING { -z } else { z };
+                        center + rotation * Vec3::new(r * a.cos(), r * a.sin(), zk)
+                    })
+                    .collect()
+            }
+        }
     }
 }
 
 impl World {
-    /// The reach of every active dynamic scene object and every soft body
-    /// piece, as of now.
+    /// The reach of every active dynamic scene object and every soft body,
+    /// as of now.
     pub fn movable_reach(&self) -> Vec<Reach> {
         let physics = self.physics();
         let mut out = Vec::new();
         for id in self.object_ids() {
-            if !self.is_active(id) {
+            if !self.is_movable(id) {
                 continue;
             }
-            let Some(body) = physics.bodies.get(self.object_body(id)) else { continue };
-            if !body.is_dynamic() {
-                continue;
-            }
-            let Some(collider) = physics.colliders.get(self.object_collider(id)) else { continue };
-            let aabb = collider.compute_aabb();
-            let (min, max) = (aabb.mins, aabb.maxs);
-            let speed = body.linvel().length() + body.angvel().length() * (max - min).length() * 0.5;
-            out.push(Reach { min, max, speed });
+            let pose = self.object_pose(id);
+            let (center, rotation) = (pose.position, pose.rotation);
+            let bound = match self.scene().object(id).shape {
+                Shape::Box { half_extents } => Bound::Box { center, rotation, half: half_extents },
+                Shape::Sphere { radius } => Bound::Cylinder { center, rotation, radius, half_height: radius },
+                Shape::Cylinder { radius, half_height } => Bound::Cylinder { center, rotation, radius, half_height },
+                Shape::Capsule { radius, half_height } => {
+                    Bound::Cylinder { center, rotation, radius, half_height: half_height + radius }
+                }
+            };
+            let speed = pose.linvel.length() + pose.angvel.length() * bound.half_diagonal();
+            out.push(Reach { bound, speed });
         }
         for (_, b) in physics.soft_bodies.iter().filter(|(_, b)| b.is_enabled()) {
             let (mut min, mut max, mut speed) = (Vec3::splat(f32::MAX), Vec3::splat(f32::MIN), 0.0f32);
@@ -85,8 +120,9 @@ impl World {
                 speed = speed.max(v.length());
             }
             if min.cmple(max).all() {
-                let skin = Vec3::splat(b.particle_radius());
-                out.push(Reach { min: min - skin, max: max + skin, speed });
+                let half = 0.5 * (max - min) + Vec3::splat(b.particle_radius());
+                let bound = Bound::Box { center: 0.5 * (min + max), rotation: Quat::IDENTITY, half };
+                out.push(Reach { bound, speed });
             }
         }
         out
@@ -97,34 +133,60 @@ impl World {
 mod tests {
     use super::*;
 
-    #[test]
-    fn reach_grows_with_both_speeds() {
-        let r = Reach { min: Vec3::ZERO, max: Vec3::splat(0.1), speed: 1.0 };
-        let p = Vec3::new(0.2, 0.05, 0.05);
-        // 0.1 m away: a still particle of radius 3 mm cannot touch it in a 1/60 s step...
-        assert!(!r.can_touch(p, 0.003, 0.0, 1.0 / 60.0, 0.0));
-        // ...nor one at 4 m/s (6.7 cm + 1.7 cm + 3 mm < 10 cm)...
-        assert!(!r.can_touch(p, 0.003, 4.0, 1.0 / 60.0, 0.0));
-        // ...but with 2 cm of slack it can.
-        assert!(r.can_touch(p, 0.003, 4.0, 1.0 / 60.0, 0.02));
-        assert!(r.can_touch(Vec3::splat(0.05), 0.0, 0.0, 0.0, 0.0), "inside");
+    /// Whether `p` lies in the convex hull of `pts` in the xy-plane
+    /// (a brute-force check: on the inner side of every hull edge).
+    fn in_hull_xy(pts: &[Vec3], p: Vec3) -> bool {
+        // p is outside iff some line through two hull points has every
+        // point on one side and p strictly on the other.
+        for a in pts {
+            for b in pts {
+                let d = (*b - *a).truncate();
+                if d.length() < 1e-9 {
+                    continue;
+                }
+                let side = |q: Vec3| d.perp_dot((q - *a).truncate());
+                let (lo, hi) =
+                    pts.iter().fold((f32::MAX, f32::MIN), |(lo, hi), q| (lo.min(side(*q)), hi.max(side(*q))));
+                if lo >= -1e-6 && side(p) < -1e-6 || hi <= 1e-6 && side(p) > 1e-6 {
+                    return false;
+                }
+            }
+        }
+        true
     }
 
     #[test]
-    fn a_segment_reaches_a_box_it_passes_beside_or_through() {
-        let r = Reach { min: Vec3::ZERO, max: Vec3::splat(0.1), speed: 0.0 };
-        // A line of sight from the table beside the box up past its top edge.
-        let (a, b) = (Vec3::new(0.13, 0.05, 0.0), Vec3::new(-0.2, 0.05, 1.0));
-        assert!(r.can_touch_segment(a, b, 0.0, 0.0, 0.0, 0.0), "it crosses above the box's edge x = 0.1 at z = 0.09");
-        assert!(!r.can_touch(a, 0.003, 0.0, 1.0 / 60.0, 0.0), "its foot alone is 3 cm away");
-        // Leaning the other way it never comes nearer than 3 cm.
-        let b2 = Vec3::new(0.45, 0.05, 1.0);
-        assert!(!r.can_touch_segment(a, b2, 0.003, 0.0, 1.0 / 60.0, 0.0));
-        // ...until the box moves fast enough to close the gap within the step.
-        let fast = Reach { speed: 2.0, ..r };
-        assert!(fast.can_touch_segment(a, b2, 0.003, 0.0, 1.0 / 60.0, 0.0));
-        // A vertical segment (zero extent in x and y) is tested slab by slab.
-        assert!(!r.can_touch_segment(Vec3::new(0.05, 0.05, 0.5), Vec3::new(0.05, 0.05, 2.0), 0.0, 0.0, 0.0, 0.0));
-        assert!(r.can_touch_segment(Vec3::new(0.05, 0.05, 0.05), Vec3::new(0.05, 0.05, 2.0), 0.0, 0.0, 0.0, 0.0));
+    fn corners_contain_the_grown_bound() {
+        let turn = Quat::from_rotation_z(0.7);
+        let cyl =
+            Bound::Cylinder { center: Vec3::new(0.1, 0.2, 0.05), rotation: turn, radius: 0.03, half_height: 0.05 };
+        let pts = cyl.corners(0.01);
+        // Every point 4 cm from the axis (radius + grow) at any angle is inside the rings' hull...
+        for k in 0..360 {
+            let a = (k as f32).to_radians();
+            let p = Vec3::new(0.1 + 0.04 * a.cos(), 0.2 + 0.04 * a.sin(), 0.05);
+            assert!(in_hull_xy(&pts, p), "angle {k}");
+        }
+        // ...and the rings reach no further than 1 / cos(π/16) of that.
+        let far = pts.iter().map(|p| (p.truncate() - Vec3::new(0.1, 0.2, 0.0).truncate()).length()).fold(0.0, f32::max);
+        assert!(far <= 0.04 / (std::f32::consts::PI / 16.0).cos() + 1e-6 && far > 0.0405, "{far}");
+        let boxed = Bound::Box {
+            center: Vec3::ZERO,
+            rotation: Quat::from_rotation_z(std::f32::consts::FRAC_PI_4),
+            half: Vec3::new(0.02, 0.02, 0.01),
+        };
+        let c = boxed.corners(0.005);
+        // A box turned 45°: its corners lie on the axes, 0.025·√2 out.
+        assert!(c.iter().any(|p| (p.x - 0.025 * 2f32.sqrt()).abs() < 1e-6 && p.y.abs() < 1e-6));
+        assert!(c.iter().all(|p| (p.z.abs() - 0.015).abs() < 1e-6));
+        assert!((boxed.half_diagonal() - 0.03).abs() < 1e-6);
+        // Distances: 1 cm beyond a turned box's corner (on the x axis), 2 cm
+        // above the cylinder's top, 3 cm beside its side and 4 cm above (5 cm).
+        let past_corner = Vec3::new(0.02 * 2f32.sqrt() + 0.01, 0.0, 0.0);
+        assert!((boxed.distance(past_corner) - 0.01).abs() < 1e-6, "{}", boxed.distance(past_corner));
+        assert_eq!(boxed.distance(Vec3::new(0.01, 0.0, 0.0)), 0.0);
+        assert!((cyl.distance(Vec3::new(0.1, 0.2, 0.12)) - 0.02).abs() < 1e-6);
+        let beside = Vec3::new(0.1 + 0.06 * 0.7f32.cos(), 0.2 + 0.06 * 0.7f32.sin(), 0.14);
+        assert!((cyl.distance(beside) - 0.05).abs() < 1e-5, "{}", cyl.distance(beside));
     }
 }
