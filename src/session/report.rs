@@ -24,6 +24,11 @@ pub struct ObjectReport {
     pub linvel: [f32; 3],
     /// False once it vanished (placed on its positioning target).
     pub active: bool,
+    /// How deep it lies inside where the goal wants it (m): its whole
+    /// footprint in a zone, circle or region (negative: how far it sticks
+    /// out), or a positioning target's tolerance less its centre's
+    /// distance. Null where the goal has no area for it.
+    pub goal_depth_m: Option<f32>,
 }
 
 /// The state of one declared soft body at the end of the run.
@@ -117,6 +122,7 @@ impl RunReport {
                     rotation: p.rotation.to_array(),
                     linvel: p.linvel.to_array(),
                     active: p.active,
+                    goal_depth_m: session.tracker().depth(id),
                 }
             })
             .collect();

@@ -31,14 +31,23 @@ pub fn want(scene: &Scene, tracker: &GoalTracker, id: ObjectId, observed: &[Vec2
             let o = scene.object(id);
             let p = *observed.get(id.index())?;
             let mine = || zones.iter().enumerate().filter(|(_, z)| z.color == o.color);
+            // A zone holds the whole object (see `session::goal`): the
+            // participant, seeing its size, wants its centre that much
+            // further in (however it has turned), and a centimetre more.
+            let size = o.shape.footprint_radius();
             if mine().any(|(_, z)| {
-                z.contains(p) && inset(z.min, z.max, 0.03).is_some_and(|(a, b)| p.cmpge(a).all() && p.cmple(b).all())
+                inset(z.min, z.max, size + 0.01).is_some_and(|(a, b)| p.cmpge(a).all() && p.cmple(b).all())
             }) {
                 return None;
             }
-            // The nearest point well inside the nearest zone of its colour.
+            // The nearest point well inside the nearest zone of its colour:
+            // 6 cm in beyond its size, or the zone's middle line where the
+            // zone is narrower than that.
             mine()
-                .filter_map(|(k, z)| inset(z.min, z.max, 0.06).map(|(a, b)| (k, p.clamp(a, b))))
+                .filter_map(|(k, z)| {
+                    let room = 0.5 * (z.max - z.min).min_element();
+                    inset(z.min, z.max, (size + 0.06).min(room)).map(|(a, b)| (k, p.clamp(a, b)))
+                })
                 .min_by(|a, b| (a.1 - p).length().total_cmp(&(b.1 - p).length()))
                 .map(|(k, point)| Want { point, region: k as u64 })
         }

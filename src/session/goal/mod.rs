@@ -4,6 +4,8 @@
 //! scene's [`crate::scene::Goal`] says: objects placed, waypoints passed,
 //! restarts, and whether the task is complete.
 
+mod containment;
 mod tracker;
 
+pub use containment::{Area, footprint};
 pub use tracker::{GoalTracker, Progress};

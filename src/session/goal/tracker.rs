@@ -1,5 +1,6 @@
 //! [`GoalTracker`]: evaluates a scene goal on the world, step by step.
 
+use super::containment::{Area, footprint};
 use crate::pipeline::world::{ObjectPose, World};
 use crate::scene::{Goal, ObjectId, Scene, SortingZone, SteeringGoal, Target};
 use glam::{Quat, Vec2, Vec3};
@@ -35,6 +36,9 @@ pub struct GoalTracker {
     /// Seconds each object has rested where it should (per object).
     dwell: Vec<f32>,
     placed: Vec<bool>,
+    /// How deep each object lies inside where its goal wants it, as of the
+    /// last update (see [`GoalTracker::depth`]).
+    depth: Vec<Option<f32>>,
     progress: Progress,
     /// Steering start pose, for restarts.
     start: Option<(ObjectId, Vec3, Quat)>,
@@ -50,6 +54,7 @@ impl GoalTracker {
             goal: scene.goal.clone(),
             dwell: vec![0.0; n],
             placed: vec![false; n],
+            depth: vec![None; n],
             progress: Progress::default(),
             start: None,
             platform_top: 0.0,
@@ -86,6 +91,15 @@ impl GoalTracker {
         self.placed[object.index()]
     }
 
+    /// How deep object `id` lies inside the area its goal wants it in, as
+    /// of the last update (m; negative: how far it sticks out): its whole
+    /// footprint in the best zone of its colour (sorting), the gather
+    /// circle or the region; for a positioning target, the tolerance less
+    /// its centre's distance. `None` where the goal has no area for it.
+    pub fn depth(&self, id: ObjectId) -> Option<f32> {
+        self.depth.get(id.index()).copied().flatten()
+    }
+
     /// Call after every world step. May change the world: placed objects
     /// vanish, a dropped steering object goes back to the start.
     pub fn update(&mut self, world: &mut World) -> Progress {
@@ -104,13 +118,11 @@ impl GoalTracker {
                 self.gather(world, (*center, *radius), *fraction, *dwell_s, &poses)
             }
             Goal::Region { object, min, max, max_height, dwell_s } => {
-                let p = poses[object.index()].position;
-                let ok = p.x >= min.x
-                    && p.x <= max.x
-                    && p.y >= min.y
-                    && p.y <= max.y
-                    && p.z <= *max_height
-                    && resting(&poses[object.index()]);
+                let pose = &poses[object.index()];
+                let area = Area::Rect { min: *min, max: *max };
+                let depth = area.depth(&footprint(world.scene().object(*object).shape, pose));
+                self.depth[object.index()] = depth;
+                let ok = depth.is_some_and(|d| d >= 0.0) && pose.position.z <= *max_height && resting(pose);
                 let done = self.dwell_step(*object, ok, dt, *dwell_s);
                 self.progress.placed = usize::from(done);
                 done
@@ -150,7 +162,11 @@ impl GoalTracker {
                 continue;
             }
             let p = poses[t.object.index()];
-            let ok = resting(&p) && (p.position.truncate() - t.position).length() <= t.tolerance;
+            // A target is a point with a tolerance, not an area: the
+            // centre's distance is its measure.
+            let depth = t.tolerance - (p.position.truncate() - t.position).length();
+            self.depth[t.object.index()] = Some(depth);
+            let ok = resting(&p) && depth >= 0.0;
             if self.dwell_step(t.object, ok, dt, dwell_s) {
                 self.placed[t.object.index()] = true;
                 world.remove_object(t.object);
@@ -160,20 +176,24 @@ impl GoalTracker {
         self.progress.placed == targets.len()
     }
 
-    /// Sorting: every object with a zone of its colour rests in one for
-    /// the dwell; objects without a zone do not matter.
+    /// Sorting: every object with a zone of its colour rests wholly inside
+    /// one for the dwell; objects without a zone do not matter.
     fn sort(&mut self, world: &World, zones: &[SortingZone], dwell_s: f32, poses: &[ObjectPose]) -> bool {
         let dt = world.dt();
         let scene = world.scene();
         let oks: Vec<(ObjectId, bool)> = scene
             .object_ids()
             .filter_map(|id| {
-                let mine: Vec<_> = zones.iter().filter(|z| z.color == scene.object(id).color).collect();
-                if mine.is_empty() {
-                    return None;
-                }
+                let o = scene.object(id);
                 let p = poses[id.index()];
-                Some((id, resting(&p) && mine.iter().any(|z| z.contains(p.position.truncate()))))
+                let shadow = footprint(o.shape, &p);
+                let depth = zones
+                    .iter()
+                    .filter(|z| z.color == o.color)
+                    .filter_map(|z| Area::Rect { min: z.min, max: z.max }.depth(&shadow))
+                    .reduce(f32::max)?;
+                self.depth[id.index()] = Some(depth);
+                Some((id, resting(&p) && depth >= 0.0))
             })
             .collect();
         let mut in_place = 0;
@@ -189,8 +209,8 @@ impl GoalTracker {
         all
     }
 
-    /// Gather: at least `fraction` of the dynamic objects rest within the
-    /// circle `(center, radius)` for the dwell.
+    /// Gather: at least `fraction` of the dynamic objects rest wholly
+    /// inside the circle `(center, radius)` for the dwell.
     fn gather(
         &mut self,
         world: &World,
@@ -204,9 +224,12 @@ impl GoalTracker {
         let dynamic: Vec<ObjectId> =
             scene.object_ids().filter(|&id| scene.object(id).body == crate::scene::BodyKind::Dynamic).collect();
         let mut inside = 0;
+        let area = Area::Circle { center, radius };
         for &id in &dynamic {
             let p = poses[id.index()];
-            let ok = (p.position.truncate() - center).length() <= radius && resting(&p);
+            let depth = area.depth(&footprint(scene.object(id).shape, &p));
+            self.depth[id.index()] = depth;
+            let ok = depth.is_some_and(|d| d >= 0.0) && resting(&p);
             if self.dwell_step(id, ok, dt, dwell_s) {
                 inside += 1;
             }
@@ -389,6 +412,44 @@ max = [0.3, 0.3]
         let p = run(&mut world, &mut tracker, 20);
         assert_eq!((p.placed, p.complete), (1, true));
         assert!(world.is_active(ObjectId::new(0)), "sorted objects stay on the table");
+    }
+
+    #[test]
+    fn sorting_wants_the_whole_object_in_the_zone() {
+        // An 8 cm cube and the sorting task's right-hand zone (x >= 0.28).
+        let (mut world, mut tracker) = setup(
+            r#"name = "s"
+effects = ["gravity", "friction"]
+[table]
+size = [1.0, 0.75]
+[[objects]]
+name = "big"
+shape = "box"
+size = [0.08, 0.08, 0.05]
+mass = 0.2
+color = "blue"
+position = [0.0, 0.0]
+[goal]
+kind = "sorting"
+dwell_s = 0.25
+[[goal.zones]]
+color = "blue"
+min = [0.28, -0.375]
+max = [0.5, 0.375]
+"#,
+        );
+        // Its centre 1 cm inside the zone: 3 cm of it hang out.
+        put(&mut world, 0, 0.29, 0.0);
+        let p = run(&mut world, &mut tracker, 60);
+        assert_eq!((p.placed, p.complete), (0, false), "a box hanging out of the zone is not sorted");
+        let d = tracker.depth(ObjectId::new(0)).expect("a zone of its colour");
+        assert!((d + 0.03).abs() < 1e-3, "depth {d}");
+        // 5 cm inside: all of it, with 1 cm to spare.
+        put(&mut world, 0, 0.33, 0.0);
+        let p = run(&mut world, &mut tracker, 20);
+        assert_eq!((p.placed, p.complete), (1, true));
+        let d = tracker.depth(ObjectId::new(0)).expect("a zone of its colour");
+        assert!((d - 0.01).abs() < 1e-3, "depth {d}");
     }
 
     const STEERING: &str = r#"name = "st"
