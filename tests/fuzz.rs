@@ -182,7 +182,7 @@ fn check_scene(text: &str) {
         let Ok(mut session) = Session::new(&scene, kind, SessionOptions::default()) else { continue };
         for _ in 0..3 {
             let hand = Hand::new(1, HandKind::FlatHand, 0.0, 0.0).with_pressure(1.0);
-            let _ = session.step(&[hand]);
+            let _ = session.step(std::slice::from_ref(&hand));
         }
     }
 }

@@ -105,7 +105,7 @@ struct FlowCase {
 
 fn flat_hand_motion(a: Hand, b: Hand) -> FlowCase {
     let s = sensor();
-    let (prev, cur) = (draw(&[a]), draw(&[b]));
+    let (prev, cur) = (draw(std::slice::from_ref(&a)), draw(std::slice::from_ref(&b)));
     let mut pipeline = Pipeline::default();
     pipeline.process(&prev);
     let frame = pipeline.process(&cur);
@@ -164,7 +164,7 @@ fn flow_recovers_a_known_translation_of_a_flat_hand() {
     let s = sensor();
     let a = Hand::new(1, HandKind::FlatHand, 0.05, -0.02).with_angle(0.2);
     let shift = s.vector_to_table([3.3, -2.1]);
-    let mut b = a;
+    let mut b = a.clone();
     b.pose.x += shift[0];
     b.pose.y += shift[1];
     let case = flat_hand_motion(a, b);
@@ -182,7 +182,7 @@ fn flow_recovers_a_known_translation_of_a_flat_hand() {
 #[test]
 fn flow_recovers_a_known_rotation_of_a_flat_hand() {
     let a = Hand::new(1, HandKind::FlatHand, -0.1, 0.05).with_angle(-0.1);
-    let b = a.with_angle(-0.1 + 3f32.to_radians());
+    let b = a.clone().with_angle(-0.1 + 3f32.to_radians());
     let case = flat_hand_motion(a, b);
     let c = &case.frame.contacts[0];
     // Counter-clockwise on the table is negative in image orientation.
@@ -465,8 +465,8 @@ fn malformed_gestures_name_the_file_the_field_and_the_line() {
         ),
         (
             "version.toml",
-            "format = \"surfacelab-gesture\"\nversion = 2\n".to_owned(),
-            vec!["version.toml:2", "`version`", "unsupported version 2"],
+            "format = \"surfacelab-gesture\"\nversion = 3\n".to_owned(),
+            vec!["version.toml:2", "`version`", "unsupported version 3"],
         ),
         (
             "version_text.toml",
