@@ -40,7 +40,7 @@
 //! `points` is the outer contour, in table metres (not relative to
 //! anything), at least 3 points, each finite and within ±100 m; `holes`
 //! (optional) are inner contours cut out of it, each of at least 3 points;
-//! at most 16,384 points per key in all. The fill is even-odd, so either
+//! at most 32,768 points per key in all. The fill is even-odd, so either
 //! winding works. `points` is required in the first key; a key without it
 //! keeps the previous key's outline and holes (and may not give `holes`
 //! alone); a key with it has exactly the holes it lists. Contour keys take

@@ -21,10 +21,10 @@ use crate::scene::bounds;
 /// Fewest points a ring may have: fewer enclose nothing.
 pub const MIN_RING_POINTS: usize = 3;
 /// Most points in one outline, all rings together. A hand's contour on a
-/// 640 × 480 sensor has a few hundred; a full-HD tracker's area spans a
-/// few thousand corners. The cap keeps a hostile packet or file from
-/// costing the rasterizer seconds per frame.
-pub const MAX_OUTLINE_POINTS: usize = 16_384;
+/// 640 × 480 sensor has a few hundred points; the most TUIO 2.0 area spans
+/// one 64 KiB datagram holds (5,461) have 21,844 corners. The cap keeps a
+/// hostile packet or file from costing the rasterizer seconds per frame.
+pub const MAX_OUTLINE_POINTS: usize = 32_768;
 
 /// Why a set of rings is not an outline. `ring` and `point` count from 0.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
