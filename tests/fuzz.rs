@@ -339,7 +339,11 @@ fn fuzz_osc_packets() {
         }
         // Whatever arrived draws (contours included) without a panic.
         let sensor = surfacelab::pipeline::surface::Sensor::new(160, 120, 1.0, 0.75);
-        let _ = surfacelab::pipeline::surface::rasterize(&hands, &sensor, &Default::default());
+        let _ = surfacelab::pipeline::surface::rasterize(
+            &hands,
+            &sensor,
+            &surfacelab::pipeline::surface::RasterParams::default(),
+        );
         Ok(())
     });
 }
@@ -357,6 +361,10 @@ fn fuzz_command_line() {
         "--task",
         "--technique",
         "--gesture",
+        "--tuio",
+        "--tuio-bind",
+        "--seconds",
+        "--record",
         "--settle",
         "--at",
         "--participants",

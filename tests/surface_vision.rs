@@ -103,9 +103,9 @@ struct FlowCase {
     cur: ContactImage,
 }
 
-fn flat_hand_motion(a: Hand, b: Hand) -> FlowCase {
+fn flat_hand_motion(a: &Hand, b: &Hand) -> FlowCase {
     let s = sensor();
-    let (prev, cur) = (draw(std::slice::from_ref(&a)), draw(std::slice::from_ref(&b)));
+    let (prev, cur) = (draw(std::slice::from_ref(a)), draw(std::slice::from_ref(b)));
     let mut pipeline = Pipeline::default();
     pipeline.process(&prev);
     let frame = pipeline.process(&cur);
@@ -167,7 +167,7 @@ fn flow_recovers_a_known_translation_of_a_flat_hand() {
     let mut b = a.clone();
     b.pose.x += shift[0];
     b.pose.y += shift[1];
-    let case = flat_hand_motion(a, b);
+    let case = flat_hand_motion(&a, &b);
     assert!(case.frame.edges.len() > 250, "{} edges", case.frame.edges.len());
     for t in &case.truth {
         assert!((t[0] - 3.3).abs() < 1e-3 && (t[1] + 2.1).abs() < 1e-3);
@@ -183,7 +183,7 @@ fn flow_recovers_a_known_translation_of_a_flat_hand() {
 fn flow_recovers_a_known_rotation_of_a_flat_hand() {
     let a = Hand::new(1, HandKind::FlatHand, -0.1, 0.05).with_angle(-0.1);
     let b = a.clone().with_angle(-0.1 + 3f32.to_radians());
-    let case = flat_hand_motion(a, b);
+    let case = flat_hand_motion(&a, &b);
     let c = &case.frame.contacts[0];
     // Counter-clockwise on the table is negative in image orientation.
     assert!((c.rotation_rad + 3f32.to_radians()).abs() < 0.5f32.to_radians(), "{}", c.rotation_rad);

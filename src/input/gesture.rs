@@ -622,7 +622,7 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand, version: i64) -> Result<T
             continue;
         }
         for (name, given) in
-            [("points", k.points.as_ref().map(|p| p.span())), ("holes", k.holes.as_ref().map(|h| h.span()))]
+            [("points", k.points.as_ref().map(Spanned::span)), ("holes", k.holes.as_ref().map(Spanned::span))]
         {
             if let Some(span) = given {
                 return Err(r.error_at(
@@ -997,7 +997,7 @@ keys = [
             quantized(&Hand::contour(9, &outline.expect("valid")).with_pressure(0.7))
         };
         let mut rec = GestureRecorder::new();
-        let hands: Vec<Hand> = (0..5).map(|i| hand(0.0123457 * i as f32)).collect();
+        let hands: Vec<Hand> = (0..5).map(|i| hand(0.012_345_7 * i as f32)).collect();
         for (i, h) in hands.iter().enumerate() {
             assert!(rec.record(i as f64 / 60.0, std::slice::from_ref(h)));
         }

@@ -269,13 +269,11 @@ impl State2 {
                 Op2::Bounds(s, _) | Op2::Outer(s, _) | Op2::Inner(s, _) | Op2::Area(s, _) | Op2::Skeleton(s, _) => *s,
                 Op2::Frame { .. } | Op2::Alive(_) | Op2::Ignored => continue,
             };
-            let c = match source.sessions.iter().position(|(s, _)| *s == session) {
-                Some(i) => &mut source.sessions[i].1,
-                None => {
-                    source.sessions.push((session, Component::default()));
-                    &mut source.sessions.last_mut().expect("just pushed").1
-                }
-            };
+            let i = source.sessions.iter().position(|(s, _)| *s == session).unwrap_or_else(|| {
+                source.sessions.push((session, Component::default()));
+                source.sessions.len() - 1
+            });
+            let c = &mut source.sessions[i].1;
             match op {
                 Op2::Pointer(p) => c.pointer = Some(p),
                 Op2::Token(t) => c.token = Some(t),
@@ -441,7 +439,7 @@ fn span_rings(spans: &[Span], row: f32) -> Vec<Vec<[f32; 2]>> {
             }
         }
     }
-    chain(edges)
+    chain(&edges)
 }
 
 /// `[a, b]` minus the sorted, disjoint `cut` intervals.
@@ -464,7 +462,7 @@ fn minus([a, b]: [f32; 2], cut: &[[f32; 2]]) -> Vec<[f32; 2]> {
 }
 
 /// Directed edges, each ending where another starts, joined into rings.
-fn chain(edges: Vec<[[f32; 2]; 2]>) -> Vec<Vec<[f32; 2]>> {
+fn chain(edges: &[[[f32; 2]; 2]]) -> Vec<Vec<[f32; 2]>> {
     let key = |p: [f32; 2]| (p[0].to_bits(), p[1].to_bits());
     let mut starting: std::collections::HashMap<(u32, u32), Vec<usize>> = std::collections::HashMap::new();
     for (i, e) in edges.iter().enumerate() {
@@ -642,7 +640,7 @@ pub(super) fn op(m: &OscMessage) -> Result<Op2, TuioError> {
         "arg" => {
             let s = session()?;
             let rest = &args[1..];
-            if rest.is_empty() || rest.len() % 3 != 0 {
+            if rest.is_empty() || !rest.len().is_multiple_of(3) {
                 return Err(bad(format!("spans come as x y w triples; found {} numbers", rest.len())));
             }
             let v = floats(1..args.len())?;
@@ -684,7 +682,7 @@ fn id(a: &OscType) -> Option<u32> {
 
 /// Coordinates as (x, y) pairs, each finite.
 fn pairs(args: &[OscType], bad: &dyn Fn(String) -> TuioError) -> Result<Vec<[f32; 2]>, TuioError> {
-    if args.len() % 2 != 0 {
+    if !args.len().is_multiple_of(2) {
         return Err(bad(format!("coordinates come in x y pairs; found {} numbers", args.len())));
     }
     args.chunks_exact(2)
@@ -771,7 +769,7 @@ mod tests {
             vec![
                 OscType::Int(frame),
                 OscType::Time(OscTime { seconds: 0, fractional: 1 }),
-                OscType::Int((640 << 16) | 480),
+                OscType::Int((640 << 16) | 0x1E0),
                 OscType::String(source.into()),
             ],
         )
