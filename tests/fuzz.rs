@@ -197,18 +197,40 @@ fn fuzz_scene_files() {
     });
 }
 
+/// A version-2 gesture with a contour hand: points, holes, a held outline.
+const CONTOUR_GESTURE: &str = r#"format = "surfacelab-gesture"
+version = 2
+
+[[hands]]
+id = 7
+kind = "contour"
+keys = [
+  { t = 0.0, points = [[-0.1, -0.05], [0.0, -0.05], [0.0, 0.05], [-0.1, 0.05]], pressure = 0.9 },
+  { t = 0.5, points = [[0.0, -0.05], [0.1, -0.05], [0.1, 0.05], [0.0, 0.05]], holes = [[[0.04, -0.01], [0.06, -0.01], [0.05, 0.01]]] },
+  { t = 1.0, pressure = 0.5 },
+]
+"#;
+
 #[test]
 fn fuzz_gesture_files() {
-    let templates: Vec<&str> = ["flick", "fingertip_drag", "flat_hand_sweep", "edge_push", "grasp_pinch"]
+    let mut templates: Vec<&str> = ["flick", "fingertip_drag", "flat_hand_sweep", "edge_push", "grasp_pinch"]
         .iter()
         .map(|n| builtin(&format!("assets/gestures/{n}.toml")))
         .collect();
+    templates.push(CONTOUR_GESTURE);
     let strategy = (prop::sample::select(templates), prop::collection::vec(edit(), 1..4));
     fuzz("gesture", strategy, |(t, edits)| {
         if let Ok(g) = Gesture::from_str(&apply(t, &edits), "fuzz.toml") {
             // A gesture that loads is bounded: sampling it ends.
             prop_assert!(g.duration() <= 600.0, "duration {}", g.duration());
-            let _ = g.sample(g.duration() / 2.0);
+            let hands = g.sample(g.duration() / 2.0);
+            // What loads draws without a panic (contours included).
+            let sensor = surfacelab::pipeline::surface::Sensor::new(160, 120, 1.0, 0.75);
+            let _ = surfacelab::pipeline::surface::rasterize(
+                &hands,
+                &sensor,
+                &surfacelab::pipeline::surface::RasterParams::default(),
+            );
         }
         Ok(())
     });

@@ -110,15 +110,18 @@ fn draw(hands: &[Hand], sensor: &Sensor, params: &RasterParams, image: &mut Cont
         }
         patches.clear();
         hand.push_patches(&mut patches);
-        let mut covered = Vec::with_capacity(patches.len() + 1);
+        let grow = |lit: Option<Range<usize>>, rows: Range<usize>| {
+            Some(lit.map_or(rows.clone(), |l| l.start.min(rows.start)..l.end.max(rows.end)))
+        };
         for patch in &patches {
-            covered.push(draw_patch(patch, pressure, sensor, params.falloff_px, image));
+            if let Some(rows) = draw_patch(patch, pressure, sensor, params.falloff_px, image) {
+                lit = grow(lit, rows);
+            }
         }
-        if let Some(rings) = hand.outline_rings() {
-            covered.push(draw_outline(&rings, pressure, sensor, params.falloff_px, image));
-        }
-        for rows in covered.into_iter().flatten() {
-            lit = Some(lit.map_or(rows.clone(), |l| l.start.min(rows.start)..l.end.max(rows.end)));
+        if let Some(rows) =
+            hand.outline_rings().and_then(|r| draw_outline(&r, pressure, sensor, params.falloff_px, image))
+        {
+            lit = grow(lit, rows);
         }
     }
     if let Some(noise) = params.noise {
