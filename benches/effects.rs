@@ -71,7 +71,7 @@ fn bench_under_hand(c: &mut Criterion, group: &str, runs: Vec<(&str, Scene)>) {
                 let t = k as f32 / 60.0;
                 let hand =
                     Hand::new(1, HandKind::FlatHand, at.x + 0.03 * (t * 0.7).cos(), at.y + 0.03 * (t * 0.7).sin());
-                session.step(&[hand]).expect("step");
+                session.step(std::slice::from_ref(&hand)).expect("step");
             });
         });
     }

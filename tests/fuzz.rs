@@ -182,7 +182,7 @@ fn check_scene(text: &str) {
         let Ok(mut session) = Session::new(&scene, kind, SessionOptions::default()) else { continue };
         for _ in 0..3 {
             let hand = Hand::new(1, HandKind::FlatHand, 0.0, 0.0).with_pressure(1.0);
-            let _ = session.step(&[hand]);
+            let _ = session.step(std::slice::from_ref(&hand));
         }
     }
 }
@@ -197,18 +197,40 @@ fn fuzz_scene_files() {
     });
 }
 
+/// A version-2 gesture with a contour hand: points, holes, a held outline.
+const CONTOUR_GESTURE: &str = r#"format = "surfacelab-gesture"
+version = 2
+
+[[hands]]
+id = 7
+kind = "contour"
+keys = [
+  { t = 0.0, points = [[-0.1, -0.05], [0.0, -0.05], [0.0, 0.05], [-0.1, 0.05]], pressure = 0.9 },
+  { t = 0.5, points = [[0.0, -0.05], [0.1, -0.05], [0.1, 0.05], [0.0, 0.05]], holes = [[[0.04, -0.01], [0.06, -0.01], [0.05, 0.01]]] },
+  { t = 1.0, pressure = 0.5 },
+]
+"#;
+
 #[test]
 fn fuzz_gesture_files() {
-    let templates: Vec<&str> = ["flick", "fingertip_drag", "flat_hand_sweep", "edge_push", "grasp_pinch"]
+    let mut templates: Vec<&str> = ["flick", "fingertip_drag", "flat_hand_sweep", "edge_push", "grasp_pinch"]
         .iter()
         .map(|n| builtin(&format!("assets/gestures/{n}.toml")))
         .collect();
+    templates.push(CONTOUR_GESTURE);
     let strategy = (prop::sample::select(templates), prop::collection::vec(edit(), 1..4));
     fuzz("gesture", strategy, |(t, edits)| {
         if let Ok(g) = Gesture::from_str(&apply(t, &edits), "fuzz.toml") {
             // A gesture that loads is bounded: sampling it ends.
             prop_assert!(g.duration() <= 600.0, "duration {}", g.duration());
-            let _ = g.sample(g.duration() / 2.0);
+            let hands = g.sample(g.duration() / 2.0);
+            // What loads draws without a panic (contours included).
+            let sensor = surfacelab::pipeline::surface::Sensor::new(160, 120, 1.0, 0.75);
+            let _ = surfacelab::pipeline::surface::rasterize(
+                &hands,
+                &sensor,
+                &surfacelab::pipeline::surface::RasterParams::default(),
+            );
         }
         Ok(())
     });
@@ -224,6 +246,38 @@ fn fuzz_contact_json() {
     });
 }
 
+/// A TUIO 2.0 frame in one bundle: a pointer with a contour and a hole.
+fn tuio2_frame() -> Vec<u8> {
+    use rosc::OscType::{Float, Int, String as Str, Time};
+    let m =
+        |addr: &str, args: Vec<rosc::OscType>| rosc::OscPacket::Message(rosc::OscMessage { addr: addr.into(), args });
+    let content = vec![
+        m("/tuio2/frm", vec![Int(3), Time(rosc::OscTime { seconds: 0, fractional: 1 }), Int(0), Str("f".into())]),
+        m(
+            "/tuio2/ptr",
+            vec![Int(1), Int(0), Int(0), Float(0.5), Float(0.5), Float(0.0), Float(0.0), Float(0.0), Float(0.5)],
+        ),
+        m(
+            "/tuio2/ocg",
+            vec![
+                Int(1),
+                Float(0.3),
+                Float(0.3),
+                Float(0.7),
+                Float(0.3),
+                Float(0.7),
+                Float(0.7),
+                Float(0.3),
+                Float(0.7),
+            ],
+        ),
+        m("/tuio2/icg", vec![Int(1), Float(0.45), Float(0.45), Float(0.55), Float(0.45), Float(0.5), Float(0.55)]),
+        m("/tuio2/alv", vec![Int(1)]),
+    ];
+    let bundle = rosc::OscBundle { timetag: rosc::OscTime { seconds: 0, fractional: 1 }, content };
+    rosc::encoder::encode(&rosc::OscPacket::Bundle(bundle)).expect("encodes")
+}
+
 /// An OSC message: address, type tags and arguments, padded to 4 bytes.
 fn osc(address: &str, args: &[rosc::OscType]) -> Vec<u8> {
     let m = rosc::OscMessage { addr: address.to_owned(), args: args.to_vec() };
@@ -232,12 +286,62 @@ fn osc(address: &str, args: &[rosc::OscType]) -> Vec<u8> {
 
 #[test]
 fn fuzz_osc_packets() {
-    use rosc::OscType::{Float, Int, String as Str};
+    use rosc::OscType::{Bool, Float, Int, String as Str, Time};
     let valid = vec![
         osc("/tuio/2Dcur", &[Str("alive".into()), Int(1), Int(2)]),
         osc("/tuio/2Dcur", &[Str("set".into()), Int(1), Float(0.5), Float(0.5), Float(0.0), Float(0.0), Float(0.0)]),
         osc("/tuio/2Dcur", &[Str("fseq".into()), Int(7)]),
         osc("/tuio/2Dblb", &[Str("set".into()), Int(3), Float(0.2), Float(0.3), Float(0.1), Float(0.1), Float(0.05)]),
+        // TUIO 2.0: a whole frame in one bundle, and each message alone
+        // (a frame may span packets).
+        tuio2_frame(),
+        osc(
+            "/tuio2/frm",
+            &[Int(9), Time(rosc::OscTime { seconds: 0, fractional: 1 }), Int(0x0280_01E0), Str("s".into())],
+        ),
+        osc(
+            "/tuio2/ptr",
+            &[Int(4), Int(0), Int(1), Float(0.5), Float(0.5), Float(0.0), Float(0.0), Float(0.01), Float(0.7)],
+        ),
+        osc("/tuio2/ocg", &[Int(4), Float(0.4), Float(0.4), Float(0.6), Float(0.4), Float(0.5), Float(0.6)]),
+        osc(
+            "/tuio2/icg",
+            &[
+                Int(4),
+                Float(0.48),
+                Float(0.45),
+                Float(0.52),
+                Float(0.45),
+                Float(0.5),
+                Float(0.5),
+                Bool(true),
+                Float(0.5),
+                Float(0.5),
+                Float(0.51),
+                Float(0.5),
+                Float(0.5),
+                Float(0.51),
+            ],
+        ),
+        osc("/tuio2/arg", &[Int(5), Float(0.1), Float(0.1), Float(0.05), Float(0.1), Float(0.102), Float(0.06)]),
+        osc("/tuio2/bnd", &[Int(6), Float(0.3), Float(0.3), Float(0.2), Float(0.1), Float(0.05), Float(0.004)]),
+        osc(
+            "/tuio2/skg",
+            &[
+                Int(7),
+                Float(0.3),
+                Float(0.3),
+                Float(0.3),
+                Float(0.4),
+                Float(0.35),
+                Float(0.45),
+                Int(1),
+                Float(0.25),
+                Float(0.45),
+            ],
+        ),
+        osc("/tuio2/tok", &[Int(8), Int(0), Int(3), Float(0.7), Float(0.2), Float(1.0)]),
+        osc("/tuio2/alv", &[Int(4), Int(5), Int(6), Int(7), Int(8)]),
     ];
     let strategy = (
         prop::collection::vec((prop::sample::select(valid), any::<prop::sample::Index>(), any::<u8>()), 1..6),
@@ -251,9 +355,17 @@ fn fuzz_osc_packets() {
             let _ = state.receive(&p, k as f64 * 0.016);
         }
         let _ = state.receive(&noise, 1.0);
-        for h in state.hands([1.0, 0.75], 1.0) {
+        let hands = state.hands([1.0, 0.75], 1.0);
+        for h in &hands {
             prop_assert!(h.pose.x.is_finite() && h.pose.y.is_finite(), "a hand from TUIO is finite: {h:?}");
         }
+        // Whatever arrived draws (contours included) without a panic.
+        let sensor = surfacelab::pipeline::surface::Sensor::new(160, 120, 1.0, 0.75);
+        let _ = surfacelab::pipeline::surface::rasterize(
+            &hands,
+            &sensor,
+            &surfacelab::pipeline::surface::RasterParams::default(),
+        );
         Ok(())
     });
 }
@@ -271,6 +383,10 @@ fn fuzz_command_line() {
         "--task",
         "--technique",
         "--gesture",
+        "--tuio",
+        "--tuio-bind",
+        "--seconds",
+        "--record",
         "--settle",
         "--at",
         "--participants",

@@ -202,7 +202,7 @@ fn a_sleeping_sheet_wakes_under_a_hand() {
         while s.time() < 2.5 {
             let t = (s.time() - 1.0) as f32;
             let hand = Hand::new(1, HandKind::FlatHand, 0.05 + 0.1 * t.min(1.0), -0.02);
-            s.step(&[hand]).expect("step");
+            s.step(std::slice::from_ref(&hand)).expect("step");
         }
         let moved = s.world().soft_center(SoftId::new(0)).expect("sheet").x - start;
         println!("{kind}: hand landing on the sleeping sheet dragged it {moved:.3} m");
@@ -225,7 +225,7 @@ fn cloth_under_a_flat_hand_stays_finite_for_ten_thousand_steps() {
     for k in 0..10_000 {
         let t = k as f32 / 60.0;
         let hand = Hand::new(1, HandKind::FlatHand, 0.04 * (t * 0.7).cos(), 0.04 * (t * 0.7).sin());
-        s.step(&[hand]).expect("step");
+        s.step(std::slice::from_ref(&hand)).expect("step");
         if k % 10 == 0 {
             top_speed = top_speed.max(s.world().soft_max_speed(SoftId::new(0)));
             for (_, b) in s.world().soft_pieces(SoftId::new(0)) {
@@ -326,7 +326,7 @@ fn a_flat_hand_stops_a_rolling_ball() {
         let screen = s.world().screen_point(landed + Vec3::Z * r);
         let hand = Hand::new(1, HandKind::FlatHand, screen.x, screen.y - 0.01);
         while s.time() < 2.0 {
-            s.step(&[hand]).expect("step");
+            s.step(std::slice::from_ref(&hand)).expect("step");
         }
         let end = s.world().object_pose(ObjectId::new(0));
         let travel = (end.position - landed).truncate().length();

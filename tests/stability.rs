@@ -307,7 +307,7 @@ fn contact_module_fed_degenerate_pairs_by_the_real_pipeline() {
             .with_scale(rng.random_range(0.05..1.2))
             .with_pressure(rng.random_range(0.2..1.0))
             .with_angle(rng.random_range(0.0..std::f32::consts::TAU));
-        s.step(&[hand]).expect("step");
+        s.step(std::slice::from_ref(&hand)).expect("step");
         if k % 10 != 0 {
             continue;
         }

@@ -103,9 +103,9 @@ struct FlowCase {
     cur: ContactImage,
 }
 
-fn flat_hand_motion(a: Hand, b: Hand) -> FlowCase {
+fn flat_hand_motion(a: &Hand, b: &Hand) -> FlowCase {
     let s = sensor();
-    let (prev, cur) = (draw(&[a]), draw(&[b]));
+    let (prev, cur) = (draw(std::slice::from_ref(a)), draw(std::slice::from_ref(b)));
     let mut pipeline = Pipeline::default();
     pipeline.process(&prev);
     let frame = pipeline.process(&cur);
@@ -164,10 +164,10 @@ fn flow_recovers_a_known_translation_of_a_flat_hand() {
     let s = sensor();
     let a = Hand::new(1, HandKind::FlatHand, 0.05, -0.02).with_angle(0.2);
     let shift = s.vector_to_table([3.3, -2.1]);
-    let mut b = a;
+    let mut b = a.clone();
     b.pose.x += shift[0];
     b.pose.y += shift[1];
-    let case = flat_hand_motion(a, b);
+    let case = flat_hand_motion(&a, &b);
     assert!(case.frame.edges.len() > 250, "{} edges", case.frame.edges.len());
     for t in &case.truth {
         assert!((t[0] - 3.3).abs() < 1e-3 && (t[1] + 2.1).abs() < 1e-3);
@@ -182,8 +182,8 @@ fn flow_recovers_a_known_translation_of_a_flat_hand() {
 #[test]
 fn flow_recovers_a_known_rotation_of_a_flat_hand() {
     let a = Hand::new(1, HandKind::FlatHand, -0.1, 0.05).with_angle(-0.1);
-    let b = a.with_angle(-0.1 + 3f32.to_radians());
-    let case = flat_hand_motion(a, b);
+    let b = a.clone().with_angle(-0.1 + 3f32.to_radians());
+    let case = flat_hand_motion(&a, &b);
     let c = &case.frame.contacts[0];
     // Counter-clockwise on the table is negative in image orientation.
     assert!((c.rotation_rad + 3f32.to_radians()).abs() < 0.5f32.to_radians(), "{}", c.rotation_rad);
@@ -465,8 +465,8 @@ fn malformed_gestures_name_the_file_the_field_and_the_line() {
         ),
         (
             "version.toml",
-            "format = \"surfacelab-gesture\"\nversion = 2\n".to_owned(),
-            vec!["version.toml:2", "`version`", "unsupported version 2"],
+            "format = \"surfacelab-gesture\"\nversion = 3\n".to_owned(),
+            vec!["version.toml:2", "`version`", "unsupported version 3"],
         ),
         (
             "version_text.toml",

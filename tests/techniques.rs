@@ -379,7 +379,7 @@ fn joint_feedback_outlines_its_side_collision_prism() {
     let mut s = session("tasks/cases/one_box.toml", TechniqueKind::Joint);
     let hand = Hand::new(1, HandKind::FlatHand, -0.3, 0.0);
     for _ in 0..5 {
-        s.step(&[hand]).expect("steps");
+        s.step(std::slice::from_ref(&hand)).expect("steps");
     }
     let feedback = s.feedback();
     assert!(feedback.lines.is_empty(), "a prism holds nothing: no joint line");

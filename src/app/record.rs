@@ -98,7 +98,7 @@ mod tests {
         let mut r = Recording::new(dir.join("sub").join("g.toml"));
         let hand = Hand::new(3, HandKind::FlatHand, 0.1, 0.0);
         for i in 0..30 {
-            r.record(10.0 + f64::from(i) / 60.0, &[hand]);
+            r.record(10.0 + f64::from(i) / 60.0, std::slice::from_ref(&hand));
         }
         assert!((r.duration() - 29.0 / 60.0).abs() < 1e-9);
         let (path, gesture) = r.save().expect("saves");

@@ -129,12 +129,12 @@ fn draw_banner(painter: &egui::Painter, rect: Rect, lines: &[String]) {
 }
 
 fn outline_hand(painter: &egui::Painter, hand: &Hand, project: &impl Fn([f32; 2]) -> Option<Pos2>, stroke: Stroke) {
-    for patch in hand.patches() {
-        for ring in outline(&patch.shape) {
-            let points: Option<Vec<Pos2>> = ring.into_iter().map(project).collect();
-            if let Some(points) = points {
-                painter.add(egui::Shape::closed_line(points, stroke));
-            }
+    // A contour hand (TUIO 2.0 shapes) is its own outline; templates are their patches'.
+    let contour = hand.outline_rings().unwrap_or_default();
+    for ring in hand.patches().iter().flat_map(|p| outline(&p.shape)).chain(contour) {
+        let points: Option<Vec<Pos2>> = ring.into_iter().map(project).collect();
+        if let Some(points) = points {
+            painter.add(egui::Shape::closed_line(points, stroke));
         }
     }
 }

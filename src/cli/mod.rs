@@ -33,7 +33,7 @@ pub struct Cli {
 pub enum Command {
     /// Open the desktop demo (the default with no subcommand).
     Demo(DemoArgs),
-    /// Replay one gesture file headless and write a JSON report.
+    /// Replay one gesture file, or run live from a TUIO tracker, headless and write a JSON report.
     Run(RunArgs),
     /// Run scripted or replayed study participants and write CSVs and plots.
     Study(StudyArgs),
@@ -62,7 +62,7 @@ pub struct DemoArgs {
     /// Start with the contact-image overlay (the hand shadow) off.
     #[arg(long)]
     pub no_contact_overlay: bool,
-    /// Listen for TUIO 1.1 over UDP on PORT (default 3333).
+    /// Listen for TUIO 1.1 and 2.0 over UDP on PORT (default 3333).
     #[arg(long, value_name = "PORT", num_args = 0..=1, default_missing_value = "3333")]
     pub tuio: Option<u16>,
     /// Address the TUIO socket binds to (default 127.0.0.1; 0.0.0.0 for a tracker on another machine).
@@ -96,7 +96,9 @@ pub struct DemoArgs {
     pub reps: Option<u32>,
 }
 
+/// Exactly one source of hands: a gesture file or a live TUIO stream.
 #[derive(Debug, Args)]
+#[command(group(clap::ArgGroup::new("hands").required(true).args(["gesture", "tuio"])))]
 pub struct RunArgs {
     /// Scene name under tasks/ or a path to a scene file.
     #[arg(long)]
@@ -108,12 +110,27 @@ pub struct RunArgs {
     #[arg(long)]
     pub feedback: bool,
     /// Gesture file to replay.
-    #[arg(long)]
-    pub gesture: PathBuf,
+    #[arg(long, value_name = "FILE")]
+    pub gesture: Option<PathBuf>,
+    /// Run in real time from TUIO 1.1 or 2.0 over UDP on PORT (default 3333; 0 picks a free port, printed).
+    #[arg(long, value_name = "PORT", num_args = 0..=1, default_missing_value = "3333", requires = "seconds")]
+    pub tuio: Option<u16>,
+    /// Address the TUIO socket binds to (default 127.0.0.1; 0.0.0.0 for a tracker on another machine).
+    #[arg(long, value_name = "ADDR", conflicts_with = "gesture")]
+    pub tuio_bind: Option<std::net::IpAddr>,
+    /// With --tuio: seconds of real time to run for.
+    // Not `requires = "tuio"`: with `--tuio` requiring it back, clap 4
+    // let `--gesture F --seconds S` through. One of the two sources is
+    // required, so refusing `--gesture` is the same rule.
+    #[arg(long, value_name = "S", value_parser = parse_seconds, conflicts_with = "gesture")]
+    pub seconds: Option<f32>,
+    /// With --tuio: save what arrived as a gesture file that `run --gesture` replays.
+    #[arg(long, value_name = "FILE", conflicts_with = "gesture")]
+    pub record: Option<PathBuf>,
     /// Where to write the JSON report (default: standard output).
     #[arg(long)]
     pub report: Option<PathBuf>,
-    /// Seconds simulated after the gesture ends, so released objects settle.
+    /// Seconds simulated after the gesture (or the --tuio run) ends, so released objects settle.
     #[arg(long, default_value_t = 1.0, value_parser = parse_seconds)]
     pub settle: f32,
 }

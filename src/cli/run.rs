@@ -1,27 +1,41 @@
-//! `surfacelab run`: replay one gesture headless and write a JSON report.
+//! `surfacelab run`: replay one gesture headless, or run in real time from
+//! a live TUIO stream, and write a JSON report.
 
 use super::RunArgs;
-use crate::input::Gesture;
+use crate::app::record::Recording;
+use crate::input::tuio::{DEFAULT_PORT, TuioListener};
+use crate::input::{Gesture, quantized};
 use crate::scene;
 use crate::session::{RunReport, Session, SessionOptions};
 use anyhow::Context;
+use std::net::{IpAddr, Ipv4Addr, SocketAddr};
 use std::process::ExitCode;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 pub fn run(args: &RunArgs) -> super::CommandResult {
     let scene = scene::load(&args.task)?;
-    let gesture = Gesture::load(&args.gesture)?;
     let options = SessionOptions { measure_penetration: true, ..SessionOptions::default() };
     let mut session = Session::new(&scene, args.technique, options)?;
     let t0 = Instant::now();
-    // The whole gesture, then a short settle so released objects come to rest.
-    session.replay_until(&gesture, gesture.duration() + f64::from(args.settle))?;
-    let report = RunReport::from_session(
-        &session,
-        args.feedback,
-        &args.gesture.display().to_string(),
-        t0.elapsed().as_secs_f64(),
-    );
+    let source = match (&args.gesture, args.tuio) {
+        (Some(path), _) => {
+            let gesture = Gesture::load(path)?;
+            // The whole gesture, then a short settle so released objects come to rest.
+            session.replay_until(&gesture, gesture.duration() + f64::from(args.settle))?;
+            path.display().to_string()
+        }
+        (None, port) => {
+            let addr = SocketAddr::new(
+                args.tuio_bind.unwrap_or(IpAddr::V4(Ipv4Addr::LOCALHOST)),
+                port.unwrap_or(DEFAULT_PORT),
+            );
+            let listened = live(&mut session, addr, args)?;
+            let settle_until = session.time() + f64::from(args.settle);
+            session.replay_until(&Gesture::default(), settle_until)?;
+            format!("tuio:{listened}")
+        }
+    };
+    let report = RunReport::from_session(&session, args.feedback, &source, t0.elapsed().as_secs_f64());
     let json = serde_json::to_string_pretty(&report).context("writing the JSON report")?;
     match &args.report {
         Some(path) => {
@@ -40,4 +54,51 @@ pub fn run(args: &RunArgs) -> super::CommandResult {
         None => println!("{json}"),
     }
     Ok(ExitCode::SUCCESS)
+}
+
+/// Steps `session` in real time for `--seconds` from the TUIO stream on
+/// `addr`, and saves `--record`; returns the address listened on.
+///
+/// Step k runs at wall time `k · dt` after the start and takes the hands
+/// as the tracker had them at that instant (between the packets before
+/// and after it, see [`crate::input::tuio::Timeline`]), so the session
+/// keeps the scene's fixed rate against the wall clock; when a step runs
+/// late the next ones catch up back to back, each still at its own time.
+/// The hands pass through [`quantized`], as a recording stores them, so
+/// replaying the recording steps the physics with the same hands.
+fn live(session: &mut Session, addr: SocketAddr, args: &RunArgs) -> anyhow::Result<SocketAddr> {
+    let listener = TuioListener::bind(addr).with_context(|| format!("--tuio: cannot listen on UDP {addr}"))?;
+    let listened = listener.local_addr();
+    let seconds = f64::from(args.seconds.unwrap_or(0.0));
+    eprintln!("surfacelab run: listening for TUIO on {listened} for {seconds} s");
+    let table = [session.scene().table.width, session.scene().table.depth];
+    let dt = f64::from(session.world().dt());
+    let steps = (seconds / dt).round() as u64;
+    let mut recording = args.record.clone().map(Recording::new);
+    let start = Instant::now();
+    for k in 0..steps {
+        let due = start + Duration::from_secs_f64(k as f64 * dt);
+        if let Some(wait) = due.checked_duration_since(Instant::now()) {
+            std::thread::sleep(wait);
+        }
+        let hands: Vec<_> = listener.hands_at(table, due).iter().map(quantized).collect();
+        let t = session.time();
+        session.step(&hands)?;
+        if let Some(r) = &mut recording {
+            r.record(t, &hands);
+        }
+    }
+    let stats = listener.stats();
+    eprintln!(
+        "surfacelab run: {} TUIO packets ({} malformed, {} late frames, {} restarts)",
+        stats.packets, stats.malformed, stats.late_frames, stats.restarts
+    );
+    if stats.packets == 0 {
+        eprintln!("surfacelab run: no TUIO packet arrived on {listened}");
+    }
+    if let Some(r) = recording {
+        let (path, gesture) = r.save()?;
+        eprintln!("surfacelab run: recorded {} hand entries in {}", gesture.tracks().len(), path.display());
+    }
+    Ok(listened)
 }

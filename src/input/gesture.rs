@@ -1,11 +1,11 @@
 //! Gestures: timed keyframes of hands and tangibles, stored as versioned
 //! TOML so that test inputs, demo recordings and study scripts are data.
 //!
-//! # Format (version 1)
+//! # Format (version 2; version 1 is the same without `contour`)
 //!
 //! ```toml
 //! format = "surfacelab-gesture"   # required, exactly this
-//! version = 1                     # required; other versions are refused
+//! version = 1                     # required: 1 or 2; 2 is needed for kind = "contour"
 //!
 //! [[hands]]                       # one entry per touch, any number
 //! id = 1                          # integer 0..=4294967295, the Hand::id
@@ -22,6 +22,30 @@
 //! pressure = 1.0                  # 0..=1, the grey level of the touch
 //! ```
 //!
+//! A `kind = "contour"` hand (version 2) is an arbitrary outline, drawn as
+//! it is (what a TUIO 2.0 tracker's contours describe); its keys carry the
+//! outline instead of a pose:
+//!
+//! ```toml
+//! [[hands]]
+//! id = 7
+//! kind = "contour"
+//! keys = [
+//!   { t = 0.0, points = [[-0.1, -0.05], [0.0, -0.05], [0.0, 0.05], [-0.1, 0.05]], pressure = 0.9 },
+//!   { t = 0.5, points = [[0.0, -0.05], [0.1, -0.05], [0.1, 0.05], [0.0, 0.05]],
+//!     holes = [[[0.04, -0.01], [0.06, -0.01], [0.05, 0.01]]] },
+//! ]
+//! ```
+//!
+//! `points` is the outer contour, in table metres (not relative to
+//! anything), at least 3 points, each finite and within ±100 m; `holes`
+//! (optional) are inner contours cut out of it, each of at least 3 points;
+//! at most 32,768 points per key in all. The fill is even-odd, so either
+//! winding works. `points` is required in the first key; a key without it
+//! keeps the previous key's outline and holes (and may not give `holes`
+//! alone); a key with it has exactly the holes it lists. Contour keys take
+//! `pressure` and no `pos`, `angle_deg`, `spread` or `scale`.
+//!
 //! Keys may also be written inline, `keys = [{ t = 0.0, pos = [0.0, 0.0] }, ...]`,
 //! which is what [`Gesture`]'s `Display` writes. A field left out of a key
 //! keeps its value from the previous key; the first key defaults to
@@ -30,6 +54,16 @@
 //! Between two keys, position, spread, scale and pressure are interpolated
 //! linearly and the angle along the shorter arc (so a turn of more than
 //! 180 degrees needs intermediate keys; exactly 180 turns clockwise).
+//! A contour moves point by point when both keys have the same number of
+//! points and of holes with the same number of points each; otherwise the
+//! earlier key's outline holds until the next key (a tracker's contour of
+//! a moving hand changes its point count from frame to frame, and there is
+//! no faithful way to pair points of different counts).
+//!
+//! **Versions.** This build reads versions 1 and 2 and writes version 1
+//! when no hand is a contour (so files stay readable by builds that know
+//! only version 1, and writing one back gives the same text) and version 2
+//! otherwise.
 //!
 //! **A hand is on the table only from its first key to its last**, both
 //! included: before and after, it is lifted. To lift a hand and put it down
@@ -43,19 +77,22 @@
 
 use std::fmt;
 use std::path::Path;
+use std::sync::Arc;
 
 use serde::Deserialize;
 use toml::Spanned;
 
-use crate::pipeline::surface::{Hand, HandKind, Pose};
+use crate::pipeline::surface::{Hand, HandKind, MAX_OUTLINE_POINTS, MIN_RING_POINTS, Outline, Pose};
 use crate::scene::bounds;
 use crate::scene::fields::human;
 use crate::scene::{FieldError, FieldReader};
 
 /// The `format` value every gesture file carries.
 pub const FORMAT: &str = "surfacelab-gesture";
-/// The only `version` this build reads and writes.
-pub const VERSION: i64 = 1;
+/// The newest `version` this build reads and writes (it reads 1 too).
+pub const VERSION: i64 = 2;
+/// The version written when no hand is a contour.
+const VERSION_WITHOUT_CONTOURS: i64 = 1;
 
 /// Why a gesture could not be read. Every variant names the file (or the
 /// origin given to [`Gesture::from_str`]); field errors name the field as a
@@ -93,14 +130,55 @@ impl crate::error::Kind for GestureError {
 
 /// One keyframe of one hand. Values are kept in `f64` exactly as read so
 /// that writing them back is lossless; [`Hand`]s are made at sampling time.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Key {
     pub t: f64,
+    /// Where the hand is; for a contour, the middle of its outline's
+    /// bounds (derived, not written).
     pub pos: [f64; 2],
     pub angle_deg: f64,
     pub spread: f64,
     pub scale: f64,
     pub pressure: f64,
+    /// A contour hand's outline; `None` for every other kind.
+    pub contour: Option<Arc<Contour>>,
+}
+
+/// A contour key's outline in table metres, exactly as read (see the
+/// module doc). Invariant: what [`Outline::new`] accepts.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Contour {
+    /// The outer contour.
+    pub points: Vec<[f64; 2]>,
+    /// Inner contours cut out of it.
+    pub holes: Vec<Vec<[f64; 2]>>,
+}
+
+impl Contour {
+    /// The middle of the outer contour's bounds.
+    fn centre(&self) -> [f64; 2] {
+        let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
+        for p in &self.points {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        [(lo[0] + hi[0]) * 0.5, (lo[1] + hi[1]) * 0.5]
+    }
+
+    /// The rings as an [`Outline`] (`None` only if the invariant is broken).
+    fn outline(&self) -> Option<Outline> {
+        let ring = |r: &[[f64; 2]]| r.iter().map(|p| [p[0] as f32, p[1] as f32]).collect::<Vec<_>>();
+        Outline::new(std::iter::once(ring(&self.points)).chain(self.holes.iter().map(|h| ring(h))).collect()).ok()
+    }
+
+    /// Whether the two can be interpolated point by point.
+    fn same_shape(&self, other: &Contour) -> bool {
+        self.points.len() == other.points.len()
+            && self.holes.len() == other.holes.len()
+            && self.holes.iter().zip(&other.holes).all(|(a, b)| a.len() == b.len())
+    }
 }
 
 /// One touch: a hand (or tangible) from its first key to its last.
@@ -138,40 +216,59 @@ impl Track {
             return None;
         }
         let i = self.keys.partition_point(|k| k.t <= t) - 1;
-        let key = match self.keys.get(i + 1) {
-            Some(next) => interpolate(&self.keys[i], next, t),
-            None => self.keys[i],
-        };
-        Some(key.hand(self.id, self.kind))
+        match self.keys.get(i + 1) {
+            Some(next) => interpolate(&self.keys[i], next, t).hand(self.id, self.kind),
+            None => self.keys[i].hand(self.id, self.kind),
+        }
     }
 }
 
 impl Key {
     /// The hand this key describes: the one conversion from a file's
     /// numbers to a hand, shared by replays and [`quantized`] live input.
-    fn hand(&self, id: u32, kind: HandKind) -> Hand {
-        Hand {
+    /// `None` only for a contour kind whose key has no valid outline,
+    /// which reading and recording never make.
+    fn hand(&self, id: u32, kind: HandKind) -> Option<Hand> {
+        if kind == HandKind::Contour {
+            let mut hand = Hand::contour(id, &self.contour.as_ref()?.outline()?);
+            hand.pressure = self.pressure as f32;
+            return Some(hand);
+        }
+        Some(Hand {
             id,
             kind,
             pose: Pose { x: self.pos[0] as f32, y: self.pos[1] as f32, angle: self.angle_deg.to_radians() as f32 },
             spread: self.spread as f32,
             scale: self.scale as f32,
             pressure: self.pressure as f32,
-        }
+            outline: None,
+        })
     }
 
     /// A hand's values at time `t` as a file stores them: rounded to 1 µm,
     /// 1e-4 degree and 1e-4 of spread, scale and pressure (far below a
-    /// pixel), out-of-range values clamped.
+    /// pixel), out-of-range values clamped. A contour hand's outline is
+    /// stored on the table (its rings placed by its pose), rounded to 1 µm.
     fn of_hand(t: f64, hand: &Hand) -> Key {
-        Key {
+        let um = |v: f32| round_to(f64::from(v), 1e-6);
+        let contour = hand.outline_rings().filter(|_| hand.kind == HandKind::Contour).and_then(|rings| {
+            let mut rings = rings.into_iter().map(|r| r.into_iter().map(|p| [um(p[0]), um(p[1])]).collect());
+            let points = rings.next()?;
+            Some(Arc::new(Contour { points, holes: rings.collect() }))
+        });
+        let mut key = Key {
             t,
-            pos: [round_to(f64::from(hand.pose.x), 1e-6), round_to(f64::from(hand.pose.y), 1e-6)],
+            pos: [um(hand.pose.x), um(hand.pose.y)],
             angle_deg: round_to(f64::from(hand.pose.angle).to_degrees(), 1e-4),
             spread: round_to(f64::from(hand.spread).max(0.0), 1e-4),
             scale: round_to(f64::from(hand.scale), 1e-4).max(1e-4),
             pressure: round_to(f64::from(hand.pressure).clamp(0.0, 1.0), 1e-4),
+            contour: None,
+        };
+        if let Some(c) = contour {
+            key = Key { pos: c.centre(), angle_deg: 0.0, spread: 1.0, scale: 1.0, contour: Some(c), ..key };
         }
+        key
     }
 }
 
@@ -181,18 +278,32 @@ impl Key {
 /// the file, as before, let a 25 s sorting recording drift: one sphere
 /// ended 30 cm from where the live run left it). Idempotent for tables
 /// smaller than a few metres (f32 keeps 1 µm there).
+/// A contour hand without a usable outline touches nothing and comes back
+/// as it was.
 pub fn quantized(hand: &Hand) -> Hand {
     let kind = match hand.kind {
         HandKind::Fingertips(n) => HandKind::Fingertips(n.clamp(1, 5)),
         k => k,
     };
-    Key::of_hand(0.0, hand).hand(hand.id, kind)
+    Key::of_hand(0.0, hand).hand(hand.id, kind).unwrap_or_else(|| hand.clone())
 }
 
 fn interpolate(a: &Key, b: &Key, t: f64) -> Key {
     let s = (t - a.t) / (b.t - a.t);
     let lerp = |x: f64, y: f64| x + (y - x) * s;
     let turn = (b.angle_deg - a.angle_deg + 180.0).rem_euclid(360.0) - 180.0;
+    let contour = match (&a.contour, &b.contour) {
+        (Some(ca), Some(cb)) if ca.same_shape(cb) => {
+            let ring = |x: &[[f64; 2]], y: &[[f64; 2]]| {
+                x.iter().zip(y).map(|(p, q)| [lerp(p[0], q[0]), lerp(p[1], q[1])]).collect::<Vec<_>>()
+            };
+            Some(Arc::new(Contour {
+                points: ring(&ca.points, &cb.points),
+                holes: ca.holes.iter().zip(&cb.holes).map(|(x, y)| ring(x, y)).collect(),
+            }))
+        }
+        (held, _) => held.clone(),
+    };
     Key {
         t,
         pos: [lerp(a.pos[0], b.pos[0]), lerp(a.pos[1], b.pos[1])],
@@ -200,6 +311,7 @@ fn interpolate(a: &Key, b: &Key, t: f64) -> Key {
         spread: lerp(a.spread, b.spread),
         scale: lerp(a.scale, b.scale),
         pressure: lerp(a.pressure, b.pressure),
+        contour,
     }
 }
 
@@ -232,7 +344,7 @@ impl Gesture {
         }
     }
 
-    /// Writes the gesture in the version-1 format.
+    /// Writes the gesture: version 1 without contours, 2 with (module doc).
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), GestureError> {
         let path = path.as_ref();
         crate::files::write_atomic(path, self.to_string().as_bytes())
@@ -265,11 +377,27 @@ impl fmt::Display for Float {
     }
 }
 
+/// A list of points as TOML: `[[x, y], ...]`.
+struct Points<'a>(&'a [[f64; 2]]);
+
+impl fmt::Display for Points<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("[")?;
+        for (i, p) in self.0.iter().enumerate() {
+            let sep = if i == 0 { "" } else { ", " };
+            write!(f, "{sep}[{}, {}]", Float(p[0]), Float(p[1]))?;
+        }
+        f.write_str("]")
+    }
+}
+
 impl fmt::Display for Gesture {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let version =
+            if self.tracks.iter().any(|t| t.kind == HandKind::Contour) { VERSION } else { VERSION_WITHOUT_CONTOURS };
         writeln!(f, "# surfacelab gesture; format described in src/input/gesture.rs")?;
         writeln!(f, "format = \"{FORMAT}\"")?;
-        writeln!(f, "version = {VERSION}")?;
+        writeln!(f, "version = {version}")?;
         for track in &self.tracks {
             writeln!(f)?;
             writeln!(f, "[[hands]]")?;
@@ -280,6 +408,18 @@ impl fmt::Display for Gesture {
             }
             writeln!(f, "keys = [")?;
             for k in &track.keys {
+                if let Some(c) = &k.contour {
+                    write!(f, "  {{ t = {}, points = {}", Float(k.t), Points(&c.points))?;
+                    if !c.holes.is_empty() {
+                        f.write_str(", holes = [")?;
+                        for (i, h) in c.holes.iter().enumerate() {
+                            write!(f, "{}{}", if i == 0 { "" } else { ", " }, Points(h))?;
+                        }
+                        f.write_str("]")?;
+                    }
+                    writeln!(f, ", pressure = {} }},", Float(k.pressure))?;
+                    continue;
+                }
                 writeln!(
                     f,
                     "  {{ t = {}, pos = [{}, {}], angle_deg = {}, spread = {}, scale = {}, pressure = {} }},",
@@ -329,6 +469,8 @@ struct RawKey {
     spread: Option<Spanned<f64>>,
     scale: Option<Spanned<f64>>,
     pressure: Option<Spanned<f64>>,
+    points: Option<Spanned<Vec<[f64; 2]>>>,
+    holes: Option<Spanned<Vec<Vec<[f64; 2]>>>>,
 }
 
 /// The gesture's checks; the wording of every error is [`FieldReader`]'s.
@@ -339,6 +481,11 @@ struct Reader<'a> {
 impl Reader<'_> {
     fn field<T>(&self, field: impl Into<String>, at: Option<&Spanned<T>>, problem: impl Into<String>) -> GestureError {
         self.fields.error(at.map(|s| s.span().start), field, problem).into()
+    }
+
+    /// An error at byte `offset` of the text (its line is reported).
+    fn error_at(&self, offset: Option<usize>, field: impl Into<String>, problem: impl Into<String>) -> GestureError {
+        self.fields.error(offset, field, problem).into()
     }
 
     /// A float field: finite and within `lo..=hi`.
@@ -370,22 +517,23 @@ fn parse(text: &str, origin: &str) -> Result<Gesture, GestureError> {
             return Err(r.field(
                 "version",
                 None::<&Spanned<()>>,
-                format!("missing; this build reads version {VERSION}"),
+                format!("missing; this build reads versions 1 to {VERSION}"),
             ));
         }
-        Some(v) if v.get_ref().as_integer() != Some(VERSION) => {
+        Some(v) if !matches!(v.get_ref().as_integer(), Some(1..=VERSION)) => {
             return Err(r.field(
                 "version",
                 Some(v),
-                format!("unsupported version {}; this build reads version {VERSION}", v.get_ref()),
+                format!("unsupported version {}; this build reads versions 1 to {VERSION}", v.get_ref()),
             ));
         }
         Some(_) => {}
     }
+    let version = raw.version.as_ref().and_then(|v| v.get_ref().as_integer()).unwrap_or(VERSION);
 
     let mut tracks = Vec::with_capacity(raw.hands.len());
     for (i, hand) in raw.hands.iter().enumerate() {
-        tracks.push(read_hand(&r, i, hand)?);
+        tracks.push(read_hand(&r, i, hand, version)?);
     }
 
     // Two entries for the same id must not touch at the same time.
@@ -414,14 +562,14 @@ fn parse(text: &str, origin: &str) -> Result<Gesture, GestureError> {
     Ok(Gesture { tracks })
 }
 
-fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureError> {
+fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand, version: i64) -> Result<Track, GestureError> {
     let path = format!("hands[{i}]");
     let id = u32::try_from(*hand.id.get_ref()).map_err(|_| {
         r.field(format!("{path}.id"), Some(&hand.id), format!("{} is out of range (0..=4294967295)", hand.id.get_ref()))
     })?;
     let name = hand.kind.get_ref().as_str();
     let mut kind = HandKind::from_name(name).ok_or_else(|| {
-        let known: Vec<&str> = HandKind::ALL.iter().map(|k| k.name()).collect();
+        let known: Vec<&str> = HandKind::ALL.iter().chain(&[HandKind::Contour]).map(|k| k.name()).collect();
         r.field(
             format!("{path}.kind"),
             Some(&hand.kind),
@@ -443,6 +591,13 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
         }
         (_, None) => {}
     }
+    if kind == HandKind::Contour && version < 2 {
+        return Err(r.field(
+            format!("{path}.kind"),
+            Some(&hand.kind),
+            format!("kind \"contour\" needs version 2 (this file says version {version})"),
+        ));
+    }
 
     let raw_keys = hand.keys.get_ref();
     if raw_keys.is_empty() {
@@ -452,7 +607,7 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
     for (j, k) in raw_keys.iter().enumerate() {
         let at = |name: &str| format!("{path}.keys[{j}].{name}");
         let t = r.number(&at("t"), &k.t, 0.0, f64::from(bounds::DURATION_S))?;
-        let previous = keys.last().copied();
+        let previous = keys.last();
         if let Some(p) = previous
             && t <= p.t
         {
@@ -461,6 +616,21 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
                 Some(&k.t),
                 format!("keys out of time order: t = {t} does not come after the previous key's t = {}", p.t),
             ));
+        }
+        if kind == HandKind::Contour {
+            keys.push(read_contour_key(r, &at, t, k, previous)?);
+            continue;
+        }
+        for (name, given) in
+            [("points", k.points.as_ref().map(Spanned::span)), ("holes", k.holes.as_ref().map(Spanned::span))]
+        {
+            if let Some(span) = given {
+                return Err(r.error_at(
+                    Some(span.start),
+                    at(name),
+                    format!("only kind \"contour\" takes `{name}`, not \"{name_of}\"", name_of = kind.name()),
+                ));
+            }
         }
         let pos = match (&k.pos, previous) {
             (Some(p), _) => {
@@ -489,7 +659,15 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
             Some(v) => r.number(&at(name), v, lo, hi),
             None => Ok(default),
         };
-        let base = previous.unwrap_or(Key { t, pos, angle_deg: 0.0, spread: 1.0, scale: 1.0, pressure: 1.0 });
+        let base = previous.cloned().unwrap_or(Key {
+            t,
+            pos,
+            angle_deg: 0.0,
+            spread: 1.0,
+            scale: 1.0,
+            pressure: 1.0,
+            contour: None,
+        });
         let scale = match &k.scale {
             Some(v) => {
                 r.positive(&at("scale"), v)?;
@@ -510,9 +688,102 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand) -> Result<Track, GestureE
             spread: or(&k.spread, "spread", 0.0, bounds::GESTURE_SPREAD, base.spread)?,
             scale,
             pressure: or(&k.pressure, "pressure", 0.0, 1.0, base.pressure)?,
+            contour: None,
         });
     }
     Ok(Track { id, kind, keys })
+}
+
+/// One key of a contour hand: `points` (and `holes`) or the previous key's,
+/// and `pressure`; the pose fields of the templates are refused.
+fn read_contour_key(
+    r: &Reader<'_>,
+    at: &dyn Fn(&str) -> String,
+    t: f64,
+    k: &RawKey,
+    previous: Option<&Key>,
+) -> Result<Key, GestureError> {
+    for (name, given) in [
+        ("pos", &k.pos.as_ref().map(Spanned::span)),
+        ("angle_deg", &k.angle_deg.as_ref().map(Spanned::span)),
+        ("spread", &k.spread.as_ref().map(Spanned::span)),
+        ("scale", &k.scale.as_ref().map(Spanned::span)),
+    ] {
+        if let Some(span) = given {
+            return Err(r.error_at(
+                Some(span.start),
+                at(name),
+                format!("kind \"contour\" takes `points` (and `holes`), not `{name}`"),
+            ));
+        }
+    }
+    let contour = match (&k.points, previous.and_then(|p| p.contour.clone())) {
+        (Some(points), _) => {
+            let mut rings = vec![(at("points"), points.span().start, points.get_ref().clone())];
+            if let Some(holes) = &k.holes {
+                for (h, ring) in holes.get_ref().iter().enumerate() {
+                    rings.push((at(&format!("holes[{h}]")), holes.span().start, ring.clone()));
+                }
+            }
+            let total: usize = rings.iter().map(|r| r.2.len()).sum();
+            if total > MAX_OUTLINE_POINTS {
+                return Err(r.error_at(
+                    Some(points.span().start),
+                    at("points"),
+                    format!("{total} points with the holes; at most {MAX_OUTLINE_POINTS}"),
+                ));
+            }
+            let far = f64::from(bounds::POSITION_M);
+            for (field, line, ring) in &rings {
+                if ring.len() < MIN_RING_POINTS {
+                    return Err(r.error_at(
+                        Some(*line),
+                        field.clone(),
+                        format!("{} points; a contour needs at least {MIN_RING_POINTS}", ring.len()),
+                    ));
+                }
+                for (n, p) in ring.iter().enumerate() {
+                    if !p.iter().all(|c| c.is_finite()) {
+                        return Err(r.error_at(
+                            Some(*line),
+                            format!("{field}[{n}]"),
+                            format!("must be finite, found [{}, {}]", p[0], p[1]),
+                        ));
+                    }
+                    if p.iter().any(|c| c.abs() > far) {
+                        return Err(r.error_at(
+                            Some(*line),
+                            format!("{field}[{n}]"),
+                            format!(
+                                "[{}, {}] is out of range (within ±{far} m of the table centre)",
+                                human(p[0]),
+                                human(p[1])
+                            ),
+                        ));
+                    }
+                }
+            }
+            let mut rings = rings.into_iter().map(|r| r.2);
+            let points = rings.next().unwrap_or_default();
+            Arc::new(Contour { points, holes: rings.collect() })
+        }
+        (None, Some(held)) => {
+            if let Some(holes) = &k.holes {
+                return Err(r.error_at(
+                    Some(holes.span().start),
+                    at("holes"),
+                    "`holes` without `points`: give the outer contour with its holes",
+                ));
+            }
+            held
+        }
+        (None, None) => return Err(r.field(at("points"), Some(&k.t), "missing in the first key of a contour")),
+    };
+    let pressure = match &k.pressure {
+        Some(v) => r.number(&at("pressure"), v, 0.0, 1.0)?,
+        None => previous.map_or(1.0, |p| p.pressure),
+    };
+    Ok(Key { t, pos: contour.centre(), angle_deg: 0.0, spread: 1.0, scale: 1.0, pressure, contour: Some(contour) })
 }
 
 // ---------------------------------------------------------------------------
@@ -562,11 +833,16 @@ impl GestureRecorder {
             if !values.iter().all(|v| v.is_finite()) || open.iter().any(|&(id, _)| id == hand.id) {
                 continue;
             }
+            let key = Key::of_hand(t, hand);
+            // A contour hand whose outline would not read back (none, or
+            // placed out of bounds) touches nothing here either.
+            if hand.kind == HandKind::Contour && key.contour.as_ref().and_then(|c| c.outline()).is_none() {
+                continue;
+            }
             let kind = match hand.kind {
                 HandKind::Fingertips(n) => HandKind::Fingertips(n.clamp(1, 5)),
                 k => k,
             };
-            let key = Key::of_hand(t, hand);
             let existing =
                 self.open.iter().find(|&&(id, i)| id == hand.id && self.tracks[i].kind == kind).map(|&(_, i)| i);
             let index = if let Some(i) = existing {
@@ -628,7 +904,7 @@ pressure = 0.5
         let g = Gesture::from_str(TWO, "two.toml").expect("parses");
         assert_eq!(g.duration(), 1.0);
         assert!(g.sample(-0.1).is_empty() && g.sample(1.01).is_empty());
-        let h = g.sample(0.5)[0];
+        let h = g.sample(0.5).remove(0);
         assert_eq!(h.kind, HandKind::Fingertips(2));
         assert!((h.pose.x - 0.05).abs() < 1e-6 && (h.pose.y + 0.1).abs() < 1e-6);
         // Shortest arc through 180, not back through 0.
@@ -651,16 +927,120 @@ pressure = 0.5
     fn recorder_splits_lifted_hands() {
         let mut rec = GestureRecorder::new();
         let a = Hand::new(1, HandKind::Fingertips(1), 0.0, 0.0);
-        assert!(rec.record(10.0, &[a]));
-        assert!(rec.record(10.1, &[a]));
-        assert!(!rec.record(10.1, &[a]));
+        let a = std::slice::from_ref(&a);
+        assert!(rec.record(10.0, a));
+        assert!(rec.record(10.1, a));
+        assert!(!rec.record(10.1, a));
         assert!(rec.record(10.2, &[]));
-        assert!(rec.record(10.3, &[a]));
+        assert!(rec.record(10.3, a));
         let g = rec.finish();
         assert_eq!(g.tracks().len(), 2);
         assert_eq!(g.tracks()[0].span(), [0.0, 10.1 - 10.0]);
         assert!(g.sample(0.15).is_empty());
         let back = Gesture::from_str(&g.to_string(), "rec").expect("reads back");
         assert_eq!(g, back);
+    }
+
+    const CONTOUR: &str = r#"
+format = "surfacelab-gesture"
+version = 2
+
+[[hands]]
+id = 7
+kind = "contour"
+keys = [
+  { t = 0.0, points = [[-0.1, -0.05], [0.0, -0.05], [0.0, 0.05], [-0.1, 0.05]], pressure = 0.8 },
+  { t = 1.0, points = [[0.1, -0.05], [0.2, -0.05], [0.2, 0.05], [0.1, 0.05]], holes = [[[0.14, -0.01], [0.16, -0.01], [0.15, 0.01]]] },
+  { t = 2.0, points = [[0.2, -0.05], [0.3, -0.05], [0.3, 0.05], [0.2, 0.05]], holes = [[[0.24, -0.01], [0.26, -0.01], [0.25, 0.01]]], pressure = 0.4 },
+]
+"#;
+
+    #[test]
+    fn contours_move_point_by_point_or_hold_until_the_next_key() {
+        let g = Gesture::from_str(CONTOUR, "contour.toml").expect("parses");
+        // Keys 1 and 2 have the same shape: halfway, the square lies halfway.
+        let h = g.sample(1.5).remove(0);
+        assert_eq!(h.kind, HandKind::Contour);
+        let rings = h.outline_rings().expect("an outline");
+        assert_eq!(rings.len(), 2, "the outer contour and its hole");
+        assert!((rings[0][0][0] - 0.15).abs() < 1e-6 && (rings[1][2][0] - 0.2).abs() < 1e-6, "{rings:?}");
+        assert!((h.pressure - 0.6).abs() < 1e-6);
+        // Keys 0 and 1 differ (a hole appears): key 0's outline holds, its pressure carried to key 1.
+        let h = g.sample(0.9).remove(0);
+        let rings = h.outline_rings().expect("an outline");
+        assert_eq!(rings.len(), 1);
+        assert!((rings[0][0][0] + 0.1).abs() < 1e-6, "{rings:?}");
+        assert!((h.pressure - 0.8).abs() < 1e-6);
+        assert!((g.sample(1.0)[0].outline_rings().expect("outline")[0][0][0] - 0.1).abs() < 1e-6);
+    }
+
+    #[test]
+    fn contour_gestures_write_version_2_and_read_back_identically() {
+        let g = Gesture::from_str(CONTOUR, "contour.toml").expect("parses");
+        let text = g.to_string();
+        assert!(text.contains("version = 2"), "{text}");
+        let back = Gesture::from_str(&text, "written").expect("reads back");
+        assert_eq!(g, back);
+        assert_eq!(text, back.to_string());
+        // Without a contour, version 1 as before, and a version-2 file of templates reads.
+        let plain = Gesture::from_str(TWO, "two.toml").expect("parses");
+        assert!(plain.to_string().contains("version = 1"));
+        let v2 = TWO.replace("version = 1", "version = 2");
+        assert_eq!(Gesture::from_str(&v2, "v2.toml").expect("version 2 reads"), plain);
+    }
+
+    #[test]
+    fn recorded_contours_replay_as_recorded() {
+        let square = |x: f32| vec![[x, 0.0], [x + 0.1, 0.0], [x + 0.1, 0.08], [x, 0.08]];
+        let hand = |x: f32| {
+            let outline = Outline::new(vec![square(x), vec![[x + 0.04, 0.03], [x + 0.06, 0.03], [x + 0.05, 0.05]]]);
+            quantized(&Hand::contour(9, &outline.expect("valid")).with_pressure(0.7))
+        };
+        let mut rec = GestureRecorder::new();
+        let hands: Vec<Hand> = (0..5).map(|i| hand(0.012_345_7 * i as f32)).collect();
+        for (i, h) in hands.iter().enumerate() {
+            assert!(rec.record(i as f64 / 60.0, std::slice::from_ref(h)));
+        }
+        let g = rec.finish();
+        let back = Gesture::from_str(&g.to_string(), "rec").expect("reads back");
+        assert_eq!(g, back);
+        for (i, h) in hands.iter().enumerate() {
+            assert_eq!(&back.sample(i as f64 / 60.0)[0], h, "step {i}: the replay draws what was live");
+            assert_eq!(&quantized(h), h, "quantized is idempotent");
+        }
+    }
+
+    #[test]
+    fn bad_contours_name_the_file_line_and_field() {
+        let err = |text: &str| Gesture::from_str(text, "c.toml").expect_err("refused").to_string();
+        let with = |key: &str| {
+            CONTOUR.replace(
+                "{ t = 0.0, points = [[-0.1, -0.05], [0.0, -0.05], [0.0, 0.05], [-0.1, 0.05]], pressure = 0.8 }",
+                key,
+            )
+        };
+        let e = err(&with("{ t = 0.0, points = [[0.0, 0.0], [0.1, 0.0]] }"));
+        assert!(e.contains("c.toml:9:") && e.contains("hands[0].keys[0].points") && e.contains("2 points"), "{e}");
+        let e = err(&with("{ t = 0.0, points = [[0.0, 0.0], [0.1, nan], [0.1, 0.1]] }"));
+        assert!(e.contains("hands[0].keys[0].points[1]") && e.contains("finite"), "{e}");
+        let e = err(&with("{ t = 0.0, points = [[0.0, 0.0], [0.1, 0.0], [0.1, 1e9]] }"));
+        assert!(e.contains("hands[0].keys[0].points[2]") && e.contains("out of range"), "{e}");
+        let e = err(&with("{ t = 0.0, points = [[0.0, 0.0], [0.1, 0.0], [0.1, 0.1]], holes = [[[0.0, 0.0]]] }"));
+        assert!(e.contains("hands[0].keys[0].holes[0]") && e.contains("1 points"), "{e}");
+        let e = err(&with("{ t = 0.0, pos = [0.0, 0.0] }"));
+        assert!(e.contains("hands[0].keys[0].pos") && e.contains("takes `points`"), "{e}");
+        let e = err(&with("{ t = 0.0, pressure = 1.0 }"));
+        assert!(e.contains("hands[0].keys[0].points") && e.contains("missing"), "{e}");
+        let e = err(&CONTOUR.replace(
+            "holes = [[[0.14, -0.01], [0.16, -0.01], [0.15, 0.01]]] },",
+            "holes = [[[0.14, -0.01], [0.16, -0.01], [0.15, 0.01]]] },\n  { t = 1.5, holes = [] },",
+        ));
+        assert!(e.contains("hands[0].keys[2].holes") && e.contains("without `points`"), "{e}");
+        let e = err(&CONTOUR.replace("version = 2", "version = 1"));
+        assert!(e.contains("hands[0].kind") && e.contains("needs version 2"), "{e}");
+        let e = err(&TWO.replace("pressure = 0.5", "points = [[0.0, 0.0], [0.1, 0.0], [0.1, 0.1]]"));
+        assert!(e.contains("hands[0].keys[1].points") && e.contains("only kind \"contour\""), "{e}");
+        let e = err(&TWO.replace("version = 1", "version = 3"));
+        assert!(e.contains("unsupported version 3"), "{e}");
     }
 }

@@ -3,7 +3,7 @@
 //! them into a contact image.
 //!
 //! - [`Mouse`]: a mouse (and its wheel and modifier keys) as one hand.
-//! - [`tuio`]: TUIO 1.1 packets decoded into hands, and the UDP listener.
+//! - [`tuio`]: TUIO 1.1 and 2.0 packets decoded into hands, and the UDP listener.
 //! - [`Gesture`]: gesture files (recorded or written by hand) replayed frame by frame;
 //!   [`GestureRecorder`] writes them.
 //! - [`Input`]: the demo's sources merged into one list per physics step.

@@ -149,7 +149,7 @@ impl Mouse {
 
     /// Every hand on the table: pinned ones first, then the dragged one.
     pub fn hands(&self) -> Vec<Hand> {
-        self.pinned.iter().chain(&self.active).copied().collect()
+        self.pinned.iter().chain(&self.active).cloned().collect()
     }
 
     /// The kind a left press would put down now.

@@ -228,7 +228,7 @@ impl Input {
         }
         let mut m = self.mouse.clone();
         m.handle(MouseEvent::Pressed(Button::Left));
-        m.hands().last().copied()
+        m.hands().pop()
     }
 }
 

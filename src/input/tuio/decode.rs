@@ -1,6 +1,14 @@
-//! TUIO 1.1 input: the OSC packets a tracker sends (a touch table's own
+//! TUIO input: the OSC packets a tracker sends (a touch table's own
 //! server, reacTIVision, CCV, a phone app) decoded into [`Hand`]s. Pure:
 //! bytes in, hands out. The app owns the UDP socket and the clock.
+//!
+//! One [`TuioState`] serves TUIO 1.1 and TUIO 2.0 on the same port: a
+//! packet with any `/tuio2/` message is TUIO 2.0 and goes to
+//! [`super::tuio2`] (its `/tuio/` messages ignored); any other is TUIO 1.1,
+//! below. Each version keeps its own sources and sessions; the hands are
+//! both versions' together.
+//!
+//! TUIO 1.1:
 //!
 //! | profile | message | becomes |
 //! |---|---|---|
@@ -36,6 +44,7 @@
 //! id, `source` the index of the source in order of appearance, mod 32),
 //! so TUIO hands never share an id with mouse or touch hands.
 
+use super::tuio2::{self, Op2, State2, Token};
 use crate::pipeline::surface::{Footprint, Patch};
 use crate::pipeline::surface::{Hand, HandKind};
 
@@ -59,7 +68,7 @@ const LATE_WINDOW: i64 = 100;
 /// late while its old cursors stayed on the table as ghosts.
 const RESTART_GAP_S: f64 = 0.25;
 /// Normalized coordinates beyond this margin around 0..1 are rejected.
-const COORD_MARGIN: f32 = 1.0;
+pub(super) const COORD_MARGIN: f32 = 1.0;
 
 /// Hand-id namespaces (see the module doc).
 pub const CURSOR_ID_BASE: u32 = 0x2000_0000;
@@ -114,11 +123,14 @@ pub struct TuioStats {
     /// Times a source's state was thrown away because its tracker
     /// restarted or came back after [`STALE_AFTER_S`] of silence.
     pub restarts: u64,
+    /// TUIO 2.0 frames dropped because the next `frm` came before their
+    /// `alv` (a lost packet).
+    pub incomplete_frames: u64,
 }
 
 /// What ending a frame did.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Commit {
+pub(super) enum Commit {
     Applied,
     /// Dropped: it came after a later frame.
     Late,
@@ -162,17 +174,11 @@ impl<T: Session> Profile<T> {
     /// packet.
     fn commit(&mut self, frame: i32, gap: f64) -> Commit {
         let frame = i64::from(frame);
-        let backwards = frame > 0 && frame < self.last_frame;
-        let restarted = backwards && (self.last_frame - frame > LATE_WINDOW || gap >= RESTART_GAP_S);
-        let outcome = if restarted {
+        let outcome = frame_order(frame, self.last_frame, gap);
+        if outcome == Commit::Restarted {
             self.live.clear();
             self.last_frame = 0;
-            Commit::Restarted
-        } else if backwards {
-            Commit::Late
-        } else {
-            Commit::Applied
-        };
+        }
         if outcome != Commit::Late {
             if frame > 0 {
                 self.last_frame = frame;
@@ -198,6 +204,21 @@ impl<T: Session> Profile<T> {
         self.pending_alive = None;
         self.pending_set.clear();
         self.last_frame = 0;
+    }
+}
+
+/// Whether frame `frame` of a source whose last accepted frame was `last`,
+/// arriving `gap` seconds after its previous packet, is applied, late or
+/// from a restarted tracker (the rules of the module doc; shared by TUIO
+/// 1.1 and 2.0). Ids <= 0 are always applied.
+pub(super) fn frame_order(frame: i64, last: i64, gap: f64) -> Commit {
+    let backwards = frame > 0 && frame < last;
+    if backwards && (last - frame > LATE_WINDOW || gap >= RESTART_GAP_S) {
+        Commit::Restarted
+    } else if backwards {
+        Commit::Late
+    } else {
+        Commit::Applied
     }
 }
 
@@ -232,6 +253,8 @@ enum Op {
 #[derive(Debug, Clone, Default)]
 pub struct TuioState {
     sources: Vec<Source>,
+    /// TUIO 2.0 sources.
+    v2: State2,
     stats: TuioStats,
 }
 
@@ -244,23 +267,47 @@ impl TuioState {
     /// not decreasing) and applies it, or rejects it whole.
     pub fn receive(&mut self, packet: &[u8], now: f64) -> Result<(), TuioError> {
         self.stats.packets += 1;
-        match decode(packet) {
-            Ok(ops) => {
-                self.apply(&ops, now);
-                Ok(())
+        let decoded = decode(packet);
+        match decoded {
+            Ok(Decoded::V1(ops)) => self.apply(&ops, now),
+            Ok(Decoded::V2(ops)) => {
+                if !ops.is_empty() && ops.iter().all(|op| *op == Op2::Ignored) {
+                    self.stats.unknown_profile += 1;
+                }
+                self.v2.apply(ops, now, &mut self.stats);
             }
             Err(e) => {
                 self.stats.malformed += 1;
-                Err(e)
+                return Err(e);
             }
         }
+        Ok(())
+    }
+
+    /// Live (cursors, blobs) now: TUIO 1.1 cursors and 2.0 pointers
+    /// without a shape; 1.1 blobs and 2.0 components with one.
+    pub fn counts(&self, now: f64) -> (usize, usize) {
+        let (c, b) = self.live(now);
+        let (p, s) = self.v2.counts(now);
+        (c.len() + p, b.len() + s)
+    }
+
+    /// Live TUIO 2.0 tokens (`tok`): hand id, the token, its table point.
+    pub fn tokens(&self, table: [f32; 2], now: f64) -> Vec<(u32, Token, [f32; 2])> {
+        self.v2.tokens(table, now)
+    }
+
+    /// Live TUIO 2.0 skeletons (`skg`): hand id and the skeleton's edges
+    /// on a table of [width, depth] metres.
+    pub fn skeletons(&self, table: [f32; 2], now: f64) -> Vec<(u32, Vec<[[f32; 2]; 2]>)> {
+        self.v2.skeletons(table, now)
     }
 
     pub fn stats(&self) -> TuioStats {
         self.stats
     }
 
-    /// Live cursors and blobs of sources heard from in the last
+    /// Live TUIO 1.1 cursors and blobs of sources heard from in the last
     /// [`STALE_AFTER_S`] seconds.
     pub fn live(&self, now: f64) -> (Vec<Cursor>, Vec<TuioBlob>) {
         let fresh = self.sources.iter().filter(|s| now - s.last_seen <= STALE_AFTER_S);
@@ -285,6 +332,7 @@ impl TuioState {
                 out.push(blob_hand(b, table, BLOB_ID_BASE | ns | (b.session as u32 & 0x00FF_FFFF)));
             }
         }
+        self.v2.hands(table, now, &mut out);
         out
     }
 
@@ -452,20 +500,31 @@ pub fn blob_hand(b: &TuioBlob, table: [f32; 2], id: u32) -> Hand {
     Hand::new(id, kind, cx - offset[0], cy - offset[1]).with_angle(angle).with_scale(scale)
 }
 
-fn to_table(p: [f32; 2], table: [f32; 2]) -> [f32; 2] {
+pub(super) fn to_table(p: [f32; 2], table: [f32; 2]) -> [f32; 2] {
     [(p[0] - 0.5) * table[0], (0.5 - p[1]) * table[1]]
 }
 
 // ---------------------------------------------------------------------------
 // Decoding.
 
-/// Decodes a datagram into operations, checking everything first.
-fn decode(packet: &[u8]) -> Result<Vec<Op>, TuioError> {
+/// A packet's operations, of the version it was detected as.
+enum Decoded {
+    V1(Vec<Op>),
+    V2(Vec<Op2>),
+}
+
+/// Decodes a datagram into operations, checking everything first; a
+/// `/tuio2/` message anywhere makes it TUIO 2.0.
+fn decode(packet: &[u8]) -> Result<Decoded, TuioError> {
     check_nesting(packet, 0)?;
     let (_, osc) = rosc::decoder::decode_udp(packet).map_err(|e| TuioError::Osc(e.to_string()))?;
     let mut messages = Vec::new();
     flatten(osc, &mut messages);
-    messages.iter().map(op).collect()
+    if messages.iter().any(|m| m.addr.starts_with("/tuio2/")) {
+        messages.iter().map(tuio2::op).collect::<Result<_, _>>().map(Decoded::V2)
+    } else {
+        messages.iter().map(op).collect::<Result<_, _>>().map(Decoded::V1)
+    }
 }
 
 fn flatten(packet: rosc::OscPacket, out: &mut Vec<rosc::OscMessage>) {
@@ -535,7 +594,7 @@ fn check_nesting(bytes: &[u8], depth: usize) -> Result<(), TuioError> {
 /// An OSC argument for an error message. rosc's `Display` of a time tag
 /// converts it to a `SystemTime` and panics on one before 1970 or past
 /// 2106 (found by `tests/fuzz.rs`), so time tags are shown raw.
-fn shown(a: &rosc::OscType) -> String {
+pub(super) fn shown(a: &rosc::OscType) -> String {
     match a {
         rosc::OscType::Time(t) => format!("time tag {}.{}", t.seconds, t.fractional),
         other => other.to_string(),
@@ -618,7 +677,7 @@ fn int(a: &rosc::OscType) -> Option<i32> {
 }
 
 /// A finite number; trackers send float32, some double.
-fn float(a: &rosc::OscType) -> Option<f32> {
+pub(super) fn float(a: &rosc::OscType) -> Option<f32> {
     let v = match a {
         rosc::OscType::Float(f) => *f,
         rosc::OscType::Double(d) => *d as f32,
@@ -753,7 +812,7 @@ mod tests {
     fn other_profiles_and_damaged_bundles_are_counted() {
         let mut t = TuioState::new();
         t.receive(&bundle(vec![msg("/tuio/2Dobj", vec![s("fseq"), OscType::Int(1)])]), 0.0).expect("valid");
-        t.receive(&bundle(vec![msg("/tuio2/frm", vec![OscType::Int(1)])]), 0.0).expect("valid");
+        t.receive(&bundle(vec![msg("/tuio2/sym", vec![OscType::Int(1)])]), 0.0).expect("valid");
         assert_eq!(t.stats().unknown_profile, 2);
         let mut packet = cursor_frame(5, &[(1, 0.5, 0.5)]);
         // The first element (its size at byte 16) claims a word more than

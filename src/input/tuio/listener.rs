@@ -70,10 +70,10 @@ impl TuioListener {
         self.lock().now.stats()
     }
 
-    /// Live (cursors, blobs) now.
+    /// Live (cursors, blobs) now, TUIO 2.0 pointers and shapes included
+    /// (see [`TuioState::counts`]).
     pub fn live_counts(&self) -> (usize, usize) {
-        let (c, b) = self.lock().now.live(self.start.elapsed().as_secs_f64());
-        (c.len(), b.len())
+        self.lock().now.counts(self.start.elapsed().as_secs_f64())
     }
 
     fn lock(&self) -> std::sync::MutexGuard<'_, Tracked> {

@@ -58,7 +58,10 @@ impl Timeline {
                 let share = ((t - t0) / (t1 - t0)).clamp(0.0, 1.0) as f32;
                 let to = after.hands(table, *t1);
                 from.into_iter()
-                    .map(|h| to.iter().find(|n| n.id == h.id).map_or(h, |n| between(&h, n, share)))
+                    .map(|h| match to.iter().find(|n| n.id == h.id) {
+                        Some(n) => between(&h, n, share),
+                        None => h,
+                    })
                     .collect()
             }
             _ => from,
@@ -67,7 +70,8 @@ impl Timeline {
 }
 
 /// `a` moved `share` of the way to `b` (same hand): position, angle (the
-/// short way round), spread and pressure; its kind and size stay `a`'s.
+/// short way round), spread and pressure; its kind, size and outline stay
+/// `a`'s (a contour moves with its pose).
 fn between(a: &Hand, b: &Hand, share: f32) -> Hand {
     let mix = |x: f32, y: f32| x + (y - x) * share;
     let mut turn = (b.pose.angle - a.pose.angle) % std::f32::consts::TAU;
@@ -76,7 +80,7 @@ fn between(a: &Hand, b: &Hand, share: f32) -> Hand {
     } else if turn < -std::f32::consts::PI {
         turn += std::f32::consts::TAU;
     }
-    let mut h = *a;
+    let mut h = a.clone();
     h.pose.x = mix(a.pose.x, b.pose.x);
     h.pose.y = mix(a.pose.y, b.pose.y);
     h.pose.angle = a.pose.angle + turn * share;
@@ -171,7 +175,7 @@ mod tests {
     #[test]
     fn turning_takes_the_short_way_round() {
         let a = Hand::new(1, crate::pipeline::surface::HandKind::FlatHand, 0.0, 0.0);
-        let (mut from, mut to) = (a, a);
+        let (mut from, mut to) = (a.clone(), a);
         from.pose.angle = 3.0;
         to.pose.angle = -3.0;
         let mid = between(&from, &to, 0.5);

@@ -7,7 +7,10 @@
 //! a fingertip touches with a patch about 1.5 cm across, a flat palm about
 //! 9 x 10 cm, a forearm about 25 x 7 cm.
 
+use std::sync::Arc;
+
 use super::footprint::{Footprint, Patch};
+use super::outline::Outline;
 
 /// What is touching the glass.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -31,10 +34,16 @@ pub enum HandKind {
     Cup,
     /// A credit-card sized card (8.6 x 5.4 cm).
     Card,
+    /// An arbitrary outline, drawn as it is: what a tracker that sends
+    /// contours saw. The shape is the hand's [`Hand::outline`]; it has no
+    /// template, so it is not in [`HandKind::ALL`] (nothing can put one
+    /// down by picking a kind).
+    Contour,
 }
 
 impl HandKind {
-    /// Every kind with its file name, in the order the UI lists them.
+    /// Every kind made from a template, in the order the UI lists them
+    /// ([`HandKind::Contour`] is made from an outline instead).
     pub const ALL: [Self; 8] = [
         Self::Fingertips(1),
         Self::FlatHand,
@@ -57,12 +66,13 @@ impl HandKind {
             Self::Ruler => "ruler",
             Self::Cup => "cup",
             Self::Card => "card",
+            Self::Contour => "contour",
         }
     }
 
     /// The kind called `name` in a gesture file (fingertip count apart).
     pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL.into_iter().find(|k| k.name() == name)
+        Self::ALL.into_iter().chain([Self::Contour]).find(|k| k.name() == name)
     }
 }
 
@@ -76,7 +86,10 @@ pub struct Pose {
 }
 
 /// One hand or tangible at one instant.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// Not `Copy`: a [`HandKind::Contour`] hand carries its outline, shared
+/// behind an `Arc` so that cloning a hand stays cheap.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Hand {
     /// Identity chosen by whoever drives the hand (gesture file, mouse);
     /// unrelated to the contact ids that vision assigns.
@@ -92,6 +105,10 @@ pub struct Hand {
     /// 0..=1; the grey level of the touch is proportional to it. 0 is a
     /// hand hovering out of sight.
     pub pressure: f32,
+    /// The shape of a [`HandKind::Contour`] hand in its own frame (placed
+    /// by `pose` and `scale` like every template); `None` for every other
+    /// kind. A contour hand without one touches nothing.
+    pub outline: Option<Arc<Outline>>,
 }
 
 /// Fingertip contact patch: 1.5 cm across, a little longer along the finger.
@@ -107,7 +124,22 @@ const FINGER_LEVEL: f32 = 0.85;
 impl Hand {
     /// A relaxed hand of `kind` at `(x, y)`, angle 0, full pressure.
     pub fn new(id: u32, kind: HandKind, x: f32, y: f32) -> Self {
-        Self { id, kind, pose: Pose { x, y, angle: 0.0 }, spread: 1.0, scale: 1.0, pressure: 1.0 }
+        Self { id, kind, pose: Pose { x, y, angle: 0.0 }, spread: 1.0, scale: 1.0, pressure: 1.0, outline: None }
+    }
+
+    /// A [`HandKind::Contour`] hand whose outline is `outline` (table
+    /// metres) at full pressure: its pose is the middle of the outline's
+    /// bounds, angle 0, scale 1, and it carries the outline relative to it.
+    pub fn contour(id: u32, outline: &Outline) -> Self {
+        let (local, centre) = outline.centred();
+        let mut hand = Self::new(id, HandKind::Contour, centre[0], centre[1]);
+        hand.outline = Some(Arc::new(local));
+        hand
+    }
+
+    /// The outline's rings on the table (metres), for a contour hand.
+    pub fn outline_rings(&self) -> Option<Vec<Vec<[f32; 2]>>> {
+        self.outline.as_ref().map(|o| o.placed([self.pose.x, self.pose.y], self.pose.angle, self.scale.max(0.0)))
     }
 
     pub fn with_angle(mut self, angle: f32) -> Self {
@@ -134,6 +166,12 @@ impl Hand {
     pub fn bounds(&self) -> [[f32; 2]; 2] {
         let mut lo = [f32::MAX; 2];
         let mut hi = [f32::MIN; 2];
+        for p in self.outline_rings().iter().flatten().flatten() {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
         for p in self.patches() {
             let [a, b] = p.shape.bounds();
             for k in 0..2 {
@@ -144,7 +182,8 @@ impl Hand {
         [lo, hi]
     }
 
-    /// The footprint on the table, in table metres.
+    /// The footprint on the table, in table metres: the template's parts
+    /// (none for a [`HandKind::Contour`], whose shape is its outline).
     pub fn patches(&self) -> Vec<Patch> {
         let mut out = Vec::new();
         self.push_patches(&mut out);
@@ -240,6 +279,7 @@ fn local_patches(kind: HandKind, spread: f32, out: &mut Vec<Patch>) {
             Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.043, 0.027], angle: 0.0, corner: 0.003 },
             1.0,
         )),
+        HandKind::Contour => {}
     }
 }
 
@@ -284,5 +324,22 @@ mod tests {
             assert_eq!(HandKind::from_name(kind.name()), Some(kind));
         }
         assert_eq!(HandKind::from_name("tentacle"), None);
+        assert_eq!(HandKind::from_name("contour"), Some(HandKind::Contour));
+        assert!(!HandKind::ALL.contains(&HandKind::Contour));
+    }
+
+    #[test]
+    fn a_contour_hand_is_placed_where_its_outline_lies() {
+        let ring = vec![[0.2, 0.1], [0.3, 0.1], [0.3, 0.14], [0.2, 0.14]];
+        let hand = Hand::contour(4, &Outline::new(vec![ring]).expect("valid"));
+        assert_eq!(hand.kind, HandKind::Contour);
+        assert!((hand.pose.x - 0.25).abs() < 1e-6 && (hand.pose.y - 0.12).abs() < 1e-6);
+        assert!(hand.patches().is_empty());
+        let [lo, hi] = hand.bounds();
+        assert!((lo[0] - 0.2).abs() < 1e-6 && (hi[1] - 0.14).abs() < 1e-6, "{lo:?} {hi:?}");
+        // Moving the pose moves the outline.
+        let mut moved = hand.clone();
+        moved.pose.x += 0.1;
+        assert!((moved.bounds()[0][0] - 0.3).abs() < 1e-6);
     }
 }

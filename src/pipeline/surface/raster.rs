@@ -110,10 +110,18 @@ fn draw(hands: &[Hand], sensor: &Sensor, params: &RasterParams, image: &mut Cont
         }
         patches.clear();
         hand.push_patches(&mut patches);
+        let grow = |lit: Option<Range<usize>>, rows: Range<usize>| {
+            Some(lit.map_or(rows.clone(), |l| l.start.min(rows.start)..l.end.max(rows.end)))
+        };
         for patch in &patches {
             if let Some(rows) = draw_patch(patch, pressure, sensor, params.falloff_px, image) {
-                lit = Some(lit.map_or(rows.clone(), |l| l.start.min(rows.start)..l.end.max(rows.end)));
+                lit = grow(lit, rows);
             }
+        }
+        if let Some(rows) =
+            hand.outline_rings().and_then(|r| draw_outline(&r, pressure, sensor, params.falloff_px, image))
+        {
+            lit = grow(lit, rows);
         }
     }
     if let Some(noise) = params.noise {
@@ -172,6 +180,125 @@ fn draw_patch(
     (r0 <= r1).then_some(r0..r1 + 1)
 }
 
+/// Draws an outline's rings (table metres, even-odd, see
+/// [`super::Outline`]) with the soft edge every patch gets: the grey is a
+/// function of the signed distance to the nearest edge, half the level on
+/// the outline. Returns the rows it covered (`None`: off the image).
+///
+/// Inside/outside comes from one even-odd scan per row; the distance only
+/// matters within half the falloff of an edge, so it is computed per edge
+/// over that edge's own band of pixels and not per pixel over every edge
+/// (a hand's few hundred contour points would make that the frame's
+/// largest cost).
+fn draw_outline(
+    rings: &[Vec<[f32; 2]>],
+    pressure: f32,
+    sensor: &Sensor,
+    falloff_px: f32,
+    image: &mut ContactImage,
+) -> Option<Range<usize>> {
+    if image.width == 0 || image.height == 0 {
+        return None;
+    }
+    let peak = 255.0 * pressure;
+    let falloff = falloff_px.max(1e-3) * sensor.metres_per_pixel();
+    let reach = 0.5 * falloff;
+    let mut lo = [f32::MAX; 2];
+    let mut hi = [f32::MIN; 2];
+    for p in rings.iter().flatten() {
+        for k in 0..2 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    if !(lo[0].is_finite() && lo[1].is_finite() && hi[0].is_finite() && hi[1].is_finite()) {
+        return None;
+    }
+    let a = sensor.to_pixel([lo[0] - reach, hi[1] + reach]);
+    let b = sensor.to_pixel([hi[0] + reach, lo[1] - reach]);
+    let max_c = image.width as f32 - 1.0;
+    let max_r = image.height as f32 - 1.0;
+    if b[0] < 0.0 || b[1] < 0.0 || a[0] > max_c || a[1] > max_r {
+        return None;
+    }
+    let (c0, c1) = (a[0].ceil().max(0.0) as usize, b[0].floor().min(max_c) as usize);
+    let (r0, r1) = (a[1].ceil().max(0.0) as usize, b[1].floor().min(max_r) as usize);
+    if c0 > c1 || r0 > r1 {
+        return None;
+    }
+    let [sx, sy] = sensor.pixel_size();
+    let x0 = -0.5 * sensor.table_width_m + 0.5 * sx;
+    let y0 = 0.5 * sensor.table_depth_m - 0.5 * sy;
+    let (w, h) = (c1 - c0 + 1, r1 - r0 + 1);
+    // Unsigned distance to the nearest edge, capped at `reach`.
+    let mut near = vec![reach; w * h];
+    for ring in rings {
+        let mut j = ring.len() - 1;
+        for i in 0..ring.len() {
+            let (p, q) = (ring[j], ring[i]);
+            j = i;
+            let ea = sensor.to_pixel([p[0].min(q[0]) - reach, p[1].max(q[1]) + reach]);
+            let eb = sensor.to_pixel([p[0].max(q[0]) + reach, p[1].min(q[1]) - reach]);
+            let ec0 = (ea[0].ceil().max(c0 as f32) as usize).min(c1 + 1);
+            let ec1 = eb[0].floor().min(c1 as f32);
+            let er0 = (ea[1].ceil().max(r0 as f32) as usize).min(r1 + 1);
+            let er1 = eb[1].floor().min(r1 as f32);
+            if ec1 < ec0 as f32 || er1 < er0 as f32 {
+                continue;
+            }
+            let pq = [q[0] - p[0], q[1] - p[1]];
+            let len2 = pq[0] * pq[0] + pq[1] * pq[1];
+            let inv = if len2 > 0.0 { 1.0 / len2 } else { 0.0 };
+            for r in er0..=er1 as usize {
+                let y = y0 - r as f32 * sy;
+                let row = &mut near[(r - r0) * w..(r - r0 + 1) * w];
+                for c in ec0..=ec1 as usize {
+                    let ap = [x0 + c as f32 * sx - p[0], y - p[1]];
+                    let t = ((ap[0] * pq[0] + ap[1] * pq[1]) * inv).clamp(0.0, 1.0);
+                    let d = ((ap[0] - t * pq[0]).powi(2) + (ap[1] - t * pq[1]).powi(2)).sqrt();
+                    let slot = &mut row[c - c0];
+                    *slot = slot.min(d);
+                }
+            }
+        }
+    }
+    let mut crossings: Vec<f32> = Vec::new();
+    for r in r0..=r1 {
+        let y = y0 - r as f32 * sy;
+        crossings.clear();
+        for ring in rings {
+            let mut j = ring.len() - 1;
+            for i in 0..ring.len() {
+                let (p, q) = (ring[j], ring[i]);
+                j = i;
+                if (p[1] <= y) != (q[1] <= y) {
+                    crossings.push(p[0] + (y - p[1]) * (q[0] - p[0]) / (q[1] - p[1]));
+                }
+            }
+        }
+        crossings.sort_unstable_by(f32::total_cmp);
+        let row = &mut image.pixels[r * image.width..(r + 1) * image.width];
+        let distances = &near[(r - r0) * w..(r - r0 + 1) * w];
+        // Crossings left of the pixel centre so far: odd = inside.
+        let mut passed = 0;
+        for c in c0..=c1 {
+            let x = x0 + c as f32 * sx;
+            while passed < crossings.len() && crossings[passed] <= x {
+                passed += 1;
+            }
+            let unsigned = distances[c - c0];
+            let d = if passed % 2 == 1 { -unsigned } else { unsigned };
+            if d >= reach {
+                continue;
+            }
+            let t = (0.5 - d / falloff).clamp(0.0, 1.0);
+            let grey = (peak * t * t * (3.0 - 2.0 * t)).round() as u8;
+            row[c] = row[c].max(grey);
+        }
+    }
+    Some(r0..r1 + 1)
+}
+
 fn add_noise(image: &mut ContactImage, noise: Noise) {
     if noise.amplitude == 0 {
         return;
@@ -213,6 +340,46 @@ mod tests {
         let nan = Hand::new(2, HandKind::FlatHand, f32::NAN, 0.0);
         let image = rasterize(&[far, nan], &sensor, &RasterParams::default());
         assert!(image.is_blank());
+    }
+
+    /// A square outline is drawn as the square footprint with sharp
+    /// corners is: the same inside, the same soft edge (both are exact
+    /// distances), so vision sees a contour hand as it sees a template.
+    #[test]
+    fn an_outline_draws_like_the_same_footprint() {
+        use crate::pipeline::surface::{Footprint, Outline, Patch};
+        let sensor = Sensor::default();
+        let params = RasterParams::default();
+        let ring = vec![[0.05, -0.02], [0.13, -0.02], [0.13, 0.04], [0.05, 0.04]];
+        let hand = Hand::contour(1, &Outline::new(vec![ring]).expect("valid"));
+        let drawn = rasterize(&[hand], &sensor, &params);
+        let rect = Footprint::RoundedRect { centre: [0.09, 0.01], half: [0.04, 0.03], angle: 0.0, corner: 0.0 };
+        let reference = rasterize_patches(&[Patch { shape: rect, level: 1.0 }], &sensor, &params);
+        let worst = drawn.pixels.iter().zip(&reference.pixels).map(|(a, b)| a.abs_diff(*b)).max();
+        assert!(worst <= Some(1), "largest difference {worst:?} grey levels");
+        // 8 × 6 cm at 1.5625 mm pixels: about 51 × 38 = 1966 pixels at half grey or more.
+        let lit = drawn.pixels.iter().filter(|&&p| p >= 128).count();
+        assert!((1900..=2050).contains(&lit), "{lit} pixels");
+    }
+
+    #[test]
+    fn an_outline_with_a_hole_leaves_it_dark_and_pressure_sets_its_grey() {
+        use crate::pipeline::surface::Outline;
+        let sensor = Sensor::default();
+        let square = |h: f32| vec![[-h, -h], [h, -h], [h, h], [-h, h]];
+        let mut hand = Hand::contour(1, &Outline::new(vec![square(0.1), square(0.04)]).expect("valid"));
+        hand.pressure = 0.6;
+        let image = rasterize(&[hand], &sensor, &RasterParams::default());
+        let at = |p: [f32; 2]| {
+            let [c, r] = sensor.to_pixel(p);
+            image.pixels[r.round() as usize * image.width + c.round() as usize]
+        };
+        assert_eq!(at([0.0, 0.0]), 0, "the hole");
+        assert_eq!(at([0.07, 0.0]), 153, "between the contours: 0.6 of 255");
+        assert_eq!(at([0.15, 0.0]), 0, "outside");
+        // A soft edge, as every patch has: the pixel the outline runs through is grey.
+        let edge = at([0.1, 0.0]);
+        assert!(edge > 0 && edge < 153, "{edge}");
     }
 
     #[test]
