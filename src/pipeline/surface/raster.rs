@@ -132,6 +132,32 @@ fn draw(hands: &[Hand], sensor: &Sensor, params: &RasterParams, image: &mut Cont
     lit.unwrap_or(0..0)
 }
 
+/// The columns `[c0, c1]` and rows `[r0, r1]` (inclusive) of the pixels
+/// whose centres may lie within `reach` of the table box `lo..hi`; `None`
+/// when the box is not finite or misses the image.
+fn pixel_window(
+    lo: [f32; 2],
+    hi: [f32; 2],
+    reach: f32,
+    sensor: &Sensor,
+    image: &ContactImage,
+) -> Option<([usize; 2], [usize; 2])> {
+    if !(lo[0].is_finite() && lo[1].is_finite() && hi[0].is_finite() && hi[1].is_finite()) {
+        return None;
+    }
+    // Pixel rows grow as y falls: the top of the box is the first row.
+    let a = sensor.to_pixel([lo[0] - reach, hi[1] + reach]);
+    let b = sensor.to_pixel([hi[0] + reach, lo[1] - reach]);
+    let max_c = image.width as f32 - 1.0;
+    let max_r = image.height as f32 - 1.0;
+    if b[0] < 0.0 || b[1] < 0.0 || a[0] > max_c || a[1] > max_r {
+        return None;
+    }
+    let (c0, c1) = (a[0].ceil().max(0.0) as usize, b[0].floor().min(max_c) as usize);
+    let (r0, r1) = (a[1].ceil().max(0.0) as usize, b[1].floor().min(max_r) as usize);
+    (c0 <= c1 && r0 <= r1).then_some(([c0, c1], [r0, r1]))
+}
+
 /// Draws one patch; returns the rows it covered (`None`: off the image).
 fn draw_patch(
     patch: &Patch,
@@ -147,19 +173,7 @@ fn draw_patch(
     let falloff = falloff_px.max(1e-3) * sensor.metres_per_pixel();
     let reach = 0.5 * falloff;
     let [lo, hi] = patch.shape.bounds();
-    if !(lo[0].is_finite() && lo[1].is_finite() && hi[0].is_finite() && hi[1].is_finite()) {
-        return None;
-    }
-    // Pixel rows grow as y falls: the top of the box is the first row.
-    let a = sensor.to_pixel([lo[0] - reach, hi[1] + reach]);
-    let b = sensor.to_pixel([hi[0] + reach, lo[1] - reach]);
-    let max_c = image.width as f32 - 1.0;
-    let max_r = image.height as f32 - 1.0;
-    if b[0] < 0.0 || b[1] < 0.0 || a[0] > max_c || a[1] > max_r {
-        return None;
-    }
-    let (c0, c1) = (a[0].ceil().max(0.0) as usize, b[0].floor().min(max_c) as usize);
-    let (r0, r1) = (a[1].ceil().max(0.0) as usize, b[1].floor().min(max_r) as usize);
+    let ([c0, c1], [r0, r1]) = pixel_window(lo, hi, reach, sensor, image)?;
     let [sx, sy] = sensor.pixel_size();
     let x0 = -0.5 * sensor.table_width_m + 0.5 * sx;
     let y0 = 0.5 * sensor.table_depth_m - 0.5 * sy;
@@ -211,21 +225,7 @@ fn draw_outline(
             hi[k] = hi[k].max(p[k]);
         }
     }
-    if !(lo[0].is_finite() && lo[1].is_finite() && hi[0].is_finite() && hi[1].is_finite()) {
-        return None;
-    }
-    let a = sensor.to_pixel([lo[0] - reach, hi[1] + reach]);
-    let b = sensor.to_pixel([hi[0] + reach, lo[1] - reach]);
-    let max_c = image.width as f32 - 1.0;
-    let max_r = image.height as f32 - 1.0;
-    if b[0] < 0.0 || b[1] < 0.0 || a[0] > max_c || a[1] > max_r {
-        return None;
-    }
-    let (c0, c1) = (a[0].ceil().max(0.0) as usize, b[0].floor().min(max_c) as usize);
-    let (r0, r1) = (a[1].ceil().max(0.0) as usize, b[1].floor().min(max_r) as usize);
-    if c0 > c1 || r0 > r1 {
-        return None;
-    }
+    let ([c0, c1], [r0, r1]) = pixel_window(lo, hi, reach, sensor, image)?;
     let [sx, sy] = sensor.pixel_size();
     let x0 = -0.5 * sensor.table_width_m + 0.5 * sx;
     let y0 = 0.5 * sensor.table_depth_m - 0.5 * sy;
