@@ -44,31 +44,17 @@
 //! id, `source` the index of the source in order of appearance, mod 32),
 //! so TUIO hands never share an id with mouse or touch hands.
 
+use super::protocol::{
+    COORD_MARGIN, Commit, MAX_BUNDLE_DEPTH, STALE_AFTER_S, TuioError, TuioStats, float, frame_order, shown, to_table,
+};
 use super::tuio2::{self, Op2, State2, Token};
 use crate::pipeline::surface::{Footprint, Patch};
 use crate::pipeline::surface::{Hand, HandKind};
 
 /// The port TUIO trackers send to by default.
 pub const DEFAULT_PORT: u16 = 3333;
-/// A source silent this long (seconds) is assumed gone.
-pub const STALE_AFTER_S: f64 = 2.0;
-/// Deepest bundle nesting accepted. Real trackers send one level; the
-/// limit keeps a hostile packet from recursing through the decoder.
-pub const MAX_BUNDLE_DEPTH: usize = 4;
 /// Deepest OSC array nesting accepted in a message's type tags.
 const MAX_ARRAY_DEPTH: usize = 4;
-/// Late-frame window of the reference client: a frame id this far below
-/// the last one means the tracker restarted, not a late packet.
-const LATE_WINDOW: i64 = 100;
-/// A frame id below the last one, arriving after the source was silent
-/// this long (seconds), is a restarted tracker counting from 1 again, not a
-/// late packet: UDP reordering happens within a steady stream (trackers
-/// send 30-60 frames a second), a restart takes a pause. Without this, a
-/// tracker that restarted within 100 frames had its new frames dropped as
-/// late while its old cursors stayed on the table as ghosts.
-const RESTART_GAP_S: f64 = 0.25;
-/// Normalized coordinates beyond this margin around 0..1 are rejected.
-pub(super) const COORD_MARGIN: f32 = 1.0;
 
 /// Hand-id namespaces (see the module doc).
 pub const CURSOR_ID_BASE: u32 = 0x2000_0000;
@@ -93,49 +79,6 @@ pub struct TuioBlob {
     pub angle: f32,
     pub width: f32,
     pub height: f32,
-}
-
-/// Why a packet was rejected.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum TuioError {
-    #[error("not an OSC packet: {0}")]
-    Osc(String),
-    #[error("bundles nested deeper than {MAX_BUNDLE_DEPTH} levels")]
-    TooDeep,
-    #[error("{address}: {problem}")]
-    Message { address: String, problem: String },
-}
-
-/// Counters shown in the demo's panel.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub struct TuioStats {
-    /// Packets received, malformed ones included.
-    pub packets: u64,
-    /// Packets rejected whole.
-    pub malformed: u64,
-    /// Frames dropped because their `fseq` came too late.
-    pub late_frames: u64,
-    /// Messages of other profiles or commands, skipped.
-    pub ignored_messages: u64,
-    /// Packets that held only messages of other profiles (`/tuio/2Dobj`,
-    /// TUIO 2.0's `/tuio2/*`, custom ones): well-formed but of no use here.
-    pub unknown_profile: u64,
-    /// Times a source's state was thrown away because its tracker
-    /// restarted or came back after [`STALE_AFTER_S`] of silence.
-    pub restarts: u64,
-    /// TUIO 2.0 frames dropped because the next `frm` came before their
-    /// `alv` (a lost packet).
-    pub incomplete_frames: u64,
-}
-
-/// What ending a frame did.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum Commit {
-    Applied,
-    /// Dropped: it came after a later frame.
-    Late,
-    /// The tracker restarted: its old sessions were dropped, then the frame applied.
-    Restarted,
 }
 
 /// Sessions of one profile of one source.
@@ -204,21 +147,6 @@ impl<T: Session> Profile<T> {
         self.pending_alive = None;
         self.pending_set.clear();
         self.last_frame = 0;
-    }
-}
-
-/// Whether frame `frame` of a source whose last accepted frame was `last`,
-/// arriving `gap` seconds after its previous packet, is applied, late or
-/// from a restarted tracker (the rules of the module doc; shared by TUIO
-/// 1.1 and 2.0). Ids <= 0 are always applied.
-pub(super) fn frame_order(frame: i64, last: i64, gap: f64) -> Commit {
-    let backwards = frame > 0 && frame < last;
-    if backwards && (last - frame > LATE_WINDOW || gap >= RESTART_GAP_S) {
-        Commit::Restarted
-    } else if backwards {
-        Commit::Late
-    } else {
-        Commit::Applied
     }
 }
 
@@ -500,10 +428,6 @@ pub fn blob_hand(b: &TuioBlob, table: [f32; 2], id: u32) -> Hand {
     Hand::new(id, kind, cx - offset[0], cy - offset[1]).with_angle(angle).with_scale(scale)
 }
 
-pub(super) fn to_table(p: [f32; 2], table: [f32; 2]) -> [f32; 2] {
-    [(p[0] - 0.5) * table[0], (0.5 - p[1]) * table[1]]
-}
-
 // ---------------------------------------------------------------------------
 // Decoding.
 
@@ -591,16 +515,6 @@ fn check_nesting(bytes: &[u8], depth: usize) -> Result<(), TuioError> {
     Ok(())
 }
 
-/// An OSC argument for an error message. rosc's `Display` of a time tag
-/// converts it to a `SystemTime` and panics on one before 1970 or past
-/// 2106 (found by `tests/fuzz.rs`), so time tags are shown raw.
-pub(super) fn shown(a: &rosc::OscType) -> String {
-    match a {
-        rosc::OscType::Time(t) => format!("time tag {}.{}", t.seconds, t.fractional),
-        other => other.to_string(),
-    }
-}
-
 fn op(m: &rosc::OscMessage) -> Result<Op, TuioError> {
     let kind = match m.addr.as_str() {
         "/tuio/2Dcur" => Kind::Cursor,
@@ -674,17 +588,6 @@ fn int(a: &rosc::OscType) -> Option<i32> {
         rosc::OscType::Long(l) => i32::try_from(*l).ok(),
         _ => None,
     }
-}
-
-/// A finite number; trackers send float32, some double.
-pub(super) fn float(a: &rosc::OscType) -> Option<f32> {
-    let v = match a {
-        rosc::OscType::Float(f) => *f,
-        rosc::OscType::Double(d) => *d as f32,
-        rosc::OscType::Int(i) => *i as f32,
-        _ => return None,
-    };
-    v.is_finite().then_some(v)
 }
 
 #[cfg(test)]

@@ -3,7 +3,8 @@
 //! result kept with its arrival time ([`Timeline`]), so that each physics
 //! step asks for the hands at its own time.
 
-use super::decode::{TuioState, TuioStats};
+use super::decode::TuioState;
+use super::protocol::TuioStats;
 use super::timeline::Timeline;
 use crate::pipeline::surface::Hand;
 use std::net::{SocketAddr, UdpSocket};

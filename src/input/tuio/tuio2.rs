@@ -55,7 +55,7 @@ use std::sync::Arc;
 
 use rosc::{OscMessage, OscType};
 
-use super::decode::{COORD_MARGIN, Commit, STALE_AFTER_S, TuioError, TuioStats, float, frame_order, shown, to_table};
+use super::protocol::{COORD_MARGIN, Commit, STALE_AFTER_S, TuioError, TuioStats, float, frame_order, shown, to_table};
 use crate::pipeline::surface::{Hand, HandKind, Outline};
 
 /// Hand-id namespace of TUIO 2.0 sessions (module doc).

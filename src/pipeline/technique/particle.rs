@@ -55,7 +55,7 @@ const CULL_SLACK: f32 = 0.01;
 
 /// A particle's speed along the surface it touches, at most this many times
 /// the hand's speed over the table.
-pub(super) const MAX_SURFACE_SPEEDUP: f32 = 1.2;
+const MAX_SURFACE_SPEEDUP: f32 = 1.2;
 
 /// Length (m) of a line-of-sight capsule (see `particle_capsules`). The
 /// paper's reaches the camera's near plane; this one reaches a quarter
@@ -436,7 +436,7 @@ impl Technique for ParticleTechnique {
             return FlowInterest::All;
         }
         let reach = self.sight_reach(world, dt);
-        let interest = reach.flow_interest(sensor);
+        let interest = reach.flow_interest(sensor, MAX_SURFACE_SPEEDUP);
         self.reach = Some(reach);
         interest
     }

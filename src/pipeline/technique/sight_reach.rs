@@ -15,7 +15,6 @@
 //! and the projection is exact where the old pixel box of eight projected
 //! corners was a box around a box.
 
-use super::particle::MAX_SURFACE_SPEEDUP;
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{ConvexRegion, FlowInterest};
 use crate::pipeline::world::{Reach, World};
@@ -103,12 +102,11 @@ impl SightReach {
     }
 
     /// Where the vision stage must measure flow for [`Self::may_touch`] to
-    /// see every particle it keeps: a particle moves at most
-    /// [`MAX_SURFACE_SPEEDUP`] times its point's flow, and one that climbed
-    /// a wall starts one flow back, so a kept point lies within
-    /// `1 + MAX_SURFACE_SPEEDUP · k` flows of a region on the glass. In
-    /// pixels that is scaled by the pixels' aspect.
-    pub fn flow_interest(&self, sensor: &Sensor) -> FlowInterest {
+    /// see every particle it keeps, when a particle moves at most
+    /// `speedup` times its point's flow: one that climbed a wall starts one
+    /// flow back, so a kept point lies within `1 + speedup · k` flows of a
+    /// region on the glass. In pixels that is scaled by the pixels' aspect.
+    pub fn flow_interest(&self, sensor: &Sensor, speedup: f32) -> FlowInterest {
         let Some(k) = self.magnification else { return FlowInterest::All };
         let [sx, sy] = sensor.pixel_size();
         let aspect = sx.max(sy) / sx.min(sy);
@@ -120,7 +118,7 @@ impl SightReach {
                 ConvexRegion::hull_of(&px)
             })
             .collect();
-        FlowInterest::Near { regions, flow_scale: (1.0 + MAX_SURFACE_SPEEDUP * k) * aspect }
+        FlowInterest::Near { regions, flow_scale: (1.0 + speedup * k) * aspect }
     }
 }
 
@@ -233,12 +231,15 @@ position = [0.2, -0.1]
         }
     }
 
+    /// The Particle technique's cap on a particle's speed over its point's.
+    const SPEEDUP: f32 = 1.2;
+
     #[test]
     fn the_flow_interest_covers_every_kept_particle() {
         let w = world();
         let sensor = Sensor::default();
         let reach = SightReach::new(&w, 1.0 / 60.0, 0.003, 0.01, 0.05);
-        let interest = reach.flow_interest(&sensor);
+        let interest = reach.flow_interest(&sensor, SPEEDUP);
         let [sx, _] = sensor.pixel_size();
         for i in 0..200 {
             for j in 0..150 {
@@ -246,7 +247,7 @@ position = [0.2, -0.1]
                 // A point moving 4 px a frame: its particle moves at most 1.2
                 // times that, and is kept only where it may touch a body.
                 let flow_px = 4.0;
-                if reach.may_touch(g, MAX_SURFACE_SPEEDUP * flow_px * sx) {
+                if reach.may_touch(g, SPEEDUP * flow_px * sx) {
                     let px = sensor.to_pixel(g.to_array());
                     assert!(interest.wants(px, [flow_px, 0.0], 0.0), "{g} kept but its flow was not asked for");
                 }
