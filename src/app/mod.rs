@@ -9,8 +9,8 @@
 //! - [`lab`]: the state the window shows and the panel changes.
 //! - [`clock`]: the fixed physics timestep, independent of the frame rate.
 //! - [`panel`] / [`view`]: the side panel; the table view and its overlays.
-//! - [`input`]: mouse, touch, TUIO and scripted hands merged; [`tuio`]: the UDP listener.
-//! - [`record`]: gesture recording; [`participant`]: study trials and their rows.
+//! - `input`: mouse, touch, TUIO and scripted hands merged; `tuio`: the UDP listener.
+//! - [`record`]: gesture recording; `participant`: study trials and their rows.
 //! - [`capture`]: reading back the window for `--screenshot-after`.
 
 pub mod capture;

@@ -6,7 +6,7 @@ use std::collections::VecDeque;
 /// Samples kept per series (about one second at 60 Hz).
 const WINDOW: usize = 60;
 
-/// Mean and maximum of the last [`WINDOW`] samples.
+/// Mean and maximum of the last `WINDOW` samples.
 #[derive(Debug, Clone, Default)]
 pub struct Rolling {
     samples: VecDeque<f64>,

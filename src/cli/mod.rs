@@ -336,7 +336,7 @@ pub struct ScreenshotArgs {
 
 #[derive(Debug, Args)]
 pub struct ContactArgs {
-    /// JSON file with {"a": [[x,y],...], "b": [[x,y],...]}, or - for standard input.
+    /// JSON file with `{"a": [[x,y],...], "b": [[x,y],...]}`, or - for standard input.
     #[arg(default_value = "-")]
     pub input: String,
     /// Accept concave (simple) polygons, by convex decomposition.

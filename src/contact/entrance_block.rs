@@ -46,7 +46,6 @@
 
 use super::polygon::ConvexPolygon;
 use super::report::{ContactReport, Feature, Features, Relation};
-use super::separated::separated_report;
 use super::tolerance::scale_tolerance;
 use super::vec2::Vec2;
 
@@ -313,7 +312,8 @@ pub(crate) fn contact_edge(a: &ConvexPolygon, b: &ConvexPolygon, c: Cover) -> Co
     }
 }
 
-/// A contact query answered during the walk, without storing the block:
+/// A contact query answered during the walk (for pairs the separated-pair
+/// exit did not settle, see [`crate::contact::contact_report`]), without storing the block:
 /// the same answers as `EntranceBlock::new(a, b).report()` for a single
 /// query (the block is worth building only to ask again). It keeps the
 /// cover farthest out (with its two neighbours) for the inside case and the
@@ -322,11 +322,7 @@ pub(crate) fn contact_edge(a: &ConvexPolygon, b: &ConvexPolygon, c: Cover) -> Co
 /// rather than by sharing an iterator or callback with
 /// [`EntranceBlock::new`]: both were tried, and at 64 vertices their
 /// bookkeeping cost as much as the geometry.
-pub fn contact_report(a: &ConvexPolygon, b: &ConvexPolygon) -> ContactReport {
-    let tolerance = pair_tolerance(a, b);
-    if let Some(report) = separated_report(a, b, tolerance) {
-        return report;
-    }
+pub(crate) fn walk_report(a: &ConvexPolygon, b: &ConvexPolygon, tolerance: f64) -> ContactReport {
     let (av, bv, na, nb) = (a.vertices(), b.vertices(), a.normals(), b.normals());
     let (n, m) = (av.len(), bv.len());
     let (mut i, mut j) = start_state(a, b);

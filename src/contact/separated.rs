@@ -34,7 +34,7 @@
 //! it, so the distance agrees with [`contact_report`]'s full walk to
 //! rounding (a proptest checks 1e-12 of the size, and the features).
 //!
-//! [`contact_report`]: super::entrance_block::contact_report
+//! [`contact_report`]: super::query::contact_report
 
 use super::entrance_block::{Cover, Step, contact_at, contact_edge, parallel};
 use super::polygon::ConvexPolygon;

@@ -32,7 +32,7 @@ pub enum Metric {
     PinDrift,
     /// Deepest interpenetration between any two scene objects over the run (m).
     MaxOverlap,
-    /// Share of the dynamic objects resting within [`crate::harness::behaviour::cases::GATHER_RADIUS`] of the table centre at the end.
+    /// Share of the dynamic objects resting within `GATHER_RADIUS` (13 cm) of the table centre at the end.
     Gathered,
 }
 

@@ -1,6 +1,6 @@
-//! TUIO: the protocol touch tables and trackers speak. [`decode`] turns
-//! packets into hands (pure; TUIO 1.1 there, 2.0 in [`tuio2`]), [`listener`]
-//! owns the UDP socket and the clock; [`protocol`] holds what both
+//! TUIO: the protocol touch tables and trackers speak. `decode` turns
+//! packets into hands (pure; TUIO 1.1 there, 2.0 in `tuio2`), `listener`
+//! owns the UDP socket and the clock; `protocol` holds what both
 //! versions share.
 
 mod decode;

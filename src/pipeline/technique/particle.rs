@@ -428,7 +428,7 @@ impl Technique for ParticleTechnique {
     }
 
     /// With culling, flow is needed only where a particle could reach
-    /// something movable (see [`SightReach::flow_interest`]); the reach is
+    /// something movable (see `SightReach::flow_interest`); the reach is
     /// kept for `apply` in the same frame (the world has not stepped since).
     fn flow_interest(&mut self, world: &World, sensor: &Sensor, dt: f32) -> FlowInterest {
         if !self.config.particle_cull {
