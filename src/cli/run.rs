@@ -9,8 +9,15 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 pub fn run(args: &RunArgs) -> super::CommandResult {
+    if let (Some(dir), Some(calibration)) = (&args.images, &args.calibration) {
+        return super::run_images::run(args, dir, calibration);
+    }
+    let Some(gesture_path) = &args.gesture else {
+        eprintln!("surfacelab run: give --gesture or --images");
+        return Ok(ExitCode::from(super::EXIT_USAGE));
+    };
     let scene = scene::load(&args.task)?;
-    let gesture = Gesture::load(&args.gesture)?;
+    let gesture = Gesture::load(gesture_path)?;
     let options = SessionOptions { measure_penetration: true, ..SessionOptions::default() };
     let mut session = Session::new(&scene, args.technique, options)?;
     let t0 = Instant::now();
@@ -19,11 +26,16 @@ pub fn run(args: &RunArgs) -> super::CommandResult {
     let report = RunReport::from_session(
         &session,
         args.feedback,
-        &args.gesture.display().to_string(),
+        &gesture_path.display().to_string(),
         t0.elapsed().as_secs_f64(),
     );
-    let json = serde_json::to_string_pretty(&report).context("writing the JSON report")?;
-    match &args.report {
+    write_report(&report, args.report.as_deref())
+}
+
+/// The report as JSON, to `path` (atomically) or standard output.
+pub(super) fn write_report(report: &RunReport, path: Option<&std::path::Path>) -> super::CommandResult {
+    let json = serde_json::to_string_pretty(report).context("writing the JSON report")?;
+    match path {
         Some(path) => {
             // Atomic: a full disk leaves the earlier report whole, not truncated.
             crate::files::write_atomic(path, (json + "\n").as_bytes())

@@ -84,6 +84,15 @@ impl FrameList {
     }
 }
 
+/// The first frame `FrameList::open` would play (the first row of
+/// `frames.csv`, or the first PNG by name but `skip`), unchecked: what
+/// `calibrate` reads the image size and bit depth from.
+pub fn first_frame(dir: &Path, skip: Option<&Path>) -> Result<PathBuf, ImagesError> {
+    let csv = dir.join(FRAMES_CSV);
+    let frames = if csv.is_file() { read_csv(&csv, dir)?.0 } else { list_pngs(dir, skip)? };
+    frames.into_iter().next().ok_or_else(|| ImagesError::NoFrames { dir: dir.display().to_string() })
+}
+
 /// A frame's header: it exists, is a grey PNG, has the calibration's size
 /// and a bit depth the camera kind accepts.
 pub fn check_frame(path: &Path, kind: CameraKind, size: [u32; 2]) -> Result<BitDepth, ImagesError> {

@@ -30,7 +30,7 @@ pub use calibration::{
 };
 pub use camera_image::{BitDepth, CameraImage, Pixels};
 pub use error::ImagesError;
-pub use frames::{FRAMES_CSV, FrameList, check_frame};
+pub use frames::{FRAMES_CSV, FrameList, check_frame, first_frame};
 pub use homography::{Homography, convex_in_order};
 pub use rectify::Rectifier;
 pub use sequence::ImageSequence;
