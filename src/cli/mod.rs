@@ -78,6 +78,12 @@ pub struct DemoArgs {
     /// Replay a gesture file as live input, from the start of the session.
     #[arg(long, value_name = "GESTURE_FILE")]
     pub script: Option<PathBuf>,
+    /// Play recorded camera frames (8/16-bit grey PNGs) as what the table sees, from the start of the session.
+    #[arg(long, value_name = "DIR", requires = "calibration", conflicts_with_all = ["script", "participant"])]
+    pub images: Option<PathBuf>,
+    /// The camera calibration (TOML) for --images.
+    #[arg(long, value_name = "FILE", requires = "images")]
+    pub calibration: Option<PathBuf>,
     #[command(flatten)]
     pub screenshot_after: ScreenshotAfter,
     /// Close the window after SECONDS.

@@ -7,7 +7,7 @@ use crate::pipeline::surface::{ContactImage, Sensor};
 use std::path::Path;
 
 /// A frames folder and its calibration, played against a session's clock.
-#[derive(Debug)]
+#[derive(Debug, Clone)]
 pub struct ImageSequence {
     frames: FrameList,
     calibration: Calibration,
