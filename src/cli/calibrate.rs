@@ -23,13 +23,12 @@ pub fn run(args: &CalibrateArgs) -> super::CommandResult {
         BitDepth::Sixteen => CameraKind::Depth,
         BitDepth::Eight => CameraKind::Ir,
     });
-    let table_points = match args.table_points {
-        Some(p) => p,
-        None => {
-            let s = scene::load(&args.task)?;
-            let (hw, hd) = (f64::from(s.table.width) / 2.0, f64::from(s.table.depth) / 2.0);
-            [[-hw, hd], [hw, hd], [hw, -hd], [-hw, -hd]]
-        }
+    let table_points = if let Some(p) = args.table_points {
+        p
+    } else {
+        let s = scene::load(&args.task)?;
+        let (hw, hd) = (f64::from(s.table.width) / 2.0, f64::from(s.table.depth) / 2.0);
+        [[-hw, hd], [hw, hd], [hw, -hd], [-hw, -hd]]
     };
     let conversion = match kind {
         CameraKind::Ir => {

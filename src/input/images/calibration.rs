@@ -219,8 +219,8 @@ struct RawCalibration {
     touch_band_mm: Option<Spanned<[f64; 2]>>,
 }
 
-fn at<T>(s: &Spanned<T>) -> Option<usize> {
-    Some(s.span().start)
+fn offset<T>(s: &Spanned<T>) -> usize {
+    s.span().start
 }
 
 /// Every rule of the format; `dir`: where to read a background (`None`:
@@ -229,7 +229,9 @@ fn check(r: &FieldReader<'_>, raw: &RawCalibration, dir: Option<&Path>) -> Resul
     match &raw.format {
         None => return Err(r.error(None, "format", format!("missing; expected \"{FORMAT}\"")).into()),
         Some(f) if f.get_ref().as_str() != Some(FORMAT) => {
-            return Err(r.error(at(f), "format", format!("expected \"{FORMAT}\", found {}", f.get_ref())).into());
+            return Err(r
+                .error(Some(offset(f)), "format", format!("expected \"{FORMAT}\", found {}", f.get_ref()))
+                .into());
         }
         Some(_) => {}
     }
@@ -237,7 +239,7 @@ fn check(r: &FieldReader<'_>, raw: &RawCalibration, dir: Option<&Path>) -> Resul
         None => return Err(r.error(None, "version", format!("missing; this build reads version {VERSION}")).into()),
         Some(v) if v.get_ref().as_integer() != Some(VERSION) => {
             let problem = format!("unsupported version {}; this build reads version {VERSION}", v.get_ref());
-            return Err(r.error(at(v), "version", problem).into());
+            return Err(r.error(Some(offset(v)), "version", problem).into());
         }
         Some(_) => {}
     }
@@ -246,14 +248,14 @@ fn check(r: &FieldReader<'_>, raw: &RawCalibration, dir: Option<&Path>) -> Resul
         "depth" => CameraKind::Depth,
         other => {
             return Err(r
-                .error(at(&raw.kind), "kind", format!("unknown kind \"{other}\"; expected ir or depth"))
+                .error(Some(offset(&raw.kind)), "kind", format!("unknown kind \"{other}\"; expected ir or depth"))
                 .into());
         }
     };
     let mut image_size = [0u32; 2];
     for (i, v) in raw.image_size.get_ref().iter().enumerate() {
         let field = format!("image_size[{i}]");
-        image_size[i] = r.in_range(at(&raw.image_size), &field, *v, 2, i64::from(MAX_SIDE_PX))? as u32;
+        image_size[i] = r.in_range(Some(offset(&raw.image_size)), &field, *v, 2, i64::from(MAX_SIDE_PX))? as u32;
     }
     let image_points = four(r, "image_points", &raw.image_points, f64::from(MAX_SIDE_PX) * 4.0)?;
     let table_points = four(r, "table_points", &raw.table_points, f64::from(bounds::POSITION_M))?;
@@ -265,7 +267,7 @@ fn check(r: &FieldReader<'_>, raw: &RawCalibration, dir: Option<&Path>) -> Resul
         return Err(not_convex(r, "table_points", &raw.table_points));
     }
     let image_to_table = Homography::from_points(&image_points, &table_points).ok_or_else(|| {
-        r.error(at(&raw.image_points), "image_points", "the points fix no homography onto table_points")
+        r.error(Some(offset(&raw.image_points)), "image_points", "the points fix no homography onto table_points")
     })?;
 
     let wrong_kind = |field: &str, s: Option<usize>| -> FieldError {
@@ -274,13 +276,13 @@ fn check(r: &FieldReader<'_>, raw: &RawCalibration, dir: Option<&Path>) -> Resul
     let conversion = match kind {
         CameraKind::Ir => {
             if let Some(v) = &raw.table_depth_mm {
-                return Err(wrong_kind("table_depth_mm", at(v)).into());
+                return Err(wrong_kind("table_depth_mm", Some(offset(v))).into());
             }
             if let Some(v) = &raw.touch_band_mm {
-                return Err(wrong_kind("touch_band_mm", at(v)).into());
+                return Err(wrong_kind("touch_band_mm", Some(offset(v))).into());
             }
             let threshold = match &raw.threshold {
-                Some(t) => r.in_range(at(t), "threshold", *t.get_ref(), 0, 254)? as u8,
+                Some(t) => r.in_range(Some(offset(t)), "threshold", *t.get_ref(), 0, 254)? as u8,
                 None => DEFAULT_THRESHOLD,
             };
             let background = match (&raw.background, dir) {
@@ -291,27 +293,27 @@ fn check(r: &FieldReader<'_>, raw: &RawCalibration, dir: Option<&Path>) -> Resul
         }
         CameraKind::Depth => {
             if let Some(v) = &raw.threshold {
-                return Err(wrong_kind("threshold", at(v)).into());
+                return Err(wrong_kind("threshold", Some(offset(v))).into());
             }
             if let Some(v) = &raw.background {
-                return Err(wrong_kind("background", at(v)).into());
+                return Err(wrong_kind("background", Some(offset(v))).into());
             }
             let Some(d) = &raw.table_depth_mm else {
                 return Err(r
                     .error(None, "table_depth_mm", "missing; kind \"depth\" needs the table's distance")
                     .into());
             };
-            let table_depth_mm = r.number(at(d), "table_depth_mm", *d.get_ref(), 1.0, 65535.0)? as f32;
+            let table_depth_mm = r.number(Some(offset(d)), "table_depth_mm", *d.get_ref(), 1.0, 65535.0)? as f32;
             let touch_band_mm = match &raw.touch_band_mm {
                 Some(b) => {
                     let [near, far] = *b.get_ref();
                     let far_max = f64::from(table_depth_mm);
-                    let near = r.number(at(b), "touch_band_mm[0]", near, 0.0, far_max)?;
-                    let far = r.number(at(b), "touch_band_mm[1]", far, 0.0, far_max)?;
+                    let near = r.number(Some(offset(b)), "touch_band_mm[0]", near, 0.0, far_max)?;
+                    let far = r.number(Some(offset(b)), "touch_band_mm[1]", far, 0.0, far_max)?;
                     if far <= near {
                         return Err(r
                             .error(
-                                at(b),
+                                Some(offset(b)),
                                 "touch_band_mm",
                                 format!("[{near}, {far}]: the far edge must exceed the near"),
                             )
@@ -322,7 +324,7 @@ fn check(r: &FieldReader<'_>, raw: &RawCalibration, dir: Option<&Path>) -> Resul
                 None => DEFAULT_TOUCH_BAND_MM,
             };
             if touch_band_mm[1] >= table_depth_mm {
-                let s = raw.touch_band_mm.as_ref().and_then(at);
+                let s = raw.touch_band_mm.as_ref().map(offset);
                 return Err(r.error(s, "touch_band_mm", "reaches the camera: it must end below table_depth_mm").into());
             }
             Conversion::Depth { table_depth_mm, touch_band_mm }
@@ -346,12 +348,12 @@ fn four(
 ) -> Result<[[f64; 2]; 4], ImagesError> {
     let v = raw.get_ref();
     if v.len() != 4 {
-        return Err(r.error(at(raw), field, format!("needs exactly 4 points, found {}", v.len())).into());
+        return Err(r.error(Some(offset(raw)), field, format!("needs exactly 4 points, found {}", v.len())).into());
     }
     let mut out = [[0.0; 2]; 4];
     for (i, p) in v.iter().enumerate() {
         for (j, c) in p.iter().enumerate() {
-            out[i][j] = r.number(at(raw), &format!("{field}[{i}][{j}]"), *c, -far, far)?;
+            out[i][j] = r.number(Some(offset(raw)), &format!("{field}[{i}][{j}]"), *c, -far, far)?;
         }
     }
     Ok(out)
@@ -359,7 +361,7 @@ fn four(
 
 fn not_convex(r: &FieldReader<'_>, field: &str, raw: &Spanned<Vec<[f64; 2]>>) -> ImagesError {
     r.error(
-        at(raw),
+        Some(offset(raw)),
         field,
         "the 4 points must be the corners of a convex quadrilateral, in order round it, no three on a line",
     )
@@ -373,7 +375,8 @@ fn background(
     size: [u32; 2],
 ) -> Result<Background, ImagesError> {
     let path = dir.join(name.get_ref());
-    let image = CameraImage::read(&path).map_err(|e| r.error(at(name), "background", crate::error::chain(&e)))?;
+    let image =
+        CameraImage::read(&path).map_err(|e| r.error(Some(offset(name)), "background", crate::error::chain(&e)))?;
     if [image.width, image.height] != size {
         let problem = format!(
             "{} is {}x{} pixels; image_size is {}x{}",
@@ -383,7 +386,7 @@ fn background(
             size[0],
             size[1]
         );
-        return Err(r.error(at(name), "background", problem).into());
+        return Err(r.error(Some(offset(name)), "background", problem).into());
     }
     Ok(Background { name: name.get_ref().clone(), image })
 }
