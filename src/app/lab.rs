@@ -10,6 +10,7 @@ use super::record::{Recording, timestamped};
 use super::scene_view::{self, ViewOptions};
 use super::stats::FrameStats;
 use crate::harness::study::TrialResult;
+use crate::input::images::ImageSequence;
 use crate::input::tuio::TuioListener;
 use crate::input::{Input, quantized};
 use crate::pipeline::technique::{TechniqueConfig, TechniqueKind};
@@ -40,6 +41,8 @@ pub struct Lab {
     step_requests: u32,
     clock: Clock,
     pub input: Input,
+    /// Recorded camera frames the session sees instead of the hands.
+    images: Option<ImageSequence>,
     recording: Option<Recording>,
     /// Folder under which gestures/ and screenshots/ are written.
     pub out_dir: PathBuf,
@@ -68,6 +71,7 @@ impl Lab {
             step_requests: 0,
             clock: Clock::new(f64::from(scene.physics.dt), MAX_STEPS_PER_FRAME),
             input: Input::new(options.script.clone(), tuio),
+            images: options.images.clone(),
             recording: None,
             out_dir: options.out_dir.clone(),
             stats: FrameStats::default(),
@@ -179,7 +183,19 @@ impl Lab {
             let t = self.session.time();
             let at = self.wall - f64::from(due - 1 - k) * spacing;
             let hands: Vec<_> = self.input.hands_at(at, t, table).iter().map(quantized).collect();
-            if let Err(e) = self.session.step(&hands) {
+            let stepped = match &mut self.images {
+                Some(frames) => {
+                    let sensor = *self.session.sensor();
+                    let dt = self.clock.dt();
+                    frames
+                        .image_at(t, dt, &sensor)
+                        .map_err(anyhow::Error::new)
+                        .and_then(|image| self.session.step_image(image).map_err(anyhow::Error::new))
+                        .map(|_| ())
+                }
+                None => self.session.step(&hands).map(|_| ()).map_err(anyhow::Error::new),
+            };
+            if let Err(e) = stepped {
                 self.paused = true;
                 self.say(format!("physics stopped: {e:#}"));
                 break;

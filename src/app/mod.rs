@@ -52,6 +52,8 @@ pub struct DemoOptions {
     pub tuio: Option<SocketAddr>,
     /// A gesture replayed as live input from session time 0.
     pub script: Option<Gesture>,
+    /// Recorded camera frames seen in place of hands, from session time 0.
+    pub images: Option<crate::input::images::ImageSequence>,
     /// Save what the window shows once this many seconds have passed.
     pub screenshot_after: Option<Screenshot>,
     /// Close after this many seconds (wall clock).
@@ -78,6 +80,7 @@ impl DemoOptions {
             contact_overlay: true,
             window_size: DEFAULT_WINDOW,
             tuio: None,
+            images: None,
             script: None,
             screenshot_after: None,
             quit_after: None,

@@ -4,6 +4,7 @@
 use super::{DemoArgs, EXIT_USAGE};
 use crate::app::{self, DemoOptions, ParticipantOptions};
 use crate::input::Gesture;
+use crate::input::images::ImageSequence;
 use crate::pipeline::technique::TechniqueKind;
 use clap::Parser;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
@@ -53,6 +54,11 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
     o.tuio = args.tuio.map(|port| SocketAddr::new(args.tuio_bind.unwrap_or(IpAddr::V4(Ipv4Addr::LOCALHOST)), port));
     if let Some(path) = &args.script {
         o.script = Some(Gesture::load(path).map_err(|e| format!("--script: {}", crate::error::chain(&e)))?);
+    }
+    if let (Some(dir), Some(calibration)) = (&args.images, &args.calibration) {
+        let frames =
+            ImageSequence::open(dir, calibration).map_err(|e| format!("--images: {}", crate::error::chain(&e)))?;
+        o.images = Some(frames);
     }
     o.screenshot_after.clone_from(&args.screenshot_after.0);
     o.quit_after = args.quit_after.map(f64::from);
@@ -125,6 +131,9 @@ mod tests {
         assert!(late.contains("--screenshot-after") && late.contains("`soon` is not a number of seconds"), "{late}");
         assert!(parse(&["--screenshot-after", "2"]).is_err(), "PATH is required");
         assert!(parse(&["--tuio-bind", "0.0.0.0"]).is_err());
+        assert!(parse(&["--images", "x"]).is_err(), "--images needs --calibration");
+        let missing = parse(&["--images", "no/such/dir", "--calibration", "no/such.toml"]).expect_err("missing");
+        assert!(missing.starts_with("--images: no/such.toml: cannot read"), "{missing}");
     }
 
     #[test]

@@ -3,14 +3,17 @@
 //! library modules, this layer only wires them together.
 
 mod behaviours;
+mod calibrate;
 mod contact;
 mod demo;
 mod display;
 mod doctor;
 mod failure;
 mod run;
+mod run_images;
 mod screenshot;
 mod study;
+mod synth_images;
 mod tradeoff;
 
 use crate::harness::study::Shard;
@@ -47,6 +50,10 @@ pub enum Command {
     Behaviours(BehavioursArgs),
     /// Print the GPU adapter, the display and the version.
     Doctor,
+    /// Write a camera calibration file for `--images` from four point pairs.
+    Calibrate(CalibrateArgs),
+    /// Write a gesture as the camera frames an infrared or depth camera would record.
+    SynthImages(SynthImagesArgs),
 }
 
 #[derive(Debug, Args)]
@@ -71,6 +78,12 @@ pub struct DemoArgs {
     /// Replay a gesture file as live input, from the start of the session.
     #[arg(long, value_name = "GESTURE_FILE")]
     pub script: Option<PathBuf>,
+    /// Play recorded camera frames (8/16-bit grey PNGs) as what the table sees, from the start of the session.
+    #[arg(long, value_name = "DIR", requires = "calibration", conflicts_with_all = ["script", "participant"])]
+    pub images: Option<PathBuf>,
+    /// The camera calibration (TOML) for --images.
+    #[arg(long, value_name = "FILE", requires = "images")]
+    pub calibration: Option<PathBuf>,
     #[command(flatten)]
     pub screenshot_after: ScreenshotAfter,
     /// Close the window after SECONDS.
@@ -96,9 +109,10 @@ pub struct DemoArgs {
     pub reps: Option<u32>,
 }
 
-/// Exactly one source of hands: a gesture file or a live TUIO stream.
+/// Exactly one source of hands: a gesture file, a live TUIO stream or
+/// recorded camera frames.
 #[derive(Debug, Args)]
-#[command(group(clap::ArgGroup::new("hands").required(true).args(["gesture", "tuio"])))]
+#[command(group(clap::ArgGroup::new("input").required(true).args(["gesture", "tuio", "images"])))]
 pub struct RunArgs {
     /// Scene name under tasks/ or a path to a scene file.
     #[arg(long)]
@@ -116,17 +130,23 @@ pub struct RunArgs {
     #[arg(long, value_name = "PORT", num_args = 0..=1, default_missing_value = "3333", requires = "seconds")]
     pub tuio: Option<u16>,
     /// Address the TUIO socket binds to (default 127.0.0.1; 0.0.0.0 for a tracker on another machine).
-    #[arg(long, value_name = "ADDR", conflicts_with = "gesture")]
+    #[arg(long, value_name = "ADDR", conflicts_with_all = ["gesture", "images"])]
     pub tuio_bind: Option<std::net::IpAddr>,
     /// With --tuio: seconds of real time to run for.
     // Not `requires = "tuio"`: with `--tuio` requiring it back, clap 4
     // let `--gesture F --seconds S` through. One of the two sources is
     // required, so refusing `--gesture` is the same rule.
-    #[arg(long, value_name = "S", value_parser = parse_seconds, conflicts_with = "gesture")]
+    #[arg(long, value_name = "S", value_parser = parse_seconds, conflicts_with_all = ["gesture", "images"])]
     pub seconds: Option<f32>,
     /// With --tuio: save what arrived as a gesture file that `run --gesture` replays.
-    #[arg(long, value_name = "FILE", conflicts_with = "gesture")]
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["gesture", "images"])]
     pub record: Option<PathBuf>,
+    /// A folder of recorded camera frames (8/16-bit grey PNGs) to play instead of a gesture.
+    #[arg(long, value_name = "DIR", requires = "calibration")]
+    pub images: Option<PathBuf>,
+    /// The camera calibration (TOML) for --images.
+    #[arg(long, value_name = "FILE", requires = "images")]
+    pub calibration: Option<PathBuf>,
     /// Where to write the JSON report (default: standard output).
     #[arg(long)]
     pub report: Option<PathBuf>,
@@ -335,6 +355,64 @@ pub struct ScreenshotArgs {
 }
 
 #[derive(Debug, Args)]
+pub struct CalibrateArgs {
+    /// The frames folder; its first frame (name order) gives the image size and bit depth.
+    #[arg(long, value_name = "DIR")]
+    pub images: PathBuf,
+    /// The calibration file to write.
+    #[arg(long, value_name = "FILE.toml")]
+    pub out: PathBuf,
+    /// Where the four table points appear in the image, pixels: "x,y x,y x,y x,y".
+    /// (Required: the four-clicks window is not built.)
+    #[arg(long, value_name = "\"x,y x,y x,y x,y\"", value_parser = calibrate::parse_points)]
+    pub points: [[f64; 2]; 4],
+    /// The four table points, metres, same order (default: the table's corners from --task,
+    /// far-left, far-right, near-right, near-left).
+    #[arg(long, value_name = "\"x,y x,y x,y x,y\"", value_parser = calibrate::parse_points)]
+    pub table_points: Option<[[f64; 2]; 4]>,
+    /// The scene whose table corners are the default --table-points.
+    #[arg(long, default_value = "positioning")]
+    pub task: String,
+    /// ir or depth (default: depth for 16-bit frames, ir for 8-bit).
+    #[arg(long, value_enum)]
+    pub kind: Option<crate::input::images::CameraKind>,
+    /// ir: a background image, as written into the file (relative to the file's folder).
+    #[arg(long, value_name = "FILE")]
+    pub background: Option<String>,
+    /// ir: grey levels above the background that count as contact (default 40).
+    #[arg(long)]
+    pub threshold: Option<u8>,
+    /// depth: the table's distance from the camera (default: the first frame's median reading).
+    #[arg(long, value_name = "MM")]
+    pub table_depth_mm: Option<f32>,
+    /// depth: heights above the table that touch, "near,far" (default 4,30).
+    #[arg(long, value_name = "NEAR,FAR", value_parser = calibrate::parse_band)]
+    pub touch_band_mm: Option<[f32; 2]>,
+}
+
+#[derive(Debug, Args)]
+pub struct SynthImagesArgs {
+    /// Scene name under tasks/ or a path to a scene file (its table and frame rate).
+    #[arg(long)]
+    pub task: String,
+    /// The gesture to film.
+    #[arg(long)]
+    pub gesture: PathBuf,
+    /// ir (8-bit, from under the glass) or depth (16-bit millimetres, from above).
+    #[arg(long, value_enum, default_value_t = crate::input::images::CameraKind::Ir)]
+    pub kind: crate::input::images::CameraKind,
+    /// Seed of the sensor noise.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Camera image size, `WIDTHxHEIGHT`.
+    #[arg(long, default_value = "640x480", value_parser = screenshot::parse_size)]
+    pub size: (u32, u32),
+    /// Folder to write frames, calibration.toml and background.png into (created).
+    #[arg(long)]
+    pub out: PathBuf,
+}
+
+#[derive(Debug, Args)]
 pub struct ContactArgs {
     /// JSON file with `{"a": [[x,y],...], "b": [[x,y],...]}`, or - for standard input.
     #[arg(default_value = "-")]
@@ -400,6 +478,8 @@ fn run(command: Command) -> CommandResult {
         Command::Contact(args) => Ok(contact::run(&args)),
         Command::Tradeoff(args) => tradeoff::run(&args),
         Command::Behaviours(args) => behaviours::run(&args),
+        Command::Calibrate(args) => calibrate::run(&args),
+        Command::SynthImages(args) => synth_images::run(&args),
     }
 }
 

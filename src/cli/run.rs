@@ -1,5 +1,6 @@
-//! `surfacelab run`: replay one gesture headless, or run in real time from
-//! a live TUIO stream, and write a JSON report.
+//! `surfacelab run`: replay one gesture headless, run in real time from a
+//! live TUIO stream, or play recorded camera frames (`run_images.rs`), and
+//! write a JSON report.
 
 use super::RunArgs;
 use crate::app::record::Recording;
@@ -13,6 +14,9 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 pub fn run(args: &RunArgs) -> super::CommandResult {
+    if let (Some(dir), Some(calibration)) = (&args.images, &args.calibration) {
+        return super::run_images::run(args, dir, calibration);
+    }
     let scene = scene::load(&args.task)?;
     let options = SessionOptions { measure_penetration: true, ..SessionOptions::default() };
     let mut session = Session::new(&scene, args.technique, options)?;
@@ -36,8 +40,13 @@ pub fn run(args: &RunArgs) -> super::CommandResult {
         }
     };
     let report = RunReport::from_session(&session, args.feedback, &source, t0.elapsed().as_secs_f64());
-    let json = serde_json::to_string_pretty(&report).context("writing the JSON report")?;
-    match &args.report {
+    write_report(&report, args.report.as_deref())
+}
+
+/// The report as JSON, to `path` (atomically) or standard output.
+pub(super) fn write_report(report: &RunReport, path: Option<&std::path::Path>) -> super::CommandResult {
+    let json = serde_json::to_string_pretty(report).context("writing the JSON report")?;
+    match path {
         Some(path) => {
             // Atomic: a full disk leaves the earlier report whole, not truncated.
             crate::files::write_atomic(path, (json + "\n").as_bytes())

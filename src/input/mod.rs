@@ -7,8 +7,11 @@
 //! - [`Gesture`]: gesture files (recorded or written by hand) replayed frame by frame;
 //!   [`GestureRecorder`] writes them.
 //! - [`Input`]: the demo's sources merged into one list per physics step.
+//! - [`images`]: recorded camera frames and their calibration, rectified into
+//!   contact images (not hands: a camera sees the contact image itself).
 
 mod gesture;
+pub mod images;
 mod mouse;
 mod sources;
 pub mod tuio;

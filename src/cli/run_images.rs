@@ -1,0 +1,31 @@
+//! `surfacelab run --images DIR --calibration FILE`: a recorded camera
+//! sequence played headless, one frame per physics step, and the same JSON
+//! report as a gesture replay (its `gesture` field names the folder).
+
+use super::RunArgs;
+use crate::input::images::ImageSequence;
+use crate::scene;
+use crate::session::{RunReport, Session, SessionOptions};
+use std::path::Path;
+use std::time::Instant;
+
+pub fn run(args: &RunArgs, dir: &Path, calibration: &Path) -> super::CommandResult {
+    let scene = scene::load(&args.task)?;
+    // Every frame's header is checked here, before the first step.
+    let mut frames = ImageSequence::open(dir, calibration)?;
+    let options = SessionOptions { measure_penetration: true, ..SessionOptions::default() };
+    let mut session = Session::new(&scene, args.technique, options)?;
+    let dt = f64::from(session.world().dt());
+    let sensor = *session.sensor();
+    let t0 = Instant::now();
+    // The whole sequence, then a short settle (an empty table) so released
+    // objects come to rest: the steps a gesture of the same length gets.
+    let until = frames.duration(dt) + f64::from(args.settle);
+    while session.time() + 0.5 * dt < until {
+        let image = frames.image_at(session.time(), dt, &sensor)?;
+        session.step_image(image)?;
+    }
+    let report =
+        RunReport::from_session(&session, args.feedback, &dir.display().to_string(), t0.elapsed().as_secs_f64());
+    super::run::write_report(&report, args.report.as_deref())
+}

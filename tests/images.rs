@@ -1,0 +1,87 @@
+//! Recorded camera frames drive the pipeline as the hands they show do:
+//! a gesture filmed by the synthetic infrared and depth cameras
+//! (perspective, blur, glow, vignetting, background, noise) and played back
+//! through calibration and rectification moves the box as the gesture
+//! itself does.
+
+use surfacelab::input::Gesture;
+use surfacelab::input::images::{CameraKind, ImageSequence, Synthesizer, write_sequence};
+use surfacelab::pipeline::surface::Sensor;
+use surfacelab::pipeline::technique::TechniqueKind;
+use surfacelab::scene;
+use surfacelab::scene::ObjectId;
+use surfacelab::session::{Session, SessionOptions};
+
+fn asset(path: &str) -> String {
+    format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))
+}
+
+const SETTLE_S: f64 = 0.5;
+
+/// The box's path, one position per step, under the gesture and under its
+/// filmed frames; the frames' folder is written with the synthetic camera.
+fn paths(gesture: &str, kind: CameraKind, technique: TechniqueKind) -> (Vec<glam::Vec2>, Vec<glam::Vec2>) {
+    let scene = scene::load(&asset("tasks/cases/one_box.toml")).expect("scene");
+    let g = Gesture::load(asset(&format!("assets/gestures/{gesture}.toml"))).expect("gesture");
+    let options = SessionOptions::default();
+    let sensor = Sensor::new(options.sensor_px.0, options.sensor_px.1, scene.table.width, scene.table.depth);
+    let dir = tempfile::tempdir().expect("dir");
+    let synth = Synthesizer::new(kind, &sensor, [640, 480], 11).expect("camera");
+    let dt = f64::from(scene.physics.dt);
+    let written = write_sequence(&g, &sensor, &options.raster, dt, &synth, dir.path()).expect("frames");
+    assert!(written.frames > 100, "{} frames", written.frames);
+
+    let mut frames = ImageSequence::open(dir.path(), &dir.path().join("calibration.toml")).expect("sequence");
+    let until = frames.duration(dt) + SETTLE_S;
+    let box_at = |s: &Session| s.world().object_pose(ObjectId::new(0)).position.truncate();
+
+    let mut seen = Session::new(&scene, technique, SessionOptions::default()).expect("session");
+    let mut filmed = Session::new(&scene, technique, SessionOptions::default()).expect("session");
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    while seen.time() + 0.5 * dt < until {
+        seen.step(&g.sample(seen.time())).expect("step");
+        let image = frames.image_at(filmed.time(), dt, &sensor).expect("frame");
+        filmed.step_image(image).expect("step");
+        a.push(box_at(&seen));
+        b.push(box_at(&filmed));
+    }
+    (a, b)
+}
+
+/// The box's travel under the gesture, how far the filmed run's final
+/// position is from the gesture's, and the largest gap along the way.
+fn compare(gesture: &str, kind: CameraKind, technique: TechniqueKind) -> (f32, f32, f32) {
+    let (a, b) = paths(gesture, kind, technique);
+    let travel = (a[a.len() - 1] - a[0]).length();
+    let end = (a[a.len() - 1] - b[b.len() - 1]).length();
+    let worst = a.iter().zip(&b).map(|(p, q)| (*p - *q).length()).fold(0.0f32, f32::max);
+    println!(
+        "{gesture} {kind:?} {technique:?}: travel {travel:.4} m, end {end:.4} m ({:.1}%), worst {worst:.4} m ({:.1}%)",
+        100.0 * end / travel,
+        100.0 * worst / travel
+    );
+    (travel, end, worst)
+}
+
+/// A drag: the side of the hand pushes the box 17 cm forward. Joint
+/// technique (Particle agrees as closely here; Joint is the drag's technique).
+#[test]
+fn an_edge_push_filmed_moves_the_box_as_the_gesture_does() {
+    for kind in [CameraKind::Ir, CameraKind::Depth] {
+        let (travel, end, worst) = compare("edge_push", kind, TechniqueKind::Joint);
+        assert!(travel > 0.12, "{kind:?}: the box travelled only {travel} m");
+        assert!(end < 0.1 * travel && worst < 0.1 * travel, "{kind:?}: off by {end} m at the end, {worst} m at worst");
+    }
+}
+
+/// A flat-hand sweep carries the box 39 cm, under Particle (the paper's
+/// technique for sweeping; Proxy moves the box only 6 cm with this hand,
+/// which would make a 10% bound a few millimetres).
+#[test]
+fn a_flat_hand_sweep_filmed_moves_the_box_as_the_gesture_does() {
+    for kind in [CameraKind::Ir, CameraKind::Depth] {
+        let (travel, end, worst) = compare("flat_hand_sweep", kind, TechniqueKind::Particle);
+        assert!(travel > 0.3, "{kind:?}: the box travelled only {travel} m");
+        assert!(end < 0.1 * travel && worst < 0.1 * travel, "{kind:?}: off by {end} m at the end, {worst} m at worst");
+    }
+}
