@@ -15,7 +15,8 @@ use std::time::{Duration, Instant};
 
 pub fn run(args: &RunArgs) -> super::CommandResult {
     if let (Some(dir), Some(calibration)) = (&args.images, &args.calibration) {
-        return super::run_images::run(args, dir, calibration);
+        let report = super::run_images::play(args, dir, calibration)?;
+        return write_report(&report, args.report.as_deref());
     }
     let scene = scene::load(&args.task)?;
     let options = SessionOptions { measure_penetration: true, ..SessionOptions::default() };
@@ -44,7 +45,7 @@ pub fn run(args: &RunArgs) -> super::CommandResult {
 }
 
 /// The report as JSON, to `path` (atomically) or standard output.
-pub(super) fn write_report(report: &RunReport, path: Option<&std::path::Path>) -> super::CommandResult {
+fn write_report(report: &RunReport, path: Option<&std::path::Path>) -> super::CommandResult {
     let json = serde_json::to_string_pretty(report).context("writing the JSON report")?;
     match path {
         Some(path) => {

@@ -9,7 +9,8 @@ use crate::session::{RunReport, Session, SessionOptions};
 use std::path::Path;
 use std::time::Instant;
 
-pub fn run(args: &RunArgs, dir: &Path, calibration: &Path) -> super::CommandResult {
+/// Plays the frames in `dir` through the `--task` scene and reports.
+pub fn play(args: &RunArgs, dir: &Path, calibration: &Path) -> Result<RunReport, super::Failure> {
     let scene = scene::load(&args.task)?;
     // Every frame's header is checked here, before the first step.
     let mut frames = ImageSequence::open(dir, calibration)?;
@@ -25,7 +26,5 @@ pub fn run(args: &RunArgs, dir: &Path, calibration: &Path) -> super::CommandResu
         let image = frames.image_at(session.time(), dt, &sensor)?;
         session.step_image(image)?;
     }
-    let report =
-        RunReport::from_session(&session, args.feedback, &dir.display().to_string(), t0.elapsed().as_secs_f64());
-    super::run::write_report(&report, args.report.as_deref())
+    Ok(RunReport::from_session(&session, args.feedback, &dir.display().to_string(), t0.elapsed().as_secs_f64()))
 }
