@@ -70,7 +70,7 @@ impl StudyError {
 /// What to do with a `trials.csv` whose `run.toml` is gone: its design is
 /// unknown, so it cannot be resumed; the same flags reproduce its rows.
 pub(crate) fn orphan_advice(dir: &std::path::Path) -> String {
-    if dir.join(super::output::RUN_TOML).exists() || !dir.join(super::output::TRIALS_CSV).exists() {
+    if dir.join(super::folder::RUN_TOML).exists() || !dir.join(super::folder::TRIALS_CSV).exists() {
         return String::new();
     }
     format!(

@@ -26,13 +26,7 @@ use std::fs::{File, OpenOptions};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-pub const RUN_TOML: &str = "run.toml";
-pub const TRIALS_CSV: &str = "trials.csv";
-pub const ERRORS_LOG: &str = "errors.log";
-pub const SUMMARY_CSV: &str = "summary.csv";
-pub const STRATEGIES_CSV: &str = "strategies.csv";
-pub const FIGURE_PNG: &str = "figure.png";
-pub const FIGURE_SVG: &str = "figure.svg";
+pub use super::folder::{ERRORS_LOG, FIGURE_PNG, FIGURE_SVG, RUN_TOML, STRATEGIES_CSV, SUMMARY_CSV, TRIALS_CSV};
 
 /// The version written into every row and into `run.toml`.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

@@ -9,7 +9,7 @@
 //! normalising makes the values of one subject correlated. The half-width
 //! of condition `c` is `t(0.975, n − 1) · sd_c · √(C / (C − 1)) / √n`.
 
-use super::summary::t_quantile_975;
+use super::t_quantile::t_quantile_975;
 
 /// Half-widths of the 95% CIs, one per condition, for `values[subject][condition]`
 /// (every subject has every condition). `None` for every condition when
