@@ -32,7 +32,10 @@ pub trait Kind {
 pub fn io_kind(e: &std::io::Error) -> ErrorKind {
     use std::io::ErrorKind as Io;
     match e.kind() {
-        Io::NotFound | Io::InvalidData | Io::IsADirectory | Io::NotADirectory => ErrorKind::BadInput,
+        // A file that ends early (a truncated frame or file) is bad input too.
+        Io::NotFound | Io::InvalidData | Io::UnexpectedEof | Io::IsADirectory | Io::NotADirectory => {
+            ErrorKind::BadInput
+        }
         _ => ErrorKind::Runtime,
     }
 }
@@ -68,6 +71,7 @@ mod tests {
         let io = |k| std::io::Error::new(k, "x");
         assert_eq!(io_kind(&io(std::io::ErrorKind::NotFound)), ErrorKind::BadInput);
         assert_eq!(io_kind(&io(std::io::ErrorKind::InvalidData)), ErrorKind::BadInput);
+        assert_eq!(io_kind(&io(std::io::ErrorKind::UnexpectedEof)), ErrorKind::BadInput, "a truncated file");
         assert_eq!(io_kind(&io(std::io::ErrorKind::PermissionDenied)), ErrorKind::Runtime);
         assert_eq!(io_kind(&io(std::io::ErrorKind::StorageFull)), ErrorKind::Runtime);
     }

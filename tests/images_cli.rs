@@ -127,6 +127,10 @@ fn bad_frames_are_named_and_exit_2() {
     // Unreadable.
     std::fs::write(&frame, b"\x89PNG\r\n\x1a\ntruncated").expect("write");
     expect_2(&frames, &calibration, "frame_00050.png: not a readable PNG image");
+    // Cut short after a whole header: found while playing, still bad input.
+    let whole = std::fs::read(frames.join("frame_00049.png")).expect("read");
+    std::fs::write(&frame, &whole[..100]).expect("write");
+    expect_2(&frames, &calibration, "frame_00050.png: not a readable PNG image");
     // Missing, named by frames.csv.
     std::fs::write(frames.join("frames.csv"), "file,t_s\nframe_00000.png,0\nframe_99999.png,0.1\n").expect("csv");
     expect_2(&frames, &calibration, "frame_99999.png: cannot read");

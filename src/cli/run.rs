@@ -79,8 +79,10 @@ fn write_report(report: &RunReport, path: Option<&std::path::Path>) -> super::Co
 fn live(session: &mut Session, addr: SocketAddr, args: &RunArgs) -> anyhow::Result<SocketAddr> {
     let listener = TuioListener::bind(addr).with_context(|| format!("--tuio: cannot listen on UDP {addr}"))?;
     let listened = listener.local_addr();
-    let seconds = f64::from(args.seconds.unwrap_or(0.0));
-    eprintln!("surfacelab run: listening for TUIO on {listened} for {seconds} s");
+    let shown = args.seconds.unwrap_or(0.0);
+    let seconds = f64::from(shown);
+    // As given (0.2, not the f32's 0.20000000298023224).
+    eprintln!("surfacelab run: listening for TUIO on {listened} for {shown} s");
     let table = [session.scene().table.width, session.scene().table.depth];
     let dt = f64::from(session.world().dt());
     let steps = (seconds / dt).round() as u64;
