@@ -39,7 +39,7 @@ stop() {
       as_root kill "$(cat "$dir/$f.pid")" || true
     fi
   done
-  say "stopped (state kept in $dir)"
+  say "stopped ($dir)"
 }
 
 if [ "${1:-start}" = stop ]; then stop; exit 0; fi
@@ -75,7 +75,12 @@ for _ in $(seq 1 20); do
   sleep 0.5
 done
 
-# 3. Configuration and keys in the folder.
+# 3. Configuration and keys in the folder. The accounting database and the
+# controller's saved state are started afresh every time: they hold nothing a
+# later start needs (the cluster is registered again below), and a machine
+# stopped mid-write leaves InnoDB files that MariaDB refuses to open
+# ("Data structure corruption"), which used to make every later start fail.
+as_root rm -rf "$dir/mysql" "$dir/ctld" "$dir/spool"
 as_root mkdir -p "$dir/munge" "$dir/ctld" "$dir/spool" "$dir/mysql"
 as_root chmod 700 "$dir/munge"
 if [ ! -s "$dir/munge/munge.key" ]; then

@@ -23,7 +23,11 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      cylinder's caps, for contact manifolds, as a square inscribed in them and turned towards each contact, so it \
      rocks under a push at its top; with a 24-sided convex hull instead the particles grip, and tip it over (90 \
      degrees), as Proxy's cube then does too (98): 1.5 N of press at mu = 1.5 pulls harder at the top than the 1.5 N \
-     that tips a cylinder as tall as it is wide";
+     that tips a cylinder as tall as it is wide. The friction values are not the cause: its base friction on the \
+     platform (0.4, the mean of 0.5 and 0.3) is below its radius over its height (0.5), so a top that sticks to the \
+     finger slides it before tipping it; particles that slip over the top pull with their full friction instead \
+     (1.5 x 1.5 N = 2.25 N, particles combining friction by the larger coefficient), above the 1.49 N that tips it, \
+     and the rocking cap makes them slip";
 const FINGERTIP_FRICTION: &str = "two fingertips twisting 90 degrees about the box centre turn it 21: their particles \
      slide over the top at full friction (measured: 4.2 N of friction on 3.0 N of press, mu 1.41) about 1.9 cm from \
      the centre, but rapier holds the box on the table by four contact points at its corners, 4.2 cm out, so the \
