@@ -289,3 +289,53 @@ fn ctrl_c_ends_the_demo_with_its_summary() {
     assert!(out.status.success(), "{report}");
     assert!(stderr.contains("frames, mean frame"), "no summary line\n{report}");
 }
+
+/// `calibrate` without `--points` opens the first frame in a window; four
+/// real clicks (XTEST, through xdotool), one taken back with Backspace and
+/// clicked again, and Enter write the calibration with exactly the clicked
+/// camera pixels (the window shows the 640x480 frame one to one).
+#[test]
+fn calibrate_takes_four_clicks_on_the_first_frame() {
+    require("xdotool", "xdotool");
+    let dir = work_dir("calibrate_window");
+    let frames = dir.join("frames");
+    std::fs::create_dir_all(&frames).expect("frames folder");
+    // A dim frame with a bright quadrilateral, as an infrared camera sees a lit table.
+    let frame = image::GrayImage::from_fn(640, 480, |x, y| {
+        image::Luma([if (60..580).contains(&x) && (50..440).contains(&y) { 90 } else { 20 }])
+    });
+    frame.save(frames.join("0000.png")).expect("frame");
+    let clicks = [[100, 80], [540, 90], [600, 420], [40, 400]];
+    let click = |p: [u32; 2]| format!("xdotool mousemove --window \"$wid\" {} {} click 1; sleep 0.4", p[0], p[1]);
+    let script = format!(
+        "'{BIN}' calibrate --images frames --out cal.toml --task sorting > calibrate.log 2>&1 &
+        pid=$!
+        wid=$(timeout 60 xdotool search --sync --onlyvisible --name 'surfacelab calibrate' | head -n 1)
+        [ -n \"$wid\" ] || {{ echo 'no window'; kill $pid; exit 3; }}
+        sleep 2
+        xdotool windowfocus --sync \"$wid\"
+        {}; {}; {}; {}
+        xdotool key BackSpace; sleep 0.4
+        {}
+        xdotool key Return
+        wait $pid; echo \"calibrate exit $?\"; cat calibrate.log",
+        click(clicks[0]),
+        click(clicks[1]),
+        click(clicks[2]),
+        click([300, 300]),
+        click(clicks[3]),
+    );
+    let out = under_xvfb(&dir, &script);
+    let report = format!(
+        "exit: {:?}\nstdout: {}\nstderr: {}",
+        out.status,
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("calibrate exit 0"), "{report}");
+    let cal = std::fs::read_to_string(dir.join("cal.toml")).unwrap_or_else(|e| panic!("cal.toml: {e}\n{report}"));
+    let expected = "image_points = [[100.0, 80.0], [540.0, 90.0], [600.0, 420.0], [40.0, 400.0]]";
+    assert!(cal.contains(expected), "{cal}\n{report}");
+    // The sorting table's corners, far-left first.
+    assert!(cal.contains("table_points = [[-"), "{cal}");
+}

@@ -10,9 +10,8 @@ use super::record::{Recording, timestamped};
 use super::scene_view::{self, ViewOptions};
 use super::stats::FrameStats;
 use crate::harness::study::TrialResult;
-use crate::input::images::ImageSequence;
 use crate::input::tuio::TuioListener;
-use crate::input::{Input, quantized};
+use crate::input::{CameraInput, Input, quantized};
 use crate::pipeline::technique::{TechniqueConfig, TechniqueKind};
 use crate::render::{self, DrawList, GpuContext};
 use crate::scene::{self, Goal, Scene};
@@ -41,8 +40,8 @@ pub struct Lab {
     step_requests: u32,
     clock: Clock,
     pub input: Input,
-    /// Recorded camera frames the session sees instead of the hands.
-    images: Option<ImageSequence>,
+    /// Camera frames the session sees instead of the hands.
+    camera: Option<CameraInput>,
     recording: Option<Recording>,
     /// Folder under which gestures/ and screenshots/ are written.
     pub out_dir: PathBuf,
@@ -55,7 +54,9 @@ pub struct Lab {
 }
 
 impl Lab {
-    pub fn new(options: &DemoOptions) -> anyhow::Result<Self> {
+    /// The demo's state for `options`; `camera` is `options.camera`, taken
+    /// out by the caller (it owns a capture thread and is not cloned).
+    pub fn new(options: &DemoOptions, camera: Option<CameraInput>) -> anyhow::Result<Self> {
         let scene = scene::load(&options.task)?;
         let session = Session::new(&scene, options.technique, SessionOptions::default())?;
         let tuio = options
@@ -71,7 +72,7 @@ impl Lab {
             step_requests: 0,
             clock: Clock::new(f64::from(scene.physics.dt), MAX_STEPS_PER_FRAME),
             input: Input::new(options.script.clone(), tuio),
-            images: options.images.clone(),
+            camera,
             recording: None,
             out_dir: options.out_dir.clone(),
             stats: FrameStats::default(),
@@ -183,12 +184,13 @@ impl Lab {
             let t = self.session.time();
             let at = self.wall - f64::from(due - 1 - k) * spacing;
             let hands: Vec<_> = self.input.hands_at(at, t, table).iter().map(quantized).collect();
-            let stepped = match &mut self.images {
-                Some(frames) => {
+            let stepped = match &mut self.camera {
+                Some(camera) => {
                     let sensor = *self.session.sensor();
                     let dt = self.clock.dt();
-                    frames
-                        .image_at(t, dt, &sensor)
+                    let instant = self.input.instant_at(at);
+                    camera
+                        .image_at(t, dt, instant, &sensor)
                         .map_err(anyhow::Error::new)
                         .and_then(|image| self.session.step_image(image).map_err(anyhow::Error::new))
                         .map(|_| ())
@@ -426,7 +428,7 @@ mod tests {
     fn a_recording_replays_the_live_run_bit_for_bit() {
         let dir = std::env::temp_dir().join(format!("surfacelab-lab-{}", std::process::id()));
         let path = dir.join("sort.toml");
-        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle)).expect("opens");
+        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle), None).expect("opens");
         lab.start_recording(Some(path.clone())).expect("starts");
         let mut events = Events::new();
         let shift = |on: bool| MouseEvent::Modifiers(Modifiers { shift: on, ..Modifiers::default() });
@@ -465,7 +467,7 @@ mod tests {
     fn a_drag_at_8_fps_moves_the_box_as_far_as_at_60() {
         for technique in [TechniqueKind::Particle, TechniqueKind::Proxy] {
             let moved = |fps: f64| {
-                let mut lab = Lab::new(&DemoOptions::new("tasks/cases/one_box.toml", technique)).expect("opens");
+                let mut lab = Lab::new(&DemoOptions::new("tasks/cases/one_box.toml", technique), None).expect("opens");
                 let mut events = Events::new();
                 drag(&mut events, 0.3, [-0.05, 0.0], [0.22, 0.0], 1.5);
                 play(&mut lab, &events, fps, 3.0);
@@ -482,7 +484,7 @@ mod tests {
     /// lag of a stall before it is forgotten.
     #[test]
     fn reset_shows_the_hint_again_and_forgets_the_lag() {
-        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle)).expect("opens");
+        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle), None).expect("opens");
         assert!(lab.hint().is_some(), "a new task shows its hint");
         lab.wall = 20.0;
         lab.advance(2.0); // a two-second stall: most of it dropped
@@ -497,7 +499,7 @@ mod tests {
 
     #[test]
     fn the_view_always_fits_the_whole_table() {
-        let lab = Lab::new(&DemoOptions::new("positioning", TechniqueKind::Joint)).expect("opens");
+        let lab = Lab::new(&DemoOptions::new("positioning", TechniqueKind::Joint), None).expect("opens");
         for size in [[960, 800], [1280, 800], [400, 900], [1600, 400]] {
             let list = lab.draw_list(size);
             let camera = crate::render::CameraMatrices::for_draw_list(&list, size);

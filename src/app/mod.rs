@@ -12,12 +12,14 @@
 //! - `input`: mouse, touch, TUIO and scripted hands merged; `tuio`: the UDP listener.
 //! - [`record`]: gesture recording; `participant`: study trials and their rows.
 //! - [`capture`]: reading back the window for `--screenshot-after`.
+//! - [`point_picker`]: `calibrate`'s window, four clicks on a camera frame.
 
 pub mod capture;
 pub mod clock;
 pub mod lab;
 pub mod panel;
 pub mod participant_mode;
+pub mod point_picker;
 pub mod record;
 pub mod scene_view;
 pub mod stats;
@@ -38,7 +40,7 @@ use std::path::PathBuf;
 pub const DEFAULT_WINDOW: [u32; 2] = [1280, 800];
 
 /// The demo's validated choices (the CLI builds them from its flags).
-#[derive(Debug, Clone)]
+#[derive(Debug)]
 pub struct DemoOptions {
     /// A scene name under `tasks/` or a path.
     pub task: String,
@@ -52,8 +54,9 @@ pub struct DemoOptions {
     pub tuio: Option<SocketAddr>,
     /// A gesture replayed as live input from session time 0.
     pub script: Option<Gesture>,
-    /// Recorded camera frames seen in place of hands, from session time 0.
-    pub images: Option<crate::input::images::ImageSequence>,
+    /// Camera frames seen in place of hands: recorded (from session time
+    /// 0) or live. The window hands it to its [`Lab`](lab::Lab).
+    pub camera: Option<crate::input::CameraInput>,
     /// Save what the window shows once this many seconds have passed.
     pub screenshot_after: Option<Screenshot>,
     /// Close after this many seconds (wall clock).
@@ -80,7 +83,7 @@ impl DemoOptions {
             contact_overlay: true,
             window_size: DEFAULT_WINDOW,
             tuio: None,
-            images: None,
+            camera: None,
             script: None,
             screenshot_after: None,
             quit_after: None,

@@ -416,7 +416,7 @@ mod tests {
     fn tuio_counters_show_without_scrolling() {
         let mut options = DemoOptions::new("sorting", TechniqueKind::Particle);
         options.tuio = Some("127.0.0.1:0".parse().expect("an address"));
-        let mut lab = Lab::new(&options).expect("opens with a TUIO listener");
+        let mut lab = Lab::new(&options, None).expect("opens with a TUIO listener");
         let texts = visible_texts(&egui::Context::default(), &mut lab, &mut PanelState::new());
         for wanted in ["0 cursors, 0 blobs", "0 (0 malformed, 0 other profiles)", "0 late, 0 restarts"] {
             assert!(texts.iter().any(|(t, _)| t == wanted), "`{wanted}` not on screen; visible: {texts:?}");
@@ -427,7 +427,7 @@ mod tests {
     /// [`NUMBERS_REFRESH_S`], so the panel's pixels stay the same between.
     #[test]
     fn numbers_refresh_twice_a_second() {
-        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle)).expect("opens");
+        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle), None).expect("opens");
         let (ctx, mut state) = (egui::Context::default(), PanelState::new());
         let frame_line = |texts: &[(String, f32)]| {
             texts.iter().find(|(t, _)| t.ends_with("fps")).map(|(t, _)| t.clone()).expect("the frame line")

@@ -31,8 +31,9 @@ const PIXELS_PER_NOTCH: f64 = 40.0;
 
 /// Opens the window and runs until it is closed (or `--quit-after`, or the
 /// last participant trial).
-pub fn run(options: DemoOptions) -> anyhow::Result<()> {
-    let lab = Lab::new(&options)?;
+pub fn run(mut options: DemoOptions) -> anyhow::Result<()> {
+    let camera = options.camera.take();
+    let lab = Lab::new(&options, camera)?;
     let display = std::env::var("WAYLAND_DISPLAY").or_else(|_| std::env::var("DISPLAY")).unwrap_or_default();
     let event_loop = EventLoop::new().map_err(|e| {
         anyhow!("cannot open a window on display {display:?}: {e}; unset DISPLAY and WAYLAND_DISPLAY to run the headless job instead")

@@ -1,15 +1,18 @@
-//! `surfacelab calibrate`: a calibration file from four point pairs given
-//! on the command line, checked by reading it back. The interactive mode
-//! (four clicks on the first frame in a window) is not built.
+//! `surfacelab calibrate`: a calibration file from four point pairs, the
+//! image points given on the command line or clicked on the first frame in
+//! a window, checked by reading it back.
 
 use super::CalibrateArgs;
 use crate::input::images::{
     Background, BitDepth, Calibration, CameraImage, CameraKind, Conversion, DEFAULT_THRESHOLD, DEFAULT_TOUCH_BAND_MM,
-    ImagesError, Pixels, first_frame,
+    ImagesError, first_frame,
 };
 use crate::scene;
 use std::path::Path;
 use std::process::ExitCode;
+
+/// The default table points, in their order.
+const CORNERS: [&str; 4] = ["far-left", "far-right", "near-right", "near-left"];
 
 pub fn run(args: &CalibrateArgs) -> super::CommandResult {
     let out_dir = match args.out.parent() {
@@ -23,12 +26,24 @@ pub fn run(args: &CalibrateArgs) -> super::CommandResult {
         BitDepth::Sixteen => CameraKind::Depth,
         BitDepth::Eight => CameraKind::Ir,
     });
-    let table_points = if let Some(p) = args.table_points {
-        p
+    let (table_points, names) = if let Some(p) = args.table_points {
+        (p, p.map(|[x, y]| format!("table point ({x}, {y})")))
     } else {
         let s = scene::load(&args.task)?;
         let (hw, hd) = (f64::from(s.table.width) / 2.0, f64::from(s.table.depth) / 2.0);
-        [[-hw, hd], [hw, hd], [hw, -hd], [-hw, -hd]]
+        let names = CORNERS.map(|c| format!("table's {c} corner"));
+        ([[-hw, hd], [hw, hd], [hw, -hd], [-hw, -hd]], names)
+    };
+    let image_points = if let Some(p) = args.points {
+        p
+    } else {
+        let title = format!("surfacelab calibrate: {}", first.display());
+        let names = [0, 1, 2, 3].map(|i| names[i].as_str());
+        let Some(p) = crate::app::point_picker::pick_points(&frame, names, &title)? else {
+            eprintln!("surfacelab calibrate: the window closed before four points were accepted; nothing written");
+            return Ok(ExitCode::FAILURE);
+        };
+        p
     };
     let conversion = match kind {
         CameraKind::Ir => {
@@ -47,7 +62,7 @@ pub fn run(args: &CalibrateArgs) -> super::CommandResult {
         }
     };
     let origin = format!("{} (from the flags)", args.out.display());
-    let calibration = Calibration::new(conversion, [frame.width, frame.height], args.points, table_points, &origin)?;
+    let calibration = Calibration::new(conversion, [frame.width, frame.height], image_points, table_points, &origin)?;
     crate::files::write_atomic(&args.out, calibration.to_toml().as_bytes())
         .map_err(|source| ImagesError::Write { path: args.out.display().to_string(), source })?;
     // What was written must read back, frames and all.
@@ -62,20 +77,15 @@ pub fn run(args: &CalibrateArgs) -> super::CommandResult {
     Ok(ExitCode::SUCCESS)
 }
 
-/// The table's distance as the median of a depth frame's readings: the
-/// table fills most of a camera's view.
+/// The table's distance as the median of a depth frame's readings.
 fn median_reading(path: &Path, frame: &CameraImage) -> Result<f32, ImagesError> {
-    let Pixels::Grey16(mm) = &frame.pixels else {
-        let problem = "8-bit grey; depth frames must be 16-bit millimetres".into();
-        return Err(ImagesError::Frame { path: path.display().to_string(), problem });
+    let problem = match frame.depth() {
+        BitDepth::Eight => "8-bit grey; depth frames must be 16-bit millimetres",
+        BitDepth::Sixteen => "no depth readings (all 0); give --table-depth-mm",
     };
-    let mut valid: Vec<u16> = mm.iter().copied().filter(|&d| d > 0).collect();
-    if valid.is_empty() {
-        let problem = "no depth readings (all 0); give --table-depth-mm".into();
-        return Err(ImagesError::Frame { path: path.display().to_string(), problem });
-    }
-    let mid = valid.len() / 2;
-    Ok(f32::from(*valid.select_nth_unstable(mid).1))
+    frame
+        .median_reading()
+        .ok_or_else(|| ImagesError::Frame { path: path.display().to_string(), problem: problem.into() })
 }
 
 /// `"x,y x,y x,y x,y"`: four points (clap's value parser).

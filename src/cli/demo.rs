@@ -1,14 +1,16 @@
 //! `surfacelab demo`: the flags, checked once, turned into the app's
 //! [`DemoOptions`]; the window itself is `crate::app`.
 
-use super::{DemoArgs, EXIT_USAGE};
+use super::{DemoArgs, EXIT_USAGE, Failure};
 use crate::app::{self, DemoOptions, ParticipantOptions};
+use crate::input::CameraInput;
 use crate::input::Gesture;
-use crate::input::images::ImageSequence;
+use crate::input::camera::CameraFeed;
+use crate::input::images::{Calibration, ImageSequence};
 use crate::pipeline::technique::TechniqueKind;
 use clap::Parser;
 use std::net::{IpAddr, Ipv4Addr, SocketAddr};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 /// Default trials file of participant mode.
@@ -30,13 +32,32 @@ impl Default for DemoArgs {
 }
 
 pub fn run(args: &DemoArgs) -> super::CommandResult {
-    let options = match options(args) {
+    let mut options = match options(args) {
         Ok(o) => o,
         Err(message) => {
             eprintln!("surfacelab demo: {message}");
             return Ok(ExitCode::from(EXIT_USAGE));
         }
     };
+    if let Some(device) = &args.camera {
+        options.camera = Some(CameraInput::Live(open_camera(device, args.calibration.as_deref())?));
+    }
+    if !super::doctor::has_display() {
+        // The headless job stands in for the window only when the demo was
+        // asked for nothing a study cannot do: an input source or a
+        // participant sitting needs the window.
+        let wants_window = options.camera.is_some()
+            || options.tuio.is_some()
+            || options.script.is_some()
+            || options.participant.is_some();
+        if !wants_window {
+            return super::headless_main();
+        }
+        return Err(Failure::from(anyhow::anyhow!(
+            "no display answers (see `surfacelab doctor`), and a camera, TUIO, a script or a participant needs the \
+             demo window; `surfacelab` with no arguments runs the headless job instead"
+        )));
+    }
     app::run(options)?;
     Ok(ExitCode::SUCCESS)
 }
@@ -58,7 +79,9 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
     if let (Some(dir), Some(calibration)) = (&args.images, &args.calibration) {
         let frames =
             ImageSequence::open(dir, calibration).map_err(|e| format!("--images: {}", crate::error::chain(&e)))?;
-        o.images = Some(frames);
+        o.camera = Some(CameraInput::Recorded(frames));
+    } else if args.calibration.is_some() && args.camera.is_none() {
+        return Err("--calibration is for --images or --camera".into());
     }
     o.screenshot_after.clone_from(&args.screenshot_after.0);
     o.quit_after = args.quit_after.map(f64::from);
@@ -77,6 +100,16 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
         });
     }
     Ok(o)
+}
+
+/// `--camera DEVICE [--calibration FILE]`: the calibration read, the
+/// device opened and streaming before any window opens, so a wrong path or
+/// an unreadable camera is said at once (a missing device or a format
+/// surfacelab cannot read is bad input, exit 2; a driver failing, exit 1).
+fn open_camera(device: &Path, calibration: Option<&Path>) -> Result<CameraFeed, Failure> {
+    let calibration =
+        calibration.map(|c| Calibration::load(c).map_err(|e| Failure::from(e).context("--calibration"))).transpose()?;
+    CameraFeed::open(device, calibration).map_err(|e| Failure::from(e).context("--camera"))
 }
 
 /// `--condition TECHNIQUE:on|off`, e.g. `particle:on` (clap's value

@@ -50,7 +50,7 @@ pub enum Command {
     Behaviours(BehavioursArgs),
     /// Print the GPU adapter, the display and the version.
     Doctor,
-    /// Write a camera calibration file for `--images` from four point pairs.
+    /// Write a camera calibration file for `--images` or `--camera` from four point pairs (clicked or given).
     Calibrate(CalibrateArgs),
     /// Write a gesture as the camera frames an infrared or depth camera would record.
     SynthImages(SynthImagesArgs),
@@ -81,8 +81,12 @@ pub struct DemoArgs {
     /// Play recorded camera frames (8/16-bit grey PNGs) as what the table sees, from the start of the session.
     #[arg(long, value_name = "DIR", requires = "calibration", conflicts_with_all = ["script", "participant"])]
     pub images: Option<PathBuf>,
-    /// The camera calibration (TOML) for --images.
-    #[arg(long, value_name = "FILE", requires = "images")]
+    /// Capture a live V4L2 camera (e.g. /dev/video0) as what the table sees; needs a build with
+    /// `--features camera`. Without --calibration its whole picture spans the table.
+    #[arg(long, value_name = "DEVICE", conflicts_with_all = ["images", "script", "participant"])]
+    pub camera: Option<PathBuf>,
+    /// The camera calibration (TOML) for --images or --camera.
+    #[arg(long, value_name = "FILE")]
     pub calibration: Option<PathBuf>,
     #[command(flatten)]
     pub screenshot_after: ScreenshotAfter,
@@ -363,9 +367,9 @@ pub struct CalibrateArgs {
     #[arg(long, value_name = "FILE.toml")]
     pub out: PathBuf,
     /// Where the four table points appear in the image, pixels: "x,y x,y x,y x,y".
-    /// (Required: the four-clicks window is not built.)
+    /// Without it a window shows the first frame for four clicks.
     #[arg(long, value_name = "\"x,y x,y x,y x,y\"", value_parser = calibrate::parse_points)]
-    pub points: [[f64; 2]; 4],
+    pub points: Option<[[f64; 2]; 4]>,
     /// The four table points, metres, same order (default: the table's corners from --task,
     /// far-left, far-right, near-right, near-left).
     #[arg(long, value_name = "\"x,y x,y x,y x,y\"", value_parser = calibrate::parse_points)]
@@ -470,7 +474,6 @@ fn init_tracing() {
 fn run(command: Command) -> CommandResult {
     match command {
         Command::Doctor => Ok(doctor::run()),
-        Command::Demo(_) if !doctor::has_display() => headless_main(),
         Command::Demo(args) => demo::run(&args),
         Command::Run(args) => run::run(&args),
         Command::Study(args) => study::run(&args),
@@ -486,7 +489,7 @@ fn run(command: Command) -> CommandResult {
 /// What `surfacelab` does with no display: the headless job, so the
 /// README's main command is useful on a server or in CI — a one-participant
 /// scripted study (18 measured trials) with its CSVs and figure.
-fn headless_main() -> CommandResult {
+pub(crate) fn headless_main() -> CommandResult {
     eprintln!("surfacelab: no display, so no demo window; running a small scripted study headless instead");
     let _ = doctor::run();
     let stamp = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());

@@ -148,6 +148,15 @@ impl Input {
         self.clock = Some(origin);
     }
 
+    /// The instant wall time `wall` stands for: from the window's clock
+    /// (see [`Input::set_clock`]), or now when none runs yet.
+    pub fn instant_at(&self, wall: f64) -> std::time::Instant {
+        match self.clock {
+            Some(origin) => origin + std::time::Duration::from_secs_f64(wall.max(0.0)),
+            None => std::time::Instant::now(),
+        }
+    }
+
     /// The hands at wall time `wall` (session time `t`) for one physics
     /// step: events up to `wall` applied, and a dragged hand or a finger
     /// placed on the straight line between its last move and its next

@@ -45,6 +45,21 @@ impl CameraImage {
         }
     }
 
+    /// The median of a depth frame's readings, 0 (no reading) left out: the
+    /// table's distance when the table fills most of the camera's view.
+    /// `None` for an 8-bit frame or one without readings.
+    pub fn median_reading(&self) -> Option<f32> {
+        let Pixels::Grey16(mm) = &self.pixels else {
+            return None;
+        };
+        let mut valid: Vec<u16> = mm.iter().copied().filter(|&d| d > 0).collect();
+        if valid.is_empty() {
+            return None;
+        }
+        let mid = valid.len() / 2;
+        Some(f32::from(*valid.select_nth_unstable(mid).1))
+    }
+
     /// The PNG's size and bit depth from its header alone, without decoding
     /// the pixels: what a sequence checks of every frame before it starts,
     /// so a bad frame 300 stops the run before frame 1. Colour or alpha is
