@@ -166,6 +166,90 @@ fn parry_polygon(p: &ConvexPolygon) -> ParryPolygon {
     ParryPolygon::from_convex_polyline_unmodified(pts).expect("parry accepts a clean convex polygon")
 }
 
+/// A pair the proptest `walk_matches_brute_force_on_regular_polygons`
+/// found (shrunk input, as printed): B shifted by `(dx, dy)`, then A moved
+/// exactly onto a vertex (`snap` 1) or into an edge (`snap` 2) of their
+/// block, so the two touch.
+fn snapped(a: &[[f64; 2]], b: &[[f64; 2]], dx: f64, dy: f64, snap: u32) -> (ConvexPolygon, ConvexPolygon) {
+    let (a, b) = (shifted(a, 1.0, 0.0, 0.0), shifted(b, 1.0, dx, dy));
+    let block = EntranceBlock::new(&a, &b);
+    let t = if snap == 1 {
+        block.edges()[(dx.to_bits() % block.edges().len() as u64) as usize].start
+    } else {
+        let e = block.edges()[(dy.to_bits() % block.edges().len() as u64) as usize];
+        e.start + e.direction * 0.37
+    };
+    (a.translated(t).expect("moved"), b)
+}
+
+/// Two touching pairs of regular polygons that the one-shot query called
+/// separated (by 0.62 and 1.39): a normal half a turn from the search's
+/// reference direction fell in either half by rounding, and the separating
+/// axis search took the opposite vertex. Each failed about once in 200
+/// runs of the proptest before the fix (`at_or_after_in_half`).
+#[test]
+#[allow(clippy::unreadable_literal)] // the proptest's numbers, as printed
+fn touching_regular_polygons_are_not_called_separated() {
+    let twelve_gon = [
+        [-0.5963911214470748, -0.15980251936483533],
+        [-0.4365886020822396, -0.4365886020822395],
+        [-0.15980251936483525, -0.5963911214470748],
+        [0.15980251936483503, -0.596391121447075],
+        [0.4365886020822394, -0.4365886020822396],
+        [0.5963911214470748, -0.15980251936483528],
+        [0.596391121447075, 0.159802519364835],
+        [0.4365886020822396, 0.4365886020822394],
+        [0.1598025193648353, 0.5963911214470748],
+        [-0.15980251936483497, 0.596391121447075],
+        [-0.43658860208223976, 0.43658860208223926],
+        [-0.5963911214470748, 0.15980251936483533],
+    ];
+    let pentagon = [
+        [0.11684149789852764, 0.3596011545411927],
+        [-0.3058950127947921, 0.22224573590016156],
+        [-0.30589501279479275, -0.2222457359001606],
+        [0.11684149789852656, -0.359601154541193],
+        [0.3781070297925316, -2.7782853826232203e-16],
+    ];
+    let sixteen_gon = [
+        [0.4178476540563943, 0.0],
+        [0.3860408952905594, 0.1599033744600016],
+        [0.295462909686167, 0.29546290968616695],
+        [0.1599033744600016, 0.3860408952905594],
+        [2.5585789603569693e-17, 0.4178476540563943],
+        [-0.15990337446000158, 0.3860408952905594],
+        [-0.29546290968616695, 0.295462909686167],
+        [-0.3860408952905594, 0.15990337446000163],
+        [-0.4178476540563943, 5.1171579207139385e-17],
+        [-0.38604089529055946, -0.15990337446000155],
+        [-0.29546290968616706, -0.29546290968616695],
+        [-0.15990337446000183, -0.38604089529055935],
+        [-7.675736881070907e-17, -0.4178476540563943],
+        [0.1599033744600017, -0.38604089529055935],
+        [0.29546290968616695, -0.29546290968616706],
+        [0.38604089529055935, -0.15990337446000186],
+    ];
+    let octagon = [
+        [-1.3426633334725545e-16, -0.7309118756566487],
+        [0.5168327437265948, -0.516832743726595],
+        [0.7309118756566487, -1.7902177779634063e-16],
+        [0.516832743726595, 0.5168327437265948],
+        [2.237772222454258e-16, 0.7309118756566487],
+        [-0.5168327437265944, 0.5168327437265955],
+        [-0.7309118756566487, 2.685326666945109e-16],
+        [-0.5168327437265946, -0.5168327437265953],
+    ];
+    for (a, b) in [
+        snapped(&twelve_gon, &pentagon, 0.46956896127740283, -1.0067426580287355, 1),
+        snapped(&sixteen_gon, &octagon, -1.4266335369060743, 0.768266070324618, 2),
+    ] {
+        let one_shot = contact_report(&a, &b);
+        assert_eq!(one_shot.relation, Relation::Touching, "{one_shot:?}");
+        assert!(one_shot.distance.abs() <= one_shot.tolerance, "{one_shot:?}");
+        check_against_brute_force(&a, &b, 1.0).expect("agrees with the brute force");
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig {
         cases: 600,

@@ -31,7 +31,7 @@
 
 use super::error::{ContactError, PolygonError};
 use super::tolerance::{scale_tolerance, tight_tolerance};
-use super::vec2::Vec2;
+use super::vec2::{Vec2, at_or_after_in_half};
 
 /// A strictly convex polygon with counter-clockwise vertices.
 #[derive(Clone, Debug, PartialEq)]
@@ -197,7 +197,7 @@ impl ConvexPolygon {
         let hd = half(d);
         let at_or_after = |v: Vec2| {
             let hv = half(v);
-            if hv == hd { d.cross(v) >= 0.0 } else { hv > hd }
+            if hv == hd { at_or_after_in_half(d, v, base, hv) } else { hv > hd }
         };
         let (mut lo, mut hi) = (0, normals.len());
         while lo < hi {

@@ -39,7 +39,7 @@
 use super::entrance_block::{Cover, Step, contact_at, contact_edge, parallel};
 use super::polygon::ConvexPolygon;
 use super::report::{ContactReport, Relation};
-use super::vec2::Vec2;
+use super::vec2::{Vec2, at_or_after_in_half};
 
 /// GJK refinements of the search direction before the walk. Each costs two
 /// binary searches; on the benchmark's random ellipses three left the walk
@@ -142,7 +142,8 @@ fn order_from(c: Vec2, nb: Vec2, na: Vec2) -> Step {
     if hb != ha {
         return if hb < ha { Step::B } else { Step::A };
     }
-    if nb.cross(na) > 0.0 { Step::B } else { Step::A }
+    // na after nb in their half from `c` (robust there, see the helper).
+    if at_or_after_in_half(nb, na, c, hb) { Step::B } else { Step::A }
 }
 
 /// The mirror image of [`order_from`] going clockwise: which of B's
@@ -156,7 +157,16 @@ fn order_back(c: Vec2, nb: Vec2, na: Vec2) -> Step {
     if hb != ha {
         return if hb < ha { Step::B } else { Step::A };
     }
-    if nb.cross(na) > 0.0 { Step::A } else { Step::B }
+    // Both lie within the same half-turn behind `c` (clockwise). More than
+    // three eighths of a turn apart, `nb × na` is noise (as in
+    // `at_or_after_in_half`), and the one nearer `c` is the one on the same
+    // side of `c`'s perpendicular as the half's start.
+    let (x, y) = (nb.cross(na), nb.dot(na));
+    if y < 0.0 && x.abs() < -y {
+        let nearer_b = if hb == 0 { c.dot(nb) > 0.0 } else { c.dot(nb) < 0.0 };
+        return if nearer_b { Step::B } else { Step::A };
+    }
+    if x > 0.0 { Step::A } else { Step::B }
 }
 
 #[inline]

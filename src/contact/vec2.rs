@@ -129,6 +129,23 @@ impl Div<f64> for Vec2 {
     }
 }
 
+/// Whether `v` is at or counter-clockwise after `d`, for two vectors that
+/// lie in the same half-turn `half` counter-clockwise from `base` (0:
+/// `[0, π)`, 1: `[π, 2π)`, as the contact walks sort normals).
+///
+/// Less than three eighths of a turn apart, the sign of `d × v` says it.
+/// Further apart, only near the half's two ends, that sign is not to be
+/// trusted: rounding can put a vector half a turn from `base` in either
+/// half, and two vectors "in one half" are then half a turn apart, where
+/// `d × v` is noise. There the one nearer the half's start (by the sign of
+/// its dot product with `base`, reliable that far from the middle) comes
+/// first. A proptest found the noisy sign sending the separating-axis
+/// search to the opposite vertex: touching pairs called separated by 0.6.
+pub(crate) fn at_or_after_in_half(d: Vec2, v: Vec2, base: Vec2, half: u8) -> bool {
+    let (x, y) = (d.cross(v), d.dot(v));
+    if y < 0.0 && x.abs() < -y { if half == 0 { base.dot(v) < 0.0 } else { base.dot(v) > 0.0 } } else { x >= 0.0 }
+}
+
 #[cfg(test)]
 mod tests {
     use super::Vec2;
