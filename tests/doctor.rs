@@ -61,7 +61,9 @@ fn doctor_connects_to_the_display_instead_of_trusting_the_variable() {
         std::thread::sleep(std::time::Duration::from_millis(50));
     }
     let line = doctor_display(&format!(":{number}"));
-    let _ = xvfb.kill();
+    // SIGTERM, not `kill()`'s SIGKILL: Xvfb then removes its lock file and
+    // socket, which SIGKILL left behind in /tmp on every run.
+    let _ = Command::new("kill").args(["-TERM", &xvfb.id().to_string()]).status();
     let _ = xvfb.wait();
     assert_eq!(line, format!("display: yes (X11 :{number})"));
 }
