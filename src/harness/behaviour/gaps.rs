@@ -36,7 +36,9 @@ const FINGERTIP_FRICTION: &str = "two fingertips twisting 90 degrees about the b
      a quarter of their rate (pin and spin, pivoting about one corner, turns it 62-66 degrees)";
 const TWO_CUBES_TWIST: &str = "44.1 degrees against 45: each proxy cube is one rotation-locked body whose 8 mm face \
      resists the box turning under it with per-point Coulomb friction; under rapier's simplified friction model it \
-     turned 46.8, but that model also gave every sliding box full torsional friction (pin and spin turned 0)";
+     turned 46.8, but that model also gave every sliding box full torsional friction (pin and spin turned 0). \
+     With contacts recomputed every step (rapier's contact recycling off, see the pile gap) it turns 63, but \
+     that change fails elsewhere";
 const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each other (21.6 for Particle's forearms) \
      once the two swept fronts meet, after 1.6 s (hands 20 cm apart, room for every piece): the pushers, \
      re-placed where the hands are each frame, never yield, so pieces caught between the fronts are squeezed instead \
@@ -44,7 +46,14 @@ const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each o
      Joint and Particle hand edges, 7.8 mm with Particle forearms (2.3 mm with 120 Hz contacts, whose stiffness for \
      10 g pieces is 16x the default 30 Hz's; 120 Hz leaves the squeeze at 10-12 mm). Before contacts between \
      centimetre convex shapes were decided in a magnified frame (pipeline/world/magnified.rs), discs also passed \
-     through each other mid-sweep: parry's GJK/EPA gave a wrong manifold for 270 of 400 overlapping disc pairs";
+     through each other mid-sweep: parry's GJK/EPA gave a wrong manifold for 270 of 400 overlapping disc pairs. \
+     Measured in session 9 with a probe of one chip pair's solver contacts: rapier 0.36 recycles a pair's contact \
+     points while its relative pose drifts less than 0.05 x length_unit (here 5 mm, half a piece), so the pair's \
+     points stayed frozen for 20 steps while the chips sank from 3 to 5 mm into each other. Recomputing every step \
+     (recycling off, or at 0.5 mm) leaves the sweeps at 11-15 mm, because the deepest overlaps are then pieces \
+     climbing onto each other and pressed down (vertical normals), and it breaks three other cells: Proxy then \
+     spins a ball 65-76 degrees (the paper: little grip of spherical objects), carries one under a flat hand 0.76 \
+     of the way, and a stack of five boxes under a pressing hand sinks 10 mm; so rapier's default stays";
 
 use Metric::{Along as Distance, Carry, MaxOverlap as Overlap, Yaw as Turn};
 use TechniqueKind::{Hybrid, Joint, Particle, Proxy};
