@@ -6,10 +6,9 @@
 //! have no camera); `demo --camera` says so in a build without the feature.
 
 use std::process::Command;
-use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use surfacelab::input::Gesture;
-use surfacelab::input::camera::{CameraError, CameraFeed, FrameGrabber, PixelFormat, RawFormat, encode};
+use surfacelab::input::camera::{CameraFeed, ChannelCamera, PixelFormat, RawFormat, encode};
 use surfacelab::input::images::{CameraImage, CameraKind, ImageSequence, Synthesizer, write_sequence};
 use surfacelab::pipeline::surface::Sensor;
 use surfacelab::pipeline::technique::TechniqueKind;
@@ -19,31 +18,6 @@ use surfacelab::session::{Session, SessionOptions};
 
 fn asset(path: &str) -> String {
     format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))
-}
-
-/// A camera whose frames the test hands over one at a time.
-struct Handed {
-    format: RawFormat,
-    frames: mpsc::Receiver<Vec<u8>>,
-    current: Vec<u8>,
-}
-
-impl FrameGrabber for Handed {
-    fn device(&self) -> &'static str {
-        "filmed"
-    }
-    fn format(&self) -> RawFormat {
-        self.format
-    }
-    fn grab(&mut self) -> Result<Option<&[u8]>, CameraError> {
-        match self.frames.recv() {
-            Ok(bytes) => {
-                self.current = bytes;
-                Ok(Some(&self.current))
-            }
-            Err(_) => Ok(None),
-        }
-    }
 }
 
 /// The box's final position after `gesture` filmed by a `kind` camera:
@@ -62,9 +36,8 @@ fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2
     // Rows padded to a multiple of 64 bytes, as drivers align them.
     let row = 640 * pixel.bytes_per_pixel();
     let format = RawFormat { stride: row.div_ceil(64) * 64 + 64, ..RawFormat::packed(640, 480, pixel) };
-    let (tx, rx) = mpsc::channel();
-    let grabber = Handed { format, frames: rx, current: Vec::new() };
-    let mut feed = CameraFeed::start(Box::new(grabber), Some(files.calibration().clone())).expect("starts");
+    let (camera, tx) = ChannelCamera::new("filmed", format);
+    let mut feed = CameraFeed::start(Box::new(camera), Some(files.calibration().clone())).expect("starts");
 
     let box_at = |s: &Session| s.world().object_pose(ObjectId::new(0)).position.truncate();
     let mut read = Session::new(&scene, TechniqueKind::Particle, SessionOptions::default()).expect("session");

@@ -26,6 +26,7 @@ pub mod stats;
 pub mod ui_cache;
 pub mod view;
 pub mod window;
+mod window_surface;
 
 pub use participant_mode::ParticipantOptions;
 pub use scene_view::{ViewOptions, draw_list, scene_camera};

@@ -9,8 +9,9 @@
 //! screen pixel per camera pixel a click on pixel (x, y) gives exactly
 //! (x, y).
 
+use super::window_surface::WindowSurface;
 use crate::input::images::{CameraImage, Pixels};
-use crate::render::{preferred_surface_format, request_adapter, request_device};
+use crate::render::GpuContext;
 use anyhow::{Context, anyhow};
 use std::sync::Arc;
 use winit::application::ApplicationHandler;
@@ -127,34 +128,11 @@ impl Picker {
         let size = PhysicalSize::new((f64::from(fw) * scale).round() as u32, (f64::from(fh) * scale).round() as u32);
         let attributes = Window::default_attributes().with_title(self.title.clone()).with_inner_size(size);
         let window = Arc::new(event_loop.create_window(attributes).context("cannot create the calibration window")?);
-        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_with_display_handle_from_env(Box::new(
-            event_loop.owned_display_handle(),
-        )));
-        let surface =
-            instance.create_surface(Arc::clone(&window)).context("cannot create a GPU surface for the window")?;
-        let adapter = pollster::block_on(request_adapter(&instance, Some(&surface)))?;
-        let (device, queue) = pollster::block_on(request_device(&adapter))?;
-        let caps = surface.get_capabilities(&adapter);
-        // egui draws sRGB-encoded values: a plain 8-bit surface shows them as they are.
-        let format = caps
-            .formats
-            .iter()
-            .copied()
-            .find(|f| matches!(f, wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Rgba8Unorm))
-            .or_else(|| preferred_surface_format(&caps.formats))
-            .ok_or_else(|| anyhow!("the GPU adapter cannot present to this window"))?;
+        let WindowSurface { gpu, surface, caps, format } = WindowSurface::new(event_loop, &window)?;
         let inner = window.inner_size();
-        let config = wgpu::SurfaceConfiguration {
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT,
-            format,
-            color_space: wgpu::SurfaceColorSpace::Auto,
-            width: inner.width.max(1),
-            height: inner.height.max(1),
-            present_mode: wgpu::PresentMode::AutoVsync,
-            desired_maximum_frame_latency: 2,
-            alpha_mode: caps.alpha_modes.first().copied().unwrap_or(wgpu::CompositeAlphaMode::Auto),
-            view_formats: vec![],
-        };
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT;
+        let config = WindowSurface::config_for(&caps, format, usage, [inner.width, inner.height]);
+        let GpuContext { device, queue, .. } = gpu;
         surface.configure(&device, &config);
         let egui = egui::Context::default();
         egui.set_theme(egui::Theme::Dark);

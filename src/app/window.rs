@@ -9,11 +9,10 @@ use super::lab::Lab;
 use super::panel::{self, Action, HAND_MODES, PanelState};
 use super::ui_cache;
 use super::view::{self, ViewFrame};
+use super::window_surface::WindowSurface;
 use super::{DemoOptions, Screenshot};
 use crate::input::{Button, Modifiers, MouseEvent, SourceEvent};
-use crate::render::{
-    GpuContext, Renderer, RendererOptions, preferred_surface_format, request_adapter, request_device, save_png,
-};
+use crate::render::{GpuContext, Renderer, RendererOptions, save_png};
 use anyhow::{Context, anyhow, bail};
 use glam::Vec2;
 use std::sync::Arc;
@@ -460,26 +459,8 @@ impl App {
         let title = window_title(&self.lab);
         let attributes = Window::default_attributes().with_title(title.clone()).with_inner_size(LogicalSize::new(w, h));
         let window = Arc::new(event_loop.create_window(attributes).context("cannot create the demo window")?);
-        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_with_display_handle_from_env(Box::new(
-            event_loop.owned_display_handle(),
-        )));
-        let surface =
-            instance.create_surface(Arc::clone(&window)).context("cannot create a GPU surface for the window")?;
-        let adapter = pollster::block_on(request_adapter(&instance, Some(&surface)))?;
-        let (device, queue) = pollster::block_on(request_device(&adapter))?;
-        let gpu = GpuContext::from_parts(instance, adapter, device, queue);
+        let WindowSurface { gpu, surface, caps, format } = WindowSurface::new(event_loop, &window)?;
         let summary = gpu.summary();
-        let caps = surface.get_capabilities(&gpu.adapter);
-        // egui draws in sRGB-encoded values: a plain 8-bit surface needs no
-        // per-pixel conversion (on lavapipe the conversion cost ~40 ms a frame).
-        let plain = caps
-            .formats
-            .iter()
-            .copied()
-            .find(|f| matches!(f, wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Rgba8Unorm));
-        let format = plain
-            .or_else(|| preferred_surface_format(&caps.formats))
-            .ok_or_else(|| anyhow!("the adapter {summary} cannot present to this window"))?;
         let size = window.inner_size();
         // Copies into the surface put the table view in place without egui;
         // copies out of it let `--screenshot-after` read the real frame.
@@ -488,17 +469,7 @@ impl App {
         if readable(format) {
             usage |= caps.usages & wgpu::TextureUsages::COPY_SRC;
         }
-        let config = wgpu::SurfaceConfiguration {
-            usage,
-            format,
-            color_space: wgpu::SurfaceColorSpace::Auto,
-            width: size.width.max(1),
-            height: size.height.max(1),
-            present_mode: wgpu::PresentMode::AutoVsync,
-            desired_maximum_frame_latency: 2,
-            alpha_mode: caps.alpha_modes.first().copied().unwrap_or(wgpu::CompositeAlphaMode::Auto),
-            view_formats: vec![],
-        };
+        let config = WindowSurface::config_for(&caps, format, usage, [size.width, size.height]);
         surface.configure(&gpu.device, &config);
         let scale = window.scale_factor() as f32;
         let options = RendererOptions { feedback_line_px: 3.0 * scale, ..RendererOptions::for_adapter(&summary) };

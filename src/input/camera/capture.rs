@@ -10,7 +10,7 @@ use super::{CameraError, RawFormat, decode};
 use crate::input::images::CameraImage;
 use std::collections::VecDeque;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, mpsc};
 use std::time::Instant;
 
 /// Frames held for the session at most (a third of a second at 30 fps).
@@ -26,6 +26,47 @@ pub trait FrameGrabber: Send {
     /// Blocks until the next frame and returns its bytes (valid until the
     /// next call); `Ok(None)` when the stream has ended.
     fn grab(&mut self) -> Result<Option<&[u8]>, CameraError>;
+}
+
+/// A camera whose frames are handed over on a channel, bytes as a driver
+/// would deliver them: a frame source that is not a V4L2 device (the tests
+/// hand recorded frames over this way). The stream ends when every sender
+/// is dropped.
+#[derive(Debug)]
+pub struct ChannelCamera {
+    device: String,
+    format: RawFormat,
+    frames: mpsc::Receiver<Vec<u8>>,
+    current: Vec<u8>,
+}
+
+impl ChannelCamera {
+    /// A camera named `device` delivering `format`, and the sender that
+    /// hands it frames.
+    pub fn new(device: impl Into<String>, format: RawFormat) -> (ChannelCamera, mpsc::Sender<Vec<u8>>) {
+        let (tx, frames) = mpsc::channel();
+        (ChannelCamera { device: device.into(), format, frames, current: Vec::new() }, tx)
+    }
+}
+
+impl FrameGrabber for ChannelCamera {
+    fn device(&self) -> &str {
+        &self.device
+    }
+
+    fn format(&self) -> RawFormat {
+        self.format
+    }
+
+    fn grab(&mut self) -> Result<Option<&[u8]>, CameraError> {
+        match self.frames.recv() {
+            Ok(bytes) => {
+                self.current = bytes;
+                Ok(Some(&self.current))
+            }
+            Err(mpsc::RecvError) => Ok(None),
+        }
+    }
 }
 
 /// A frame decoded, or why no more will come.

@@ -208,35 +208,10 @@ pub fn whole_view(frame: &CameraImage, sensor: &Sensor, device: &str) -> Result<
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::input::camera::{PixelFormat, encode};
+    use crate::input::camera::{ChannelCamera, PixelFormat, encode};
     use crate::input::images::Pixels;
     use std::sync::mpsc;
     use std::time::Duration;
-
-    /// A camera whose frames the test hands over one by one.
-    struct Handed {
-        format: RawFormat,
-        frames: mpsc::Receiver<Vec<u8>>,
-        current: Vec<u8>,
-    }
-
-    impl FrameGrabber for Handed {
-        fn device(&self) -> &'static str {
-            "test-camera"
-        }
-        fn format(&self) -> RawFormat {
-            self.format
-        }
-        fn grab(&mut self) -> Result<Option<&[u8]>, CameraError> {
-            match self.frames.recv() {
-                Ok(bytes) => {
-                    self.current = bytes;
-                    Ok(Some(&self.current))
-                }
-                Err(_) => Ok(None),
-            }
-        }
-    }
 
     const W: u32 = 64;
     const H: u32 = 48;
@@ -253,9 +228,8 @@ mod tests {
 
     fn feed(calibration: Option<Calibration>) -> (CameraFeed, mpsc::Sender<Vec<u8>>, RawFormat) {
         let format = RawFormat { stride: 2 * W + 8, ..RawFormat::packed(W, H, PixelFormat::Yuyv) };
-        let (tx, rx) = mpsc::channel();
-        let grabber = Handed { format, frames: rx, current: Vec::new() };
-        (CameraFeed::start(Box::new(grabber), calibration).expect("starts"), tx, format)
+        let (camera, tx) = ChannelCamera::new("test-camera", format);
+        (CameraFeed::start(Box::new(camera), calibration).expect("starts"), tx, format)
     }
 
     /// Waits until the capture thread has queued `n` more frames; returns
@@ -360,9 +334,7 @@ mod tests {
     }
 
     fn feed_error(calibration: Option<Calibration>) -> String {
-        let format = RawFormat::packed(W, H, PixelFormat::Yuyv);
-        let (_tx, rx) = mpsc::channel();
-        let grabber = Handed { format, frames: rx, current: Vec::new() };
-        CameraFeed::start(Box::new(grabber), calibration).expect_err("refused").to_string()
+        let (camera, _tx) = ChannelCamera::new("test-camera", RawFormat::packed(W, H, PixelFormat::Yuyv));
+        CameraFeed::start(Box::new(camera), calibration).expect_err("refused").to_string()
     }
 }

@@ -519,6 +519,11 @@ pub(super) fn op(m: &OscMessage) -> Result<Op2, TuioError> {
         Some(a) => id(a).ok_or_else(|| bad(format!("the session id must be an int32, found {}", shown(a)))),
         None => Err(bad("no arguments; the session id comes first".into())),
     };
+    // The type/user id and component id after the session id (ptr, tok).
+    let type_user_component = || match [1, 2].map(|i| args.get(i).and_then(id)) {
+        [Some(type_user), Some(component)] => Ok((type_user, component)),
+        _ => Err(bad("tu_id and c_id must be int32".into())),
+    };
     // Floats at `range` of the arguments, each finite.
     let floats = |range: std::ops::Range<usize>| -> Result<Vec<f32>, TuioError> {
         range
@@ -576,10 +581,7 @@ pub(super) fn op(m: &OscMessage) -> Result<Op2, TuioError> {
         "ptr" => {
             count(9, 5, "s_id tu_id c_id x y angle shear radius press")?;
             let s = session()?;
-            let [tu, c] = [1, 2].map(|i| id(&args[i]));
-            let (Some(type_user), Some(component)) = (tu, c) else {
-                return Err(bad("tu_id and c_id must be int32".into()));
-            };
+            let (type_user, component) = type_user_component()?;
             let v = floats(3..args.len())?;
             position(v[0], v[1])?;
             if !(0.0..=2.0).contains(&v[4]) {
@@ -600,10 +602,7 @@ pub(super) fn op(m: &OscMessage) -> Result<Op2, TuioError> {
         "tok" => {
             count(6, 5, "s_id tu_id c_id x y angle")?;
             let s = session()?;
-            let [tu, c] = [1, 2].map(|i| id(&args[i]));
-            let (Some(type_user), Some(component)) = (tu, c) else {
-                return Err(bad("tu_id and c_id must be int32".into()));
-            };
+            let (type_user, component) = type_user_component()?;
             let v = floats(3..args.len())?;
             position(v[0], v[1])?;
             Ok(Op2::Token(Token { session: s, type_user, component, x: v[0], y: v[1], angle: v[2] }))
