@@ -11,9 +11,10 @@
 //!   edges moved inward, precomputed) says intersecting or touching.
 //! * **signed distance outside** — O(log n): the nearest point lies on the
 //!   chain of edges that face the query point, and along that chain the
-//!   distance falls then rises (a convex set seen from outside). Two binary
-//!   searches from the wedge's edge, forward and backward, find where it
-//!   turns; the edges either side of each turn are compared.
+//!   distance falls then rises (a convex set seen from outside). A binary
+//!   search from the wedge's edge, forward or backward (whichever way the
+//!   distance falls there), finds where it turns; the edges either side of
+//!   the turn are compared.
 //! * **penetration depth inside** — O(n). The depth is the distance to the
 //!   nearest edge *line*, and that is not unimodal around the boundary (a
 //!   rectangle has two minima, one per long side), so no binary search
@@ -119,24 +120,28 @@ impl CachedBlock {
         let nk = edges[k].normal;
         // Forward from k: false while the edge faces q, is less than half a
         // turn ahead of k and the distance still falls at its end.
-        let forward = first_true(n, |o| {
+        let stops_forward = |o: usize| {
             let e = &edges[(k + o) % n];
             let c = nk.cross(e.normal);
             let half_turn_on = c < 0.0 || (c == 0.0 && nk.dot(e.normal) < 0.0);
             half_turn_on || e.plane_distance(q) <= 0.0 || (e.end() - q).dot(e.direction) >= 0.0
-        });
+        };
         // Backward from k: the mirror image, judged at the edge's start.
-        let backward = first_true(n, |o| {
+        let stops_backward = |o: usize| {
             let e = &edges[(k + n - o) % n];
             let c = e.normal.cross(nk);
             let half_turn_on = c < 0.0 || (c == 0.0 && nk.dot(e.normal) < 0.0);
             half_turn_on || e.plane_distance(q) <= 0.0 || (e.start - q).dot(e.direction) <= 0.0
-        });
-        let f = k + forward;
-        let b = k + n - backward;
+        };
+        // Only one way needs searching: when q's foot on edge k's line lies
+        // past k's end the nearest point is ahead, and the backward search
+        // would stop at k at once; otherwise it is at or behind k's end, and
+        // the forward search would.
+        let turn =
+            if stops_forward(0) { k + n - first_true(n, stops_backward) } else { k + first_true(n, stops_forward) };
         let mut best = Nearest { edge: k, point: q, signed_distance: f64::INFINITY };
         let mut best_d2 = f64::INFINITY;
-        for j in [f + n - 1, f, f + 1, b + n - 1, b, b + 1] {
+        for j in [turn + n - 1, turn, turn + 1] {
             let j = j % n;
             let p = edges[j].closest_point(q);
             let d2 = (q - p).length_squared();

@@ -35,7 +35,9 @@
 //! [`CachedBlock`](super::cached::CachedBlock). A single query does not need
 //! it: [`contact_report`] runs the same walk and keeps only the few covers
 //! the answer can come from, about twice as fast at 64 vertices (writing
-//! 128-byte edges is most of the stored build's cost).
+//! 128-byte edges is most of the stored build's cost), and walks only a
+//! few covers where a separating axis or an expanding polytope has found
+//! the part of the boundary the answer lies on.
 //!
 //! **Queries.** The current position of A is the origin `q = 0` (or any
 //! translation `q` passed to [`EntranceBlock::report_at`]). `q` outside the

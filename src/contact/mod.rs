@@ -7,11 +7,15 @@ mod concave;
 mod entrance_block;
 mod error;
 mod json_query;
+mod local_walk;
+mod overlapping;
 mod polygon;
 mod query;
 mod report;
 mod scaling;
 mod separated;
+#[cfg(test)]
+mod test_shapes;
 mod tolerance;
 mod vec2;
 

@@ -36,10 +36,11 @@
 //!
 //! [`contact_report`]: super::query::contact_report
 
-use super::entrance_block::{Cover, Step, contact_at, contact_edge, parallel};
+use super::entrance_block::{Cover, Step, contact_at, contact_edge};
+use super::local_walk::{cover_direction, order_back, order_from, support, unsplit};
 use super::polygon::ConvexPolygon;
 use super::report::{ContactReport, Relation};
-use super::vec2::{Vec2, at_or_after_in_half};
+use super::vec2::Vec2;
 
 /// GJK refinements of the search direction before the walk. Each costs two
 /// binary searches; on the benchmark's random ellipses three left the walk
@@ -56,10 +57,7 @@ pub(crate) fn separated_report(a: &ConvexPolygon, b: &ConvexPolygon, tolerance: 
     if n.length_squared().is_nan() || n.length_squared() <= 0.0 {
         return None;
     }
-    // Block support point in direction n: B's vertex farthest along n minus
-    // A's vertex farthest against it.
-    let support = |n: Vec2| -> (usize, usize) { (a.first_edge_at_or_after(-n), b.first_edge_at_or_after(n)) };
-    let (mut i, mut j) = support(n);
+    let (mut i, mut j) = support(a, b, n);
     let mut v = bv[j] - av[i];
     let mut separated = -n.dot(v) > tolerance * n.length();
     for _ in 0..REFINEMENTS {
@@ -71,7 +69,7 @@ pub(crate) fn separated_report(a: &ConvexPolygon, b: &ConvexPolygon, tolerance: 
         if next.length_squared().is_nan() || next.length_squared() <= 0.0 {
             return None;
         }
-        let (i2, j2) = support(next);
+        let (i2, j2) = support(a, b, next);
         let w = bv[j2] - av[i2];
         // GJK on the segment [v, w]: the closest point to the origin.
         let s = w - v;
@@ -82,7 +80,7 @@ pub(crate) fn separated_report(a: &ConvexPolygon, b: &ConvexPolygon, tolerance: 
         separated = -n.dot(v) > tolerance * n.length();
         if !separated && closest.length_squared() > 0.0 {
             let towards = -closest;
-            let (i3, j3) = support(towards);
+            let (i3, j3) = support(a, b, towards);
             let u = bv[j3] - av[i3];
             if -towards.dot(u) > tolerance * towards.length() {
                 (i, j, v, n) = (i3, j3, u, towards);
@@ -105,79 +103,6 @@ pub(crate) fn separated_report(a: &ConvexPolygon, b: &ConvexPolygon, tolerance: 
         features,
         tolerance,
     })
-}
-
-/// A state found by angle may have taken one of two parallel edges and not
-/// the other (their angles a rounding apart, either side of `n`); the full
-/// walk takes such a pair together, so the taken one is given back.
-fn unsplit(a: &ConvexPolygon, b: &ConvexPolygon, i: usize, j: usize) -> (usize, usize) {
-    let (na, nb) = (a.normals(), b.normals());
-    let (n, m) = (na.len(), nb.len());
-    let (ip, jp) = (if i == 0 { n - 1 } else { i - 1 }, if j == 0 { m - 1 } else { j - 1 });
-    if parallel(nb[jp], -na[i]) {
-        (i, jp)
-    } else if parallel(-na[ip], nb[j]) {
-        (ip, j)
-    } else {
-        (i, j)
-    }
-}
-
-/// 0 when `v` is at an angle in `[0, π)` counter-clockwise from `c`.
-#[inline]
-fn half_from(c: Vec2, v: Vec2) -> u8 {
-    let x = c.cross(v);
-    u8::from(!(x > 0.0 || (x == 0.0 && c.dot(v) > 0.0)))
-}
-
-/// The full walk's `order`, with angles measured from the current edge's
-/// normal `c` instead of from the x axis: which of B's next edge (normal
-/// `nb`) and −A's next edge (normal `na`) comes first counter-clockwise.
-#[inline]
-fn order_from(c: Vec2, nb: Vec2, na: Vec2) -> Step {
-    if parallel(nb, na) {
-        return Step::Both;
-    }
-    let (hb, ha) = (half_from(c, nb), half_from(c, na));
-    if hb != ha {
-        return if hb < ha { Step::B } else { Step::A };
-    }
-    // na after nb in their half from `c` (robust there, see the helper).
-    if at_or_after_in_half(nb, na, c, hb) { Step::B } else { Step::A }
-}
-
-/// The mirror image of [`order_from`] going clockwise: which of B's
-/// previous edge and −A's previous edge comes last before `c`.
-#[inline]
-fn order_back(c: Vec2, nb: Vec2, na: Vec2) -> Step {
-    if parallel(nb, na) {
-        return Step::Both;
-    }
-    let (hb, ha) = (half_from(nb, c), half_from(na, c));
-    if hb != ha {
-        return if hb < ha { Step::B } else { Step::A };
-    }
-    // Both lie within the same half-turn behind `c` (clockwise). More than
-    // three eighths of a turn apart, `nb × na` is noise (as in
-    // `at_or_after_in_half`), and the one nearer `c` is the one on the same
-    // side of `c`'s perpendicular as the half's start.
-    let (x, y) = (nb.cross(na), nb.dot(na));
-    if y < 0.0 && x.abs() < -y {
-        let nearer_b = if hb == 0 { c.dot(nb) > 0.0 } else { c.dot(nb) < 0.0 };
-        return if nearer_b { Step::B } else { Step::A };
-    }
-    if x > 0.0 { Step::A } else { Step::B }
-}
-
-#[inline]
-fn cover_direction(av: &[Vec2], bv: &[Vec2], c: Cover) -> Vec2 {
-    let i1 = if c.i + 1 == av.len() { 0 } else { c.i + 1 };
-    let j1 = if c.j + 1 == bv.len() { 0 } else { c.j + 1 };
-    match c.step {
-        Step::B => bv[j1] - bv[c.j],
-        Step::A => av[c.i] - av[i1],
-        Step::Both => (bv[j1] - bv[c.j]) + (av[c.i] - av[i1]),
-    }
 }
 
 /// The nearest point to the origin of the block's boundary, walking from
@@ -261,27 +186,9 @@ mod tests {
     use super::separated_report;
     use crate::contact::entrance_block::{EntranceBlock, pair_tolerance};
     use crate::contact::polygon::ConvexPolygon;
+    use crate::contact::test_shapes::hull;
     use crate::contact::vec2::Vec2;
     use proptest::prelude::*;
-
-    /// Strict convex hull (monotone chain), counter-clockwise.
-    fn hull(mut pts: Vec<Vec2>) -> Vec<Vec2> {
-        pts.sort_by(|p, q| p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y)));
-        pts.dedup();
-        let cross = |o: Vec2, a: Vec2, b: Vec2| (a - o).cross(b - o);
-        let mut chain: Vec<Vec2> = Vec::new();
-        for pass in [pts.clone(), pts.into_iter().rev().collect()] {
-            let base = chain.len();
-            for p in pass {
-                while chain.len() >= base + 2 && cross(chain[chain.len() - 2], chain[chain.len() - 1], p) <= 0.0 {
-                    chain.pop();
-                }
-                chain.push(p);
-            }
-            chain.pop();
-        }
-        chain
-    }
 
     /// The early exit, where it answers, against the full walk.
     fn agrees(a: &ConvexPolygon, b: &ConvexPolygon) -> Result<bool, TestCaseError> {
