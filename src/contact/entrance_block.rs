@@ -405,6 +405,20 @@ pub(crate) fn walk_report(a: &ConvexPolygon, b: &ConvexPolygon, tolerance: f64) 
         }
         (pick.1, pick.2, -pick.0.sqrt())
     };
+    cover_report(a, b, cover, point, signed, tolerance)
+}
+
+/// The one-shot report for A's position (the origin) whose nearest block
+/// boundary point `point` lies on `cover`, `signed` from it: what the full
+/// walk and both early exits return.
+pub(crate) fn cover_report(
+    a: &ConvexPolygon,
+    b: &ConvexPolygon,
+    cover: Cover,
+    point: Vec2,
+    signed: f64,
+    tolerance: f64,
+) -> ContactReport {
     let (witness, features) = contact_at(&contact_edge(a, b, cover), point, Vec2::ZERO, tolerance);
     ContactReport {
         relation: Relation::from_signed_distance(signed, tolerance),

@@ -15,7 +15,7 @@ mod report;
 mod scaling;
 mod separated;
 #[cfg(test)]
-mod test_shapes;
+mod test_support;
 mod tolerance;
 mod vec2;
 

@@ -1,0 +1,99 @@
+//! Shapes and checks the contact module's own tests share.
+
+use super::entrance_block::EntranceBlock;
+use super::polygon::ConvexPolygon;
+use super::report::ContactReport;
+use super::vec2::Vec2;
+use proptest::prelude::*;
+
+/// Two hulls of 3 to 9 integer points in [−3, 3]², B shifted by up to
+/// `shift` each way: parallel edges, collinear points and exact touches
+/// everywhere. `None` where a hull is degenerate.
+pub(crate) fn grid_pair(shift: i32) -> impl Strategy<Value = Option<(ConvexPolygon, ConvexPolygon)>> {
+    let points = || prop::collection::vec((-3i32..=3, -3i32..=3), 3..10);
+    (points(), points(), -shift..=shift, -shift..=shift).prop_map(|(a, b, dx, dy)| {
+        let at = |p: Vec<(i32, i32)>, dx: i32, dy: i32| {
+            hull(p.into_iter().map(|(x, y)| Vec2::new(f64::from(x + dx), f64::from(y + dy))).collect())
+        };
+        ConvexPolygon::new(&at(a, 0, 0)).ok().zip(ConvexPolygon::new(&at(b, dx, dy)).ok())
+    })
+}
+
+/// Two hulls of 3 to `max_points − 1` random points in [−1, 1]², A
+/// stretched along x and B along y by 0.02 to 3, B shifted by up to `shift`
+/// each way, both moved `far` out along x and in along y.
+pub(crate) fn random_pair(
+    max_points: usize,
+    shift: f64,
+    far: f64,
+) -> impl Strategy<Value = Option<(ConvexPolygon, ConvexPolygon)>> {
+    let points = move || prop::collection::vec((-1.0..1.0f64, -1.0..1.0f64), 3..max_points);
+    let stretch = || 0.02..3.0f64;
+    (points(), points(), stretch(), stretch(), -shift..=shift, -shift..=shift).prop_map(
+        move |(a, b, sx, sy, dx, dy)| {
+            let a = hull(a.into_iter().map(|(x, y)| Vec2::new(x * sx + far, y - far)).collect());
+            let b = hull(b.into_iter().map(|(x, y)| Vec2::new(x + dx + far, y * sy + dy - far)).collect());
+            ConvexPolygon::new(&a).ok().zip(ConvexPolygon::new(&b).ok())
+        },
+    )
+}
+
+/// Strict convex hull (monotone chain), counter-clockwise.
+pub(crate) fn hull(mut pts: Vec<Vec2>) -> Vec<Vec2> {
+    pts.sort_by(|p, q| p.x.total_cmp(&q.x).then(p.y.total_cmp(&q.y)));
+    pts.dedup();
+    let cross = |o: Vec2, a: Vec2, b: Vec2| (a - o).cross(b - o);
+    let mut chain: Vec<Vec2> = Vec::new();
+    for pass in [pts.clone(), pts.into_iter().rev().collect()] {
+        let base = chain.len();
+        for p in pass {
+            while chain.len() >= base + 2 && cross(chain[chain.len() - 2], chain[chain.len() - 1], p) <= 0.0 {
+                chain.pop();
+            }
+            chain.push(p);
+        }
+        chain.pop();
+    }
+    chain
+}
+
+/// `n` points at distinct random angles on an ellipse with random axes
+/// (0.5 to 1.5), turn and centre near `at`, counter-clockwise: the random
+/// convex polygons of the contact benchmark.
+pub(crate) fn random_ellipse(rng: &mut impl rand::Rng, n: usize, at: Vec2) -> Vec<Vec2> {
+    let (ax, ay) = (rng.random_range(0.5..1.5), rng.random_range(0.5..1.5));
+    let turn: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+    let mut angles: Vec<f64> = (0..n).map(|_| rng.random_range(0.0..std::f64::consts::TAU)).collect();
+    angles.sort_by(f64::total_cmp);
+    angles.dedup();
+    angles
+        .iter()
+        .map(|t| {
+            let (x, y) = (ax * t.cos(), ay * t.sin());
+            at + Vec2::new(x * turn.cos() - y * turn.sin(), x * turn.sin() + y * turn.cos())
+        })
+        .collect()
+}
+
+/// An early exit's report, where it answered, against the full walk's:
+/// the same relation, the distance to 1e-12 of the pair's size, and the
+/// same features where the exits agree. Whether it answered.
+pub(crate) fn agrees_with_the_walk(
+    a: &ConvexPolygon,
+    b: &ConvexPolygon,
+    fast: Option<ContactReport>,
+) -> Result<bool, TestCaseError> {
+    let Some(fast) = fast else { return Ok(false) };
+    let full = EntranceBlock::new(a, b).report();
+    let scale = a.extent().max(b.extent()).max(a.magnitude()).max(b.magnitude());
+    prop_assert_eq!(fast.relation, full.relation, "fast {:?} full {:?}", fast, full);
+    prop_assert!((fast.distance - full.distance).abs() <= 1e-12 * scale, "fast {:?} full {:?}", fast, full);
+    prop_assert!((fast.exit.length() - fast.distance.abs()).abs() <= 1e-12 * scale, "fast {:?}", fast);
+    if (fast.exit - full.exit).length() <= full.tolerance {
+        let (mut f, mut w) = (fast.features.to_vec(), full.features.to_vec());
+        f.sort_by_key(|x| format!("{x:?}"));
+        w.sort_by_key(|x| format!("{x:?}"));
+        prop_assert_eq!(f, w, "fast {:?} full {:?}", fast, full);
+    }
+    Ok(true)
+}
