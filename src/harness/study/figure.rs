@@ -20,8 +20,10 @@
 use super::design::StudyDesign;
 use super::error::StudyError;
 use super::summary::SummaryRow;
+use crate::pipeline::technique::TechniqueKind;
 use plotters::coord::Shift;
 use plotters::coord::ranged1d::{DefaultFormatting, KeyPointHint, Ranged};
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::path::Path;
@@ -96,8 +98,6 @@ fn draw<DB: DrawingBackend>(
 
     let techniques = &design.techniques;
     let levels = &design.feedback;
-    let group_width = 0.76;
-    let bar_width = group_width / levels.len().max(1) as f64;
 
     for (panel, task) in panels.iter().zip(&design.tasks) {
         let cell = |t, fb| summary.iter().find(|r| r.task == *task && r.technique == t && r.feedback == fb);
@@ -107,43 +107,13 @@ fn draw<DB: DrawingBackend>(
             .filter_map(|r| r.ci95_within_high_s.or(r.mean_s))
             .fold(0.0f64, f64::max);
         let y_max = if top > 0.0 { top * 1.12 } else { 1.0 };
-        let n = techniques.len();
-        let mut chart = ChartBuilder::on(panel)
-            .caption(capitalized(task), (FONT, CAPTION_SIZE))
-            .margin(12)
-            .x_label_area_size(60)
-            .y_label_area_size(78)
-            .build_cartesian_2d(CategoryAxis { n }, 0.0..y_max)
-            .map_err(e)?;
-        let label = |x: &f64| {
-            let i = x.round();
-            if (x - i).abs() < 1e-6 && i >= 0.0 && (i as usize) < n {
-                techniques[i as usize].label().to_owned()
-            } else {
-                String::new()
-            }
-        };
-        chart
-            .configure_mesh()
-            .disable_x_mesh()
-            .light_line_style(WHITE)
-            .bold_line_style(BLACK.mix(0.12))
-            .x_labels(n)
-            .x_label_formatter(&label)
-            .y_label_formatter(&|y| format!("{y:.0}"))
-            .x_desc("Technique")
-            .y_desc("Completion time (s)")
-            .label_style((FONT, TEXT_SIZE))
-            .axis_desc_style((FONT, TEXT_SIZE))
-            .draw()
-            .map_err(e)?;
+        let mut chart = task_chart(panel, task, techniques, y_max)?;
 
         for (ti, &technique) in techniques.iter().enumerate() {
             for (li, &fb) in levels.iter().enumerate() {
                 let Some(row) = cell(technique, fb) else { continue };
                 let Some(mean) = row.mean_s else { continue };
-                let x0 = ti as f64 - group_width / 2.0 + li as f64 * bar_width;
-                let (x0, x1) = (x0 + 0.02, x0 + bar_width - 0.02);
+                let (x0, x1) = bar_span(ti, li, levels.len());
                 let (color, _) = feedback_style(fb);
                 chart
                     .draw_series(std::iter::once(Rectangle::new([(x0, 0.0), (x1, mean)], color.filled())))
@@ -174,6 +144,60 @@ fn draw<DB: DrawingBackend>(
 
     draw_legend(&legend, levels, summary.iter().any(|r| r.failed > 0))?;
     root.present().map_err(e)
+}
+
+/// Width of a technique's group of bars, in categories.
+const GROUP_WIDTH: f64 = 0.76;
+
+/// A task's panel, with its caption, the techniques along x and completion
+/// time from 0 to `y_max` along y: what both this figure and `seeds.png`
+/// draw their bars on.
+pub(super) fn task_chart<'a, DB: DrawingBackend>(
+    panel: &'a DrawingArea<DB, Shift>,
+    task: &str,
+    techniques: &'a [TechniqueKind],
+    y_max: f64,
+) -> Result<ChartContext<'a, DB, Cartesian2d<CategoryAxis, RangedCoordf64>>, String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let n = techniques.len();
+    let mut chart = ChartBuilder::on(panel)
+        .caption(capitalized(task), (FONT, CAPTION_SIZE))
+        .margin(12)
+        .x_label_area_size(60)
+        .y_label_area_size(78)
+        .build_cartesian_2d(CategoryAxis { n }, 0.0..y_max)
+        .map_err(e)?;
+    let label = |x: &f64| {
+        let i = x.round();
+        if (x - i).abs() < 1e-6 && i >= 0.0 && (i as usize) < n {
+            techniques[i as usize].label().to_owned()
+        } else {
+            String::new()
+        }
+    };
+    chart
+        .configure_mesh()
+        .disable_x_mesh()
+        .light_line_style(WHITE)
+        .bold_line_style(BLACK.mix(0.12))
+        .x_labels(n)
+        .x_label_formatter(&label)
+        .y_label_formatter(&|y| format!("{y:.0}"))
+        .x_desc("Technique")
+        .y_desc("Completion time (s)")
+        .label_style((FONT, TEXT_SIZE))
+        .axis_desc_style((FONT, TEXT_SIZE))
+        .draw()
+        .map_err(e)?;
+    Ok(chart)
+}
+
+/// The x range of the bar for technique `ti` and feedback level `li` of
+/// `levels`: the group centred on the technique, a small gap either side.
+pub(super) fn bar_span(ti: usize, li: usize, levels: usize) -> (f64, f64) {
+    let bar_width = GROUP_WIDTH / levels.max(1) as f64;
+    let x0 = ti as f64 - GROUP_WIDTH / 2.0 + li as f64 * bar_width;
+    (x0 + 0.02, x0 + bar_width - 0.02)
 }
 
 /// One legend for all panels, centred under them; a note in red when some

@@ -5,9 +5,7 @@
 
 use super::design::StudyDesign;
 use super::error::StudyError;
-use super::figure::{
-    CAPTION_SIZE, CategoryAxis, HEIGHT, TEXT_SIZE, TITLE_SIZE, capitalized, ensure_font, feedback_style, figure_width,
-};
+use super::figure::{HEIGHT, TEXT_SIZE, TITLE_SIZE, bar_span, ensure_font, feedback_style, figure_width, task_chart};
 use super::summary::SummaryRow;
 use crate::harness::plot_font::FONT;
 use plotters::coord::Shift;
@@ -37,8 +35,6 @@ fn draw<DB: DrawingBackend>(
     let panels = plots.split_evenly((1, design.tasks.len().max(1)));
     let techniques = &design.techniques;
     let levels = &design.feedback;
-    let group_width = 0.76;
-    let bar_width = group_width / levels.len().max(1) as f64;
     for (panel, task) in panels.iter().zip(&design.tasks) {
         let means = |t, fb| -> Vec<f64> {
             per_seed
@@ -50,36 +46,7 @@ fn draw<DB: DrawingBackend>(
         let top =
             techniques.iter().flat_map(|&t| levels.iter().flat_map(move |&fb| means(t, fb))).fold(0.0f64, f64::max);
         let y_max = if top > 0.0 { top * 1.1 } else { 1.0 };
-        let n = techniques.len();
-        let mut chart = ChartBuilder::on(panel)
-            .caption(capitalized(task), (FONT, CAPTION_SIZE))
-            .margin(12)
-            .x_label_area_size(60)
-            .y_label_area_size(78)
-            .build_cartesian_2d(CategoryAxis { n }, 0.0..y_max)
-            .map_err(e)?;
-        let label = |x: &f64| {
-            let i = x.round();
-            if (x - i).abs() < 1e-6 && i >= 0.0 && (i as usize) < n {
-                techniques[i as usize].label().to_owned()
-            } else {
-                String::new()
-            }
-        };
-        chart
-            .configure_mesh()
-            .disable_x_mesh()
-            .light_line_style(WHITE)
-            .bold_line_style(BLACK.mix(0.12))
-            .x_labels(n)
-            .x_label_formatter(&label)
-            .y_label_formatter(&|y| format!("{y:.0}"))
-            .x_desc("Technique")
-            .y_desc("Completion time (s)")
-            .label_style((FONT, TEXT_SIZE))
-            .axis_desc_style((FONT, TEXT_SIZE))
-            .draw()
-            .map_err(e)?;
+        let mut chart = task_chart(panel, task, techniques, y_max)?;
         for (ti, &technique) in techniques.iter().enumerate() {
             for (li, &fb) in levels.iter().enumerate() {
                 let values = means(technique, fb);
@@ -87,8 +54,7 @@ fn draw<DB: DrawingBackend>(
                     continue;
                 }
                 let mean = values.iter().sum::<f64>() / values.len() as f64;
-                let x0 = ti as f64 - group_width / 2.0 + li as f64 * bar_width;
-                let (x0, x1) = (x0 + 0.02, x0 + bar_width - 0.02);
+                let (x0, x1) = bar_span(ti, li, levels.len());
                 let (color, _) = feedback_style(fb);
                 chart
                     .draw_series(std::iter::once(Rectangle::new([(x0, 0.0), (x1, mean)], color.mix(0.55).filled())))
