@@ -6,6 +6,7 @@
 
 mod config;
 mod error;
+mod face_friction;
 mod groups;
 mod magnified;
 mod object;

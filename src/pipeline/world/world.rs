@@ -2,6 +2,7 @@
 
 use super::config::WorldConfig;
 use super::error::WorldError;
+use super::face_friction::FaceFriction;
 use super::groups::Layer;
 use super::magnified::MagnifiedDispatcher;
 use super::ray::RayHit;
@@ -140,6 +141,8 @@ impl World {
             .restitution(t.restitution)
             .collision_groups(Layer::Environment.groups())
             .user_data(ENV_TAG)
+            // Faces resting on it rub at their mean radius (face_friction.rs).
+            .active_hooks(ActiveHooks::MODIFY_SOLVER_CONTACTS)
             .build();
         let mut env = vec![physics.colliders.insert(table)];
         if t.walls {
@@ -257,7 +260,7 @@ impl World {
         if self.config.sleeping && !self.physics.soft_bodies.is_empty() {
             soft::wake_touched(&mut self.physics);
         }
-        self.physics.step();
+        self.physics.step_with_events(&FaceFriction, &());
         self.time += f64::from(self.config.dt);
         self.stats.steps += 1;
 
