@@ -28,14 +28,6 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      finger slides it before tipping it; particles that slip over the top pull with their full friction instead \
      (1.5 x 1.5 N = 2.25 N, particles combining friction by the larger coefficient), above the 1.49 N that tips it, \
      and the rocking cap makes them slip";
-const FINGERTIP_FRICTION: &str = "two fingertips twisting 90 degrees about the box centre turn it 43.3: their particles \
-     slide over the top at full friction (measured: 4.2 N of friction on 3.0 N of press, mu 1.41) about 1.9 cm from \
-     the centre. Until session 10 rapier held the box on the table by four contact points at its corners, 4.2 cm out, \
-     so the table resisted turning 1.85x as hard as the same press spread over the 6 cm face (mean radius 0.38 of the \
-     side, 2.3 cm), and the box turned 21.7; the table's contacts now rub at the face's mean radius \
-     (pipeline/world/face_friction.rs), which took it to 43.3 and Proxy's two cubes from 44.1 to 57.2. What is left, \
-     not yet measured: why the particles still slide over the top rather than carry it (it turns at half their \
-     rate)";
 const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each other (21.6 for Particle's forearms) \
      once the two swept fronts meet, after 1.6 s (hands 20 cm apart, room for every piece): the pushers, \
      re-placed where the hands are each frame, never yield, so pieces caught between the fronts are squeezed instead \
@@ -52,13 +44,11 @@ const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each o
      spins a ball 65-76 degrees (the paper: little grip of spherical objects), carries one under a flat hand 0.76 \
      of the way, and a stack of five boxes under a pressing hand sinks 10 mm; so rapier's default stays";
 
-use Metric::{Along as Distance, Carry, MaxOverlap as Overlap, Yaw as Turn};
+use Metric::{Along as Distance, Carry, MaxOverlap as Overlap};
 use TechniqueKind::{Hybrid, Joint, Particle};
 
 /// The known gaps, as measured by `surfacelab behaviours` on this build.
 pub const GAPS: &[Gap] = &[
-    Gap { case: "two_finger_twist", technique: Particle, metric: Turn, why: FINGERTIP_FRICTION },
-    Gap { case: "two_finger_twist", technique: Hybrid, metric: Turn, why: FINGERTIP_FRICTION },
     Gap { case: "cylinder_top_drag", technique: Particle, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
     Gap { case: "cylinder_top_drag", technique: Hybrid, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
     Gap {

@@ -222,7 +222,16 @@ impl Pipeline {
                     Some(prev) if track.age > 0 => {
                         let guess = rigid_guess(px, blob.weighted_centroid, track.velocity, track.rotation);
                         if interest.wants(px, guess, p.search_radius as f32) {
-                            (self.matcher.flow_at(prev, image, [e.x, e.y], guess).unwrap_or([0.0, 0.0]), true)
+                            // A round contact's turn does not show in its
+                            // image: the flow takes it from the tracker.
+                            let hidden_turn = if track.round {
+                                let moved = rigid_guess(px, blob.weighted_centroid, track.velocity, 0.0);
+                                [guess[0] - moved[0], guess[1] - moved[1]]
+                            } else {
+                                [0.0, 0.0]
+                            };
+                            let flow = self.matcher.flow_at_turning(prev, image, [e.x, e.y], guess, hidden_turn);
+                            (flow.unwrap_or([0.0, 0.0]), true)
                         } else {
                             ([0.0, 0.0], false)
                         }
