@@ -75,6 +75,7 @@ behaviour_tests!(
     pin_and_spin_small_box,
     pin_and_spin_one_box,
     two_finger_twist,
+    two_finger_twist_slow,
     flat_hand_turn,
     heavy_flat_hand,
     heavy_fingertip,

@@ -145,6 +145,17 @@ pub fn cases() -> Vec<Case> {
             vec![Check::at_least(Metric::Yaw, 45.0), Check::at_most(Metric::FollowError, 0.02)],
             vec![],
         ),
+        // The same twist over 3 s instead of 1.5: a twist whose fingers
+        // stick to the box turns it as far however slowly it is made.
+        case(
+            "two_finger_twist_slow",
+            "tasks/cases/small_box.toml",
+            "assets/gestures/behaviours/two_finger_twist_slow.toml",
+            "box",
+            "Figure 2, middle; Figure 11: \"two-fingered rotation by applying torque to align a box\"",
+            vec![Check::at_least(Metric::Yaw, 45.0), Check::at_most(Metric::FollowError, 0.02)],
+            vec![],
+        ),
         // A flat hand turns 90° in place on the 14 cm box.
         case(
             "flat_hand_turn",
