@@ -41,7 +41,10 @@ const SLOW_TWIST_PARTICLE: &str = "the same twist at half the speed (3 s) turns 
      turns 16.4. Tried: a round contact's particles moving with its tracked motion alone (turn included): \
      34.8 -> 46.8 here and 52.0 -> 64.2 at 1.5 s, but a light touch rolling a ball made 3x slower stopped \
      rolling it (6.1 -> 0.0 cm) and a clockwise pin and spin over 3 s on the small box turned it 26 degrees \
-     instead of 49 with the pinned point sliding 4.3 cm; not kept";
+     instead of 49 with the pinned point sliding 4.3 cm; not kept. Weighing a round contact's along-outline flow \
+     against its tracked motion instead (the two counting equally where their curvatures are equal) gave 46.1 \
+     here, 61.1 at 1.5 s and 44-46 for pin and spin over 3 s on the 14 cm box (17-36 now), with the same two \
+     losses (0.7 cm, 18 degrees); not kept either";
 const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each other (21.6 for Particle's forearms) \
      once the two swept fronts meet, after 1.6 s (hands 20 cm apart, room for every piece): the pushers, \
      re-placed where the hands are each frame, never yield, so pieces caught between the fronts are squeezed instead \
