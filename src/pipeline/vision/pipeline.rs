@@ -77,7 +77,8 @@ pub struct Contact {
     /// Weighted-centroid motion, pixels per frame.
     pub velocity_px: [f32; 2],
     /// Principal-axis turn, radians per frame, image orientation (negate
-    /// for the table); 0 for round blobs.
+    /// for the table); smoothed over frames for nearly round blobs, 0 for
+    /// round ones (see `Tracked::rotation`).
     pub rotation_rad: f32,
     /// Frames since the contact appeared (0 = new).
     pub age_frames: u32,

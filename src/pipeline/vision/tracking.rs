@@ -65,9 +65,9 @@ impl Default for BlobTrackerParams {
     /// seen (`two_finger_twist`: 43.3 degrees of 90). From 1.08, smoothed
     /// over 12 frames (0.2 s), fewer for longer blobs, the twist turns 52.0
     /// (`surfacelab behaviours`; 49.7 over 8 frames and 54.2 over 20, which
-    /// lag more; frame by frame, the jitter took it to 29.9). A flat hand (1.56), a forearm (3.67) or
-    /// a hand's edge (6.29) is past 1.3, so its turn is measured frame by
-    /// frame as before.
+    /// lag more; frame by frame, the jitter took it to 29.9). A flat hand
+    /// (1.56), a forearm (3.67) or a hand's edge (6.29) is past 1.3, so its
+    /// turn is measured frame by frame as before.
     fn default() -> Self {
         Self { max_jump_px: 40.0, min_elongation: 1.08, steady_elongation: 1.3, max_turn_frames: 12 }
     }
@@ -120,8 +120,11 @@ pub struct Tracked {
     /// Weighted-centroid motion, pixels per frame.
     pub velocity: [f32; 2],
     /// Turn of the principal axis since the previous frame, radians per
-    /// frame in image orientation (positive = clockwise on screen); 0 for
-    /// round blobs and in frames where the contact merged or split.
+    /// frame in image orientation (positive = clockwise on screen), of the
+    /// axis smoothed for blobs under [`BlobTrackerParams::steady_elongation`]
+    /// (see [`SmoothedAxis`]); 0 for blobs under
+    /// [`BlobTrackerParams::min_elongation`] and in frames where the contact
+    /// merged or split.
     pub rotation: f32,
     /// Too round for its turn to show in its image (elongation under
     /// [`BlobTrackerParams::steady_elongation`]): the flow along its outline
@@ -666,7 +669,7 @@ mod tests {
     }
 
     #[test]
-    fn rounder_blobs_average_their_turn_over_more_frames() {
+    fn rounder_blobs_smooth_their_axis_over_more_frames() {
         let p = BlobTrackerParams::default();
         assert_eq!(p.turn_frames(p.min_elongation), p.max_turn_frames);
         assert_eq!(p.turn_frames(p.steady_elongation), 1);
