@@ -10,7 +10,8 @@ use surfacelab::pipeline::surface::{
 
 use surfacelab::input::{Button, Gesture, GestureRecorder, Modifiers, Mouse, MouseEvent};
 use surfacelab::pipeline::vision::{
-    BlockMatcher, FlowInterest, Pipeline, VisionFrame, VisionParams, find_blobs, signed_area, sobel_at, threshold,
+    BlobTrackerParams, BlockMatcher, FlowInterest, Pipeline, VisionFrame, VisionParams, find_blobs, signed_area,
+    sobel_at, threshold,
 };
 
 fn sensor() -> Sensor {
@@ -199,7 +200,7 @@ fn flow_recovers_a_known_rotation_of_a_flat_hand() {
 /// Two fingertips turning a quarter turn in 1.5 s about the point between
 /// them (the behaviour suite's `two_finger_twist`): 0.017 rad and about 0.2
 /// px a frame. A fingertip patch is nearly round, so its outline barely
-/// changes as it turns; the turn must come from the tracked axis, averaged
+/// changes as it turns; the turn must come from the tracked axis, smoothed
 /// over frames, and reach the flow along the outline. Without both, each
 /// fingertip's flow was a pure translation (mean turn about its centroid
 /// 0.000 rad a frame) and particles braked the box they twisted.
@@ -218,7 +219,7 @@ fn flow_carries_the_turn_of_a_twisting_fingertip() {
         let frame = p.process(&draw(&[pair(k)]));
         assert_eq!(frame.contacts.len(), 2, "frame {k}: two fingertips");
         if k < 20 {
-            continue; // the trail fills (12 frames) and the turn settles
+            continue; // the smoothed axis (12 frames) settles on the turn
         }
         for c in &frame.contacts {
             // Counter-clockwise on the table is negative in image orientation.
@@ -244,10 +245,11 @@ fn flow_carries_the_turn_of_a_twisting_fingertip() {
 }
 
 /// Which contacts have their turn measured frame by frame (elongation at
-/// least 1.3, see `BlobTrackerParams`): a flat hand, an edge and a forearm
-/// do; a fingertip does not.
+/// least `BlobTrackerParams::steady_elongation`, 1.3): a flat hand, an edge
+/// and a forearm do; a fingertip does not.
 #[test]
 fn elongation_of_each_hand_kind() {
+    let steady = BlobTrackerParams::default().steady_elongation;
     let mut p = Pipeline::default();
     for (kind, long) in [
         (HandKind::FlatHand, true),
@@ -258,7 +260,7 @@ fn elongation_of_each_hand_kind() {
         let frame = p.process(&draw(&[Hand::new(1, kind, 0.0, 0.0).with_angle(0.3)]));
         let e = frame.contacts[0].blob.ellipse.elongation();
         eprintln!("{kind:?}: elongation {e:.2}");
-        assert_eq!(e >= 1.3, long, "{kind:?}: elongation {e}");
+        assert_eq!(e >= steady, long, "{kind:?}: elongation {e}");
     }
 }
 
