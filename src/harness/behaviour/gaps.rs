@@ -44,7 +44,13 @@ const SLOW_TWIST_PARTICLE: &str = "the same twist at half the speed (3 s) turns 
      instead of 49 with the pinned point sliding 4.3 cm; not kept. Weighing a round contact's along-outline flow \
      against its tracked motion instead (the two counting equally where their curvatures are equal) gave 46.1 \
      here, 61.1 at 1.5 s and 44-46 for pin and spin over 3 s on the 14 cm box (17-36 now), with the same two \
-     losses (0.7 cm, 18 degrees); not kept either";
+     losses (0.7 cm, 18 degrees); not kept either. Measuring a slow contact's flow over the last k <= 8 frames \
+     in which none of its points moved more than 1 px (the same 0.1 px error spread over k frames of motion) \
+     gave 41.5 here, 64.0 for the 1.5 s twist and 73.5 for pin and spin on the small box, but the light touch \
+     on a ball rolled it 0.2 cm instead of 10.7: that case is chaotic where the fingertip ends over the \
+     ball's far flank (of 15 variants of it, rests of 0.05-0.15 s and ends 5.5-7.5 cm on, 1 rolls back today \
+     and 2 with the longer baseline), so neither can land until the far-flank push is understood (the \
+     branch experiment/flow-baseline keeps the code)";
 const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each other (21.6 for Particle's forearms) \
      once the two swept fronts meet, after 1.6 s (hands 20 cm apart, room for every piece): the pushers, \
      re-placed where the hands are each frame, never yield, so pieces caught between the fronts are squeezed instead \
@@ -59,7 +65,15 @@ const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each o
      (recycling off, or at 0.5 mm) leaves the sweeps at 11-15 mm, because the deepest overlaps are then pieces \
      climbing onto each other and pressed down (vertical normals), and it breaks three other cells: Proxy then \
      spins a ball 65-76 degrees (the paper: little grip of spherical objects), carries one under a flat hand 0.76 \
-     of the way, and a stack of five boxes under a pressing hand sinks 10 mm; so rapier's default stays";
+     of the way, and a stack of five boxes under a pressing hand sinks 10 mm; so rapier's default stays. \
+     Session 12's probe of gather_hand_edges (Particle 11.7, Joint 13.5 mm now): 8 or 16 solver iterations, \
+     60 or 120 Hz contacts, or 120 or 240 Hz steps all leave the deepest overlap at 8-24 mm; 16 iterations with \
+     120 Hz contacts keep the sweep itself under 1 mm until the fronts meet at 1.6 s, and 5-9 mm after, \
+     where the 30 pieces between hands 10 cm apart (about 117 of 128 cm2 there) can only climb. Left at \
+     rest after the hands lift, a chip stays 4.7 mm inside another for good, and with contact recycling off \
+     two chips end 12 mm into each other side by side, where the shortest way apart is vertical. Placing \
+     particles clear of movable objects (rather than inside them, shoved out by the solver) did not change \
+     the sweeps (12.0 and 12.9 mm)";
 
 use Metric::{Along as Distance, Carry, MaxOverlap as Overlap, Yaw as Turn};
 use TechniqueKind::{Hybrid, Joint, Particle, Proxy};
