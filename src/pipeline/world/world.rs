@@ -361,6 +361,17 @@ impl World {
         }
     }
 
+    /// Velocity (m/s) of scene object `id`'s material at world point `p`
+    /// (its centre of mass's velocity plus its spin's at `p`); zero for a
+    /// removed object.
+    pub fn object_point_velocity(&self, id: ObjectId, p: Vec3) -> Vec3 {
+        let slot = self.objects[id.index()];
+        if !slot.active {
+            return Vec3::ZERO;
+        }
+        self.physics.bodies.get(slot.body).map_or(Vec3::ZERO, |b| b.velocity_at_point(p))
+    }
+
     pub fn object_poses(&self) -> Vec<ObjectPose> {
         self.object_ids().map(|id| self.object_pose(id)).collect()
     }
