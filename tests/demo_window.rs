@@ -52,6 +52,7 @@ static XVFB: std::sync::Mutex<()> = std::sync::Mutex::new(());
 /// `XDG_RUNTIME_DIR` (Vulkan's loader complains without one) and a time limit.
 fn under_xvfb(dir: &Path, script: &str) -> Output {
     require("xvfb-run", "xvfb");
+    require("xwd", "x11-apps");
     let runtime = dir.join("xdg");
     std::fs::create_dir_all(&runtime).expect("runtime dir");
     #[cfg(unix)]
@@ -60,9 +61,15 @@ fn under_xvfb(dir: &Path, script: &str) -> Output {
         std::fs::set_permissions(&runtime, std::fs::Permissions::from_mode(0o700)).expect("chmod");
     }
     let screen = format!("-screen 0 {}x{}x24", SCREEN[0], SCREEN[1]);
+    // The script starts once the server answers: a fresh-clone CI run once
+    // had the demo refused by its display ("Failed to open connection to X
+    // server") although xvfb-run had started it.
+    let script = format!(
+        "i=0; until xwd -root -silent > /dev/null 2>&1 || [ $i -ge 100 ]; do sleep 0.1; i=$((i+1)); done\n{script}"
+    );
     let _one_at_a_time = XVFB.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     Command::new("timeout")
-        .args(["180", "xvfb-run", "-a", "-s", &screen, "sh", "-c", script])
+        .args(["180", "xvfb-run", "-a", "-s", &screen, "sh", "-c", &script])
         .env("XDG_RUNTIME_DIR", &runtime)
         .env_remove("WAYLAND_DISPLAY")
         .current_dir(dir)
