@@ -29,30 +29,13 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      (1.5 x 1.5 N = 2.25 N, particles combining friction by the larger coefficient), above the 1.49 N that tips it, \
      and the rocking cap makes them slip. Since particles give way to a surface coming at them (session 12) \
      they no longer hold the rising side of the cap down with impulses their weight cannot give: the drag \
-     here tilts it 14.9 degrees (6.3 before), and the same drag in 3 directions over 1.0, 1.5 and 2.5 s tipped \
-     it over in 4 of 9 runs (none before, Proxy 1, Joint 3)";
+     here tilts it 6.7 degrees (14.9 before slow contacts' flow was measured over several frames, 6.3 before \
+     either), and the same drag in 3 directions over 1.0, 1.5 and 2.5 s tipped it over in 4 of 9 runs (none \
+     before, Proxy 1, Joint 3)";
 const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Proxy's two cubes' box 39.2 degrees \
      against 57.2 at 1.5 s and 69.0 at 0.75 s, a coupling that loses something every step: stepped at 240 Hz \
      instead of 60 the same cubes turn it 72.5, 73.1 and 72.1 at the three speeds (a local probe with \
      `[physics] timestep_hz = 240` on a copy of small_box.toml). Not yet traced further";
-const SLOW_TWIST_PARTICLE: &str = "the same twist at half the speed (3 s) turns the box 32.4 degrees against 50.7 at \
-     1.5 s (34.8 and 52.0 before particles gave way to surfaces coming at them, and 67.0 at 0.75 s). Measured with a probe: block matching's flow at each outline point errs by 0.10 px \
-     RMS whatever the speed (0.104 px at 0.05 and 0.1 px a frame, 0.139 at 1.6) while the tracked centroid's \
-     motion is exact to 0.001 px, so at 0.1 px a frame each particle jitters as fast as the fingertip moves and \
-     rubs the box in every direction (relative velocities of -14 to +28 mm/s along the turn and -29 to +13 \
-     across it, against 10 mm/s of motion). Stepped at 240 Hz the same noise is 4x the velocity and the twist \
-     turns 16.4. Tried: a round contact's particles moving with its tracked motion alone (turn included): \
-     34.8 -> 46.8 here and 52.0 -> 64.2 at 1.5 s, but a light touch rolling a ball made 3x slower stopped \
-     rolling it (6.1 -> 0.0 cm) and a clockwise pin and spin over 3 s on the small box turned it 26 degrees \
-     instead of 49 with the pinned point sliding 4.3 cm; not kept. Weighing a round contact's along-outline flow \
-     against its tracked motion instead (the two counting equally where their curvatures are equal) gave 46.1 \
-     here, 61.1 at 1.5 s and 44-46 for pin and spin over 3 s on the 14 cm box (17-36 now), with the same two \
-     losses (0.7 cm, 18 degrees); not kept either. Measuring a slow contact's flow over the last k <= 8 frames \
-     in which none of its points moved more than 1 px (the same 0.1 px error spread over k frames of motion) \
-     gave 41.5 here, 64.0 for the 1.5 s twist and 73.5 for pin and spin on the small box, but it broke the \
-     light touch on a ball (10.7 -> 0.2 cm) while particles pressed a ball rolling into them 10x their weight; \
-     with particles giving way, it left the one box's pinned point sliding 2.1 cm (limit 2). Not landed; the \
-     branch experiment/flow-baseline keeps the code";
 const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each other (21.6 for Particle's forearms) \
      once the two swept fronts meet, after 1.6 s (hands 20 cm apart, room for every piece): the pushers, \
      re-placed where the hands are each frame, never yield, so pieces caught between the fronts are squeezed instead \
@@ -83,8 +66,6 @@ use TechniqueKind::{Hybrid, Joint, Particle, Proxy};
 /// The known gaps, as measured by `surfacelab behaviours` on this build.
 pub const GAPS: &[Gap] = &[
     Gap { case: "two_finger_twist_slow", technique: Proxy, metric: Turn, why: SLOW_TWIST_PROXY },
-    Gap { case: "two_finger_twist_slow", technique: Particle, metric: Turn, why: SLOW_TWIST_PARTICLE },
-    Gap { case: "two_finger_twist_slow", technique: Hybrid, metric: Turn, why: SLOW_TWIST_PARTICLE },
     Gap { case: "cylinder_top_drag", technique: Particle, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
     Gap { case: "cylinder_top_drag", technique: Hybrid, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
     Gap {

@@ -8,6 +8,7 @@
 //! (45x fewer candidates), and the guess resolves the aperture problem
 //! along straight outlines.
 
+use std::collections::VecDeque;
 use std::ops::Range;
 use std::time::Instant;
 
@@ -123,14 +124,24 @@ pub struct VisionFrame {
     pub timings: StageTimings,
 }
 
+/// A frame kept for the flow of later ones.
+#[derive(Debug, Clone)]
+struct PastFrame {
+    image: ContactImage,
+    /// The rows it may have lit (black elsewhere).
+    lit: Range<usize>,
+}
+
 /// Runs the stages frame after frame, keeping what flow and tracking need
-/// from the previous frame.
+/// from earlier frames.
 #[derive(Debug, Clone)]
 pub struct Pipeline {
     params: VisionParams,
     matcher: BlockMatcher,
     tracker: BlobTracker,
-    previous: Option<ContactImage>,
+    /// The last frames, newest last: as many as a slow contact's flow
+    /// baseline may span (see `Tracked::baseline`).
+    past: VecDeque<PastFrame>,
     mask: Mask,
     /// The rows the previous frame may have lit (see [`Pipeline::process_rows`]).
     lit: Range<usize>,
@@ -155,7 +166,7 @@ impl Pipeline {
                 max_jump_px: params.max_jump_px,
                 ..BlobTrackerParams::default()
             }),
-            previous: None,
+            past: VecDeque::new(),
             mask: Mask::default(),
             lit: 0..usize::MAX,
         }
@@ -165,10 +176,10 @@ impl Pipeline {
         self.params
     }
 
-    /// Forgets the previous frame and every contact.
+    /// Forgets the earlier frames and every contact.
     pub fn reset(&mut self) {
         self.tracker.reset();
-        self.previous = None;
+        self.past.clear();
         self.lit = 0..usize::MAX;
     }
 
@@ -213,25 +224,38 @@ impl Pipeline {
         timings.sobel_us = micros(t);
 
         let t = Instant::now();
-        let previous = self.previous.as_ref().filter(|q| q.width == image.width && q.height == image.height);
+        if self.past.back().is_some_and(|q| q.image.width != image.width || q.image.height != image.height) {
+            self.past.clear();
+        }
+        let past = &self.past;
         let edges = outline
             .iter()
             .map(|e| {
                 let (blob, track) = (&blobs[e.blob], &tracked[e.blob]);
                 let px = [e.x as f32, e.y as f32];
-                let (flow_px, has_flow) = match previous {
+                // The flow's baseline: one frame, or several for a slow
+                // contact (see `Tracked::baseline`), as far as frames are kept.
+                let (frames, motion, turn) = if (track.baseline as usize) <= past.len() {
+                    (track.baseline, track.baseline_motion, track.baseline_turn)
+                } else {
+                    (1, track.velocity, track.rotation)
+                };
+                let (flow_px, has_flow) = match past.len().checked_sub(frames as usize).map(|i| &past[i].image) {
                     Some(prev) if track.age > 0 => {
-                        let guess = rigid_guess(px, blob.weighted_centroid, track.velocity, track.rotation);
-                        if interest.wants(px, guess, p.search_radius as f32) {
+                        let guess = rigid_guess(px, blob.weighted_centroid, motion, turn);
+                        let k = frames as f32;
+                        let per_frame = if frames == 1 { guess } else { [guess[0] / k, guess[1] / k] };
+                        if interest.wants(px, per_frame, p.search_radius as f32) {
                             // A round contact's turn does not show in its
                             // image: the flow takes it from the tracker.
                             let hidden_turn = if track.round {
-                                let moved = rigid_guess(px, blob.weighted_centroid, track.velocity, 0.0);
+                                let moved = rigid_guess(px, blob.weighted_centroid, motion, 0.0);
                                 [guess[0] - moved[0], guess[1] - moved[1]]
                             } else {
                                 [0.0, 0.0]
                             };
                             let flow = self.matcher.flow_at_turning(prev, image, [e.x, e.y], guess, hidden_turn);
+                            let flow = flow.map(|f| if frames == 1 { f } else { [f[0] / k, f[1] / k] });
                             (flow.unwrap_or([0.0, 0.0]), true)
                         } else {
                             ([0.0, 0.0], false)
@@ -251,16 +275,8 @@ impl Pipeline {
             .collect();
         timings.flow_us = micros(t);
 
-        match &mut self.previous {
-            // Outside `changed` both frames are black.
-            Some(prev) if prev.width == image.width && prev.height == image.height => {
-                let w = image.width;
-                prev.pixels[changed.start * w..changed.end * w]
-                    .copy_from_slice(&image.pixels[changed.start * w..changed.end * w]);
-            }
-            Some(prev) => prev.clone_from(image),
-            None => self.previous = Some(image.clone()),
-        }
+        let lit = self.lit.clone();
+        self.keep(image, &lit, &changed);
         let contacts = blobs
             .into_iter()
             .zip(tracked)
@@ -274,6 +290,28 @@ impl Pipeline {
             .collect();
         timings.total_us = micros(start);
         VisionFrame { contacts, edges, timings }
+    }
+}
+
+impl Pipeline {
+    /// Keeps `image` (lit only in `rows`; `changed` covers those and the
+    /// previous frame's) for the flow of the frames to come, in the buffer
+    /// of the oldest frame kept once there are enough.
+    fn keep(&mut self, image: &ContactImage, rows: &Range<usize>, changed: &Range<usize>) {
+        let depth = self.tracker.params().max_baseline_frames.max(1);
+        let reuse = if self.past.len() >= depth { self.past.pop_front() } else { None };
+        let frame = match reuse {
+            Some(mut old) if old.image.width == image.width && old.image.height == image.height => {
+                // Outside both its lit rows and these, both frames are black.
+                let (w, copy) = (image.width, union(changed, &old.lit, image.height));
+                old.image.pixels[copy.start * w..copy.end * w]
+                    .copy_from_slice(&image.pixels[copy.start * w..copy.end * w]);
+                old.lit = rows.clone();
+                old
+            }
+            _ => PastFrame { image: image.clone(), lit: rows.clone() },
+        };
+        self.past.push_back(frame);
     }
 }
 

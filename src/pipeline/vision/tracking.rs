@@ -31,8 +31,11 @@
 //! Velocity is the weighted-centroid displacement since the previous frame,
 //! except in a frame where the contact merged or split: then the centroid
 //! jumps without anything moving, and the previous velocity carries over.
+//!
+//! A slow contact also gets a longer baseline for its flow: the frames over
+//! which its outline moved at most a pixel or so (see [`Tracked::baseline`]).
 
-use std::collections::HashSet;
+use std::collections::{HashSet, VecDeque};
 
 use super::components::{BBox, Blob, Run};
 use super::grid::BoxGrid;
@@ -54,6 +57,14 @@ pub struct BlobTrackerParams {
     /// [`SmoothedAxis`]); fewer for longer blobs, down to one (no
     /// smoothing) at `steady_elongation`.
     pub max_turn_frames: usize,
+    /// Most frames a slow contact's flow is measured over (see
+    /// [`Tracked::baseline`]); 1 measures every flow from the previous
+    /// frame alone.
+    pub max_baseline_frames: usize,
+    /// How far (px) any point of a contact may have moved over its flow's
+    /// baseline: its centroid's travel plus its turn times its semi-major
+    /// axis.
+    pub baseline_px: f32,
 }
 
 impl Default for BlobTrackerParams {
@@ -68,8 +79,31 @@ impl Default for BlobTrackerParams {
     /// lag more; frame by frame, the jitter took it to 29.9). A flat hand
     /// (1.56), a forearm (3.67) or a hand's edge (6.29) is past 1.3, so its
     /// turn is measured frame by frame as before.
+    ///
+    /// Block matching errs by about 0.1 px at each outline point whatever
+    /// the speed (0.104 px RMS at 0.05 and 0.1 px a frame, 0.139 at 1.6,
+    /// against the tracked centroid's 0.001), so a fingertip moving 0.1 px a
+    /// frame had particles jittering as fast as it moved. Over a baseline of
+    /// k frames the same error is spread over k frames of motion. Up to 16
+    /// frames (0.27 s at 60 Hz) while no point of the contact moved more
+    /// than 2 px: the error is then at most a twentieth of the motion
+    /// measured, and a contact that stops carries at most 2 px of its last
+    /// motion into the flow. Measured with `surfacelab behaviours` (twist,
+    /// slow twist, pin and spin on the small box; default stride):
+    /// per frame 50.7, 32.4, 60.1 degrees; 8 frames and 1 px 63.1, 41.7,
+    /// 61.5, with the one box's pinned point sliding 2.1 cm (limit 2); 8
+    /// and 2 px 71.9, 44.8, 76.0; 16 and 2 px 73.3, 47.3, 71.0. Two-finger
+    /// twists of my own on the small box (fingers closer together, 0.8-3 s,
+    /// both ways) turned it 13-52 degrees per frame and 31-66 with this.
     fn default() -> Self {
-        Self { max_jump_px: 40.0, min_elongation: 1.08, steady_elongation: 1.3, max_turn_frames: 12 }
+        Self {
+            max_jump_px: 40.0,
+            min_elongation: 1.08,
+            steady_elongation: 1.3,
+            max_turn_frames: 12,
+            max_baseline_frames: 16,
+            baseline_px: 2.0,
+        }
     }
 }
 
@@ -113,6 +147,46 @@ impl SmoothedAxis {
     }
 }
 
+/// A contact's last centroids and turns, newest last, for as long as it
+/// continued as one contact: the motion over its flow's baseline.
+#[derive(Debug, Clone, Default, PartialEq)]
+struct Path {
+    /// Weighted centroid (px) and the turn reported that frame (rad).
+    steps: VecDeque<([f32; 2], f32)>,
+}
+
+impl Path {
+    /// Adds this frame's centroid and turn, keeping `keep` steps.
+    fn push(&mut self, centroid: [f32; 2], turn: f32, keep: usize) {
+        if self.steps.len() >= keep.max(1) {
+            self.steps.pop_front();
+        }
+        self.steps.push_back((centroid, turn));
+    }
+
+    /// The longest baseline, up to `max` frames, over which no point within
+    /// `radius` (px) of the centroid moved more than `reach` (px) from where
+    /// it is now; with the centroid's motion and the turn over it. At least
+    /// one frame, whose motion is `velocity` and `rotation` themselves.
+    fn baseline(&self, max: usize, radius: f32, reach: f32, velocity: [f32; 2], rotation: f32) -> (u32, [f32; 2], f32) {
+        let mut best = (1, velocity, rotation);
+        let Some(&(now, _)) = self.steps.back() else { return best };
+        let mut turned = 0.0f32;
+        for (k, &(was, _)) in self.steps.iter().rev().enumerate().skip(1).take(max) {
+            // The turn of frame `k` frames back ends at that step's successor.
+            turned += self.steps[self.steps.len() - k].1;
+            let moved = [now[0] - was[0], now[1] - was[1]];
+            if moved[0].hypot(moved[1]) + turned.abs() * radius > reach {
+                break;
+            }
+            if k >= 2 {
+                best = (k as u32, moved, turned);
+            }
+        }
+        best
+    }
+}
+
 /// What tracking says about one blob of the current frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tracked {
@@ -132,6 +206,15 @@ pub struct Tracked {
     pub round: bool,
     /// Frames since the id was first seen (0 = new this frame).
     pub age: u32,
+    /// Frames its flow is measured over: the most, up to
+    /// [`BlobTrackerParams::max_baseline_frames`], over which none of its
+    /// points moved more than [`BlobTrackerParams::baseline_px`]; 1 for a
+    /// contact moving a pixel a frame or more, and where it merged or split.
+    pub baseline: u32,
+    /// Its centroid's motion (px) and turn (rad) over `baseline` frames:
+    /// `velocity` and `rotation` when that is one.
+    pub baseline_motion: [f32; 2],
+    pub baseline_turn: f32,
 }
 
 /// An identity carried by a (merged) contact.
@@ -152,6 +235,7 @@ struct Live {
     velocity: [f32; 2],
     /// Its principal-axis angle, smoothed; unset for a round blob.
     axis: SmoothedAxis,
+    path: Path,
     bbox: BBox,
     runs: Vec<Run>,
     /// Identities merged in this contact, its own included; empty when it
@@ -183,6 +267,8 @@ struct Assignment {
     /// Its smoothed axis so far, when the contact continued without a
     /// topology change (else unset).
     axis: SmoothedAxis,
+    /// Its path so far, carried with the axis.
+    path: Path,
     members: Vec<Identity>,
 }
 
@@ -352,6 +438,7 @@ impl BlobTracker {
                         birth: identities[n].birth,
                         velocity: p.velocity,
                         axis: SmoothedAxis::default(),
+                        path: Path::default(),
                         members: Vec::new(),
                     },
                     None => self.fresh(frame),
@@ -390,6 +477,7 @@ impl BlobTracker {
             birth: frame,
             velocity: [0.0, 0.0],
             axis: SmoothedAxis::default(),
+            path: Path::default(),
             members: Vec::new(),
         }
     }
@@ -414,13 +502,32 @@ impl BlobTracker {
             };
             let members = if a.members.len() > 1 { a.members } else { Vec::new() };
             let round = elongation < self.params.steady_elongation;
-            result.push(Tracked { id: a.id, velocity: a.velocity, rotation, round, age: (frame - a.birth) as u32 });
+            let mut path = a.path;
+            path.push(blob.weighted_centroid, rotation, self.params.max_baseline_frames + 1);
+            let (baseline, baseline_motion, baseline_turn) = path.baseline(
+                self.params.max_baseline_frames,
+                blob.ellipse.semi_axes[0],
+                self.params.baseline_px,
+                a.velocity,
+                rotation,
+            );
+            result.push(Tracked {
+                id: a.id,
+                velocity: a.velocity,
+                rotation,
+                round,
+                age: (frame - a.birth) as u32,
+                baseline,
+                baseline_motion,
+                baseline_turn,
+            });
             self.live.push(Live {
                 id: a.id,
                 birth: a.birth,
                 centroid: blob.weighted_centroid,
                 velocity: a.velocity,
                 axis,
+                path,
                 bbox: blob.bbox,
                 runs: blob.runs.clone(),
                 members,
@@ -508,6 +615,7 @@ fn continue_and_merge(prev: &[Live], blobs: &[Blob], m: &Matching, out: &mut [Op
                 birth: p.birth,
                 velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
                 axis: p.axis,
+                path: p.path.clone(),
                 members: p.members.clone(),
             }
         } else {
@@ -523,7 +631,14 @@ fn continue_and_merge(prev: &[Live], blobs: &[Blob], m: &Matching, out: &mut [Op
                     })
                 })
                 .collect();
-            Assignment { id: p.id, birth: p.birth, velocity: p.velocity, axis: SmoothedAxis::default(), members }
+            Assignment {
+                id: p.id,
+                birth: p.birth,
+                velocity: p.velocity,
+                axis: SmoothedAxis::default(),
+                path: Path::default(),
+                members,
+            }
         });
     }
 }
@@ -562,6 +677,7 @@ fn jump(prev: &[Live], blobs: &[Blob], m: &Matching, gate: f32, out: &mut [Optio
                 birth: p.birth,
                 velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
                 axis: p.axis,
+                path: p.path.clone(),
                 members: p.members.clone(),
             });
         }
@@ -709,6 +825,36 @@ mod tests {
         assert!(sum.abs() <= 0.16, "a still axis turned {sum} rad in all");
         let axis_turned = rate * 119.0;
         assert!((total - axis_turned).abs() < rate * 12.0 + 0.16, "{total} against {axis_turned}");
+    }
+
+    /// A path along x at `speed` px a frame, turning `turn` rad a frame.
+    fn path(frames: usize, speed: f32, turn: f32) -> Path {
+        let mut p = Path::default();
+        for k in 0..frames {
+            p.push([10.0 + speed * k as f32, 20.0], if k == 0 { 0.0 } else { turn }, 17);
+        }
+        p
+    }
+
+    #[test]
+    fn a_slow_contact_gets_the_longest_baseline_within_two_pixels() {
+        let (reach, max) = (2.0, 16);
+        // 0.1 px a frame: all 16 frames kept (1.6 px in all).
+        let (k, moved, turned) = path(30, 0.1, 0.0).baseline(max, 5.0, reach, [0.1, 0.0], 0.0);
+        assert_eq!(k, 16);
+        assert!((moved[0] - 1.6).abs() < 1e-4 && moved[1] == 0.0 && turned == 0.0, "{moved:?} {turned}");
+        // 0.75 px a frame: two frames (1.5 px); three would be 2.25.
+        let (k, moved, _) = path(30, 0.75, 0.0).baseline(max, 5.0, reach, [0.75, 0.0], 0.0);
+        assert_eq!((k, moved[0]), (2, 1.5));
+        // 3 px a frame: the frame's own velocity and turn, as given.
+        assert_eq!(path(30, 3.0, 0.01).baseline(max, 5.0, reach, [3.0, 0.0], 0.01), (1, [3.0, 0.0], 0.01));
+        // Still, but turning 0.05 rad a frame with points 10 px out: 0.5 px
+        // a frame at its rim, so four frames, and the turn over them.
+        let (k, _, turned) = path(30, 0.0, 0.05).baseline(max, 10.0, reach, [0.0, 0.0], 0.05);
+        assert_eq!(k, 4);
+        assert!((turned - 0.2).abs() < 1e-5, "{turned}");
+        // A contact seen for three frames: at most two frames back.
+        assert_eq!(path(3, 0.1, 0.0).baseline(max, 5.0, reach, [0.1, 0.0], 0.0).0, 2);
     }
 
     #[test]
