@@ -25,11 +25,12 @@
 //! `placements`); its frame cost against ball particles is in README,
 //! "Measured figures" (`cargo bench --bench frame`).
 //!
-//! Two departures from the paper, both measured (README, "Particles: what
-//! they cost" and the study notes): a particle that can touch nothing
-//! movable during its step is drawn but not simulated (`particle_cull`),
-//! and a particle never slides along a surface faster than
-//! [`MAX_SURFACE_SPEEDUP`] times the hand moves over the table.
+//! Three departures from the paper, all measured (README, "Particles: what
+//! they cost", "Behaviour suite" and the study notes): a particle that can
+//! touch nothing movable during its step is drawn but not simulated
+//! (`particle_cull`), a particle never slides along a surface faster than
+//! [`MAX_SURFACE_SPEEDUP`] times the hand moves over the table, and a
+//! particle gives way to a surface that comes at it (see `placements`).
 
 use super::proxy::{gravity_scale_for, pressure_weight, soft_mass};
 use super::sight_reach::SightReach;

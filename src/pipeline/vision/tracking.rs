@@ -33,7 +33,7 @@
 //! jumps without anything moving, and the previous velocity carries over.
 //!
 //! A slow contact also gets a longer baseline for its flow: the frames over
-//! which its outline moved at most a pixel or so (see [`Tracked::baseline`]).
+//! which its outline moved at most a couple of pixels (see [`Tracked::baseline`]).
 
 use std::collections::{HashSet, VecDeque};
 
