@@ -55,8 +55,9 @@ const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each o
      60 or 120 Hz contacts, or 120 or 240 Hz steps all leave the deepest overlap at 8-24 mm; 16 iterations with \
      120 Hz contacts keep the sweep itself under 1 mm until the fronts meet at 1.6 s, and 5-9 mm after, \
      where the 30 pieces between hands 10 cm apart (about 117 of 128 cm2 there) can only climb. Left at \
-     rest after the hands lift, a chip stays 4.7 mm inside another for good, and with contact recycling off \
-     two chips end 12 mm into each other side by side, where the shortest way apart is vertical. Placing \
+     rest after the hands lift, a chip stayed 4.7 mm inside another for good until box-box contacts were \
+     decided in the magnified frame too (session 13: parry's box-box manifold had said 0.2 mm for a tilted \
+     chip 5.6 mm deep); now the pieces at rest are 1.0-2.7 mm apart at most. Placing \
      particles clear of movable objects (rather than inside them, shoved out by the solver) did not change \
      the sweeps (12.0 and 12.9 mm)";
 
