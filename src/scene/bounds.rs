@@ -88,7 +88,7 @@ pub use crate::files::MAX_INPUT_BYTES;
 /// object's; particle and proxy sizes at most 10 cm (a fingertip is 1 cm,
 /// the default particle 3 mm).
 pub const TECHNIQUE_SIZE_M: (f32, f32) = (0.0005, 0.1);
-/// Technique masses (kg) and weights (N): a proxy is 1 kg, a particle 0.2 kg.
+/// Technique masses (kg) and weights (N): a proxy is 1 kg, a particle 0.4 kg.
 pub const TECHNIQUE_MASS_KG: (f32, f32) = MASS_KG;
 pub const TECHNIQUE_WEIGHT_N: (f32, f32) = (0.0001, 10_000.0);
 /// Gains, stiffnesses, dampings, forces, thresholds and speeds: the

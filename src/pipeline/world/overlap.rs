@@ -10,7 +10,7 @@ use crate::scene::ObjectId;
 use glam::Vec3;
 use rapier3d::parry::bounding_volume::BoundingVolume;
 use rapier3d::parry::query::{self, QueryDispatcher};
-use rapier3d::parry::shape::Capsule;
+use rapier3d::parry::shape::{Capsule, Shape};
 use rapier3d::prelude::{Pose, RigidBody};
 
 impl World {
@@ -38,6 +38,40 @@ impl World {
             }
         }
         deepest
+    }
+
+    /// How far to move `shape` at `pose` across (in x and y) so that it no
+    /// longer overlaps any movable scene object: zero when it overlaps none.
+    /// Each overlap is cleared along its contact normal's level part,
+    /// objects one after another, so two objects squeezing the shape from
+    /// both sides leave it in the last one.
+    pub fn clearance(&self, shape: &dyn Shape, pose: Pose) -> Vec3 {
+        let mut shift = Vec3::ZERO;
+        let mut reach = shape.compute_aabb(&pose);
+        for (h, object, aabb) in self.scene_colliders() {
+            let Some(id) = object.map(ObjectId::new) else { continue };
+            if !reach.intersects(aabb) || !self.is_movable(id) {
+                continue;
+            }
+            let Some(c) = self.physics().colliders.get(*h) else { continue };
+            let at = Pose::from_parts(pose.translation + shift, pose.rotation);
+            let pos12 = c.position().inv_mul(&at);
+            let Ok(Some(contact)) = MagnifiedDispatcher.contact(&pos12, c.shape(), shape, 0.0) else { continue };
+            if contact.dist >= 0.0 {
+                continue;
+            }
+            // Normal out of the object, towards the shape, in world space.
+            let n = c.position().rotation * contact.normal1;
+            let level = Vec3::new(n.x, n.y, 0.0);
+            let len = level.length();
+            if len < 1e-3 {
+                continue;
+            }
+            // Far enough across that the overlap along the normal is gone.
+            shift += level / len * (-contact.dist / len.max(0.5));
+            reach = shape.compute_aabb(&Pose::from_parts(pose.translation + shift, pose.rotation));
+        }
+        shift
     }
 
     /// Whether scene object `id` is active and dynamic (can be pushed).
