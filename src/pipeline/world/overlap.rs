@@ -41,21 +41,27 @@ impl World {
     }
 
     /// How far to move `shape` at `pose` across (in x and y) so that it no
-    /// longer overlaps any movable scene object: zero when it overlaps none.
-    /// Each overlap is cleared along its contact normal's level part,
+    /// longer overlaps any movable scene object but `resting_on` (what it
+    /// is placed on, pressing into it on purpose): zero when it overlaps
+    /// none. Each overlap is cleared along its contact normal's level part,
     /// objects one after another, so two objects squeezing the shape from
     /// both sides leave it in the last one.
-    pub fn clearance(&self, shape: &dyn Shape, pose: Pose) -> Vec3 {
+    pub fn clearance(&self, shape: &dyn Shape, pose: Pose, resting_on: Option<ObjectId>) -> Vec3 {
         let mut shift = Vec3::ZERO;
         let mut reach = shape.compute_aabb(&pose);
         for (h, object, aabb) in self.scene_colliders() {
             let Some(id) = object.map(ObjectId::new) else { continue };
-            if !reach.intersects(aabb) || !self.is_movable(id) {
+            if Some(id) == resting_on || !reach.intersects(aabb) || !self.is_movable(id) {
                 continue;
             }
             let Some(c) = self.physics().colliders.get(*h) else { continue };
             let at = Pose::from_parts(pose.translation + shift, pose.rotation);
             let pos12 = c.position().inv_mul(&at);
+            // Most shapes near an object do not overlap it: GJK's yes or no
+            // first, the depth (EPA, magnified) only for the few that do.
+            if !MagnifiedDispatcher.intersection_test(&pos12, c.shape(), shape).is_ok_and(|t| t.intersecting) {
+                continue;
+            }
             let Ok(Some(contact)) = MagnifiedDispatcher.contact(&pos12, c.shape(), shape, 0.0) else { continue };
             if contact.dist >= 0.0 {
                 continue;
