@@ -31,11 +31,19 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      they no longer hold the rising side of the cap down with impulses their weight cannot give: the drag \
      here tilts it 6.7 degrees (14.9 before slow contacts' flow was measured over several frames, 6.3 before \
      either), and the same drag in 3 directions over 1.0, 1.5 and 2.5 s tipped it over in 4 of 9 runs (none \
-     before, Proxy 1, Joint 3)";
+     before, Proxy 1, Joint 3). Since particles are 0.4 kg and created clear of movable objects (session 13) \
+     the drag here tilts it 6.5 degrees and moves it 0.2 cm; an independent audit's 9 top drags (floor, \
+     platform, steering task; 1-2 s) tip it in 14 of 18 Particle and Hybrid runs (10 before; Joint 3 of 9, \
+     Proxy none)";
 const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Proxy's two cubes' box 39.2 degrees \
      against 57.2 at 1.5 s and 69.0 at 0.75 s, a coupling that loses something every step: stepped at 240 Hz \
      instead of 60 the same cubes turn it 72.5, 73.1 and 72.1 at the three speeds (a local probe with \
-     `[physics] timestep_hz = 240` on a copy of small_box.toml). Not yet traced further";
+     `[physics] timestep_hz = 240` on a copy of small_box.toml). Traced in session 13 to rapier's contact \
+     recycling: a pair whose relative pose drifts less than 0.05 x length_unit (5 mm) while neither body turns \
+     more than 11 degrees keeps its contact points, normal and separation frozen, so a slowly turning box is \
+     held at stale points. With recycling off, Proxy turns it 59.9 degrees, but its cube then spins a ball \
+     75.9 degrees (the paper's limit: little grip of spherical objects) and carries one under a flat hand 0.76 \
+     of the way (at most 0.75), so rapier's default stays (38.7 degrees)";
 const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each other (21.6 for Particle's forearms) \
      once the two swept fronts meet, after 1.6 s (hands 20 cm apart, room for every piece): the pushers, \
      re-placed where the hands are each frame, never yield, so pieces caught between the fronts are squeezed instead \
@@ -59,7 +67,11 @@ const PILE_CONTACTS: &str = "light pieces (10 g) still sink 10-14 mm into each o
      decided in the magnified frame too (session 13: parry's box-box manifold had said 0.2 mm for a tilted \
      chip 5.6 mm deep); now the pieces at rest are 1.0-2.7 mm apart at most. Placing \
      particles clear of movable objects (rather than inside them, shoved out by the solver) did not change \
-     the sweeps (12.0 and 12.9 mm)";
+     the sweeps (12.0 and 12.9 mm; 12.0 and 12.6 with them 0.4 kg). Session 13's probe of the sweep: before \
+     the fronts meet, two chips pushed end to end sank 0.7 to 4 mm into each other while rapier's recycled \
+     contact between them still said 0.7 mm (its separation is frozen with the points); with recycling off \
+     and 120 Hz contacts the sweep stays under 1 mm until the fronts meet and the squeeze there still reaches \
+     11 mm, while the row of chips, pushed end to end between two hands that never yield, buckles";
 
 use Metric::{Along as Distance, Carry, MaxOverlap as Overlap, Yaw as Turn};
 use TechniqueKind::{Hybrid, Joint, Particle, Proxy};
@@ -74,7 +86,7 @@ pub const GAPS: &[Gap] = &[
         technique: Particle,
         metric: Carry,
         why: "the flat hand's trailing edge reaches the ball's silhouette, and the line-of-sight capsules there push \
-              it at the equator at the hand's speed (0.95 of its travel; with ball particles, 0.41, but those ride over \
+              it at the equator at the hand's speed (0.94 of its travel; with ball particles, 0.41, but those ride over \
               the steering cylinder's far side); a real hand on top of a ball never reaches the table behind it. \
               Measured with a probe of the ball's contact impulses each step: every push comes from behind at the \
               equator (normals within 17 degrees of level), none from the top, because only the outline makes \
@@ -87,7 +99,7 @@ pub const GAPS: &[Gap] = &[
         technique: Hybrid,
         metric: Carry,
         why: "as for Particle: a flat hand landing on a ball makes no grips (it rests on the ball), and its trailing \
-              edge's line-of-sight capsules reach the ball's silhouette and push it at the hand's speed (0.95)",
+              edge's line-of-sight capsules reach the ball's silhouette and push it at the hand's speed (0.94)",
     },
     Gap { case: "gather_hand_edges", technique: Joint, metric: Overlap, why: PILE_CONTACTS },
     Gap { case: "gather_hand_edges", technique: Particle, metric: Overlap, why: PILE_CONTACTS },

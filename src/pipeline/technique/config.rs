@@ -88,9 +88,8 @@ pub struct TechniqueConfig {
     /// 9.1 at 0.2, 9.5 at 0.4 and 9.8 at 1 kg. Heavier particles also push
     /// harder than the behaviour suite lets a hand: from 0.8 kg two flat
     /// hands carried the grasp block 0.92-0.95 of the way without gripping
-    /// it (their palms reach over its top and behind it), and at 1 kg the
-    /// steering cylinder dragged by its top tipped in 14 of 18 drags of an
-    /// independent audit (8 at 0.4; README, "Behaviour suite", session 13).
+    /// it (their palms reach over its top and behind it; README, "Behaviour
+    /// suite", session 13).
     pub particle_mass: f32,
     /// Particle weight (N): press per particle, as for proxies. Friction
     /// therefore grows with contact area (the paper's observation).
