@@ -49,6 +49,20 @@ fn run_writes_the_documented_report() {
     assert_eq!(r["nan_count"], 0);
     let x = r["objects"][0]["position"][0].as_f64().expect("x");
     assert!(x > 0.08, "the proxy drag moved the box {x} m");
+    // Where it started (the scene puts the box at the centre, resting on
+    // the table) and how far it tipped on the way: never less than it is
+    // tipped at the end.
+    let obj = &r["objects"][0];
+    let f = |v: &serde_json::Value| v.as_f64().expect("number");
+    let start: Vec<f64> = (0..3).map(|i| f(&obj["start_position"][i])).collect();
+    assert!(start[0].abs() < 1e-6 && start[1].abs() < 1e-6 && start[2] > 0.0, "start {start:?}");
+    assert!((f(&obj["start_rotation"][3]).abs() - 1.0).abs() < 1e-6, "starts unturned: {obj}");
+    let q: Vec<f64> = (0..4).map(|i| f(&obj["rotation"][i])).collect();
+    // The z of the box's up axis, turned by quaternion (x, y, z, w).
+    let up_z = 1.0 - 2.0 * (q[0] * q[0] + q[1] * q[1]);
+    let end_tilt = up_z.clamp(-1.0, 1.0).acos().to_degrees();
+    let max_tilt = f(&obj["max_tilt_deg"]);
+    assert!(max_tilt + 1e-3 >= end_tilt && max_tilt < 45.0, "max tilt {max_tilt} against {end_tilt} at the end");
 }
 
 /// `run` on a soft scene reports each soft body: the torn paper in two

@@ -3,9 +3,11 @@
 //! the tests all drive this same loop, so they cannot drift apart.
 
 pub mod goal;
+mod object_track;
 mod report;
 #[allow(clippy::module_inception)]
 mod session;
 
+pub use object_track::{ObjectTrack, tilt};
 pub use report::{ObjectReport, RunReport, StageMeans};
 pub use session::{Session, SessionError, SessionOptions, StageTimes};

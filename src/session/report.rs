@@ -22,6 +22,14 @@ pub struct ObjectReport {
     /// Quaternion x, y, z, w.
     pub rotation: [f32; 4],
     pub linvel: [f32; 3],
+    /// Where it was when the run started (session 13): the displacement is
+    /// `position - start_position` without reading the scene file.
+    pub start_position: [f32; 3],
+    /// Quaternion x, y, z, w at the start.
+    pub start_rotation: [f32; 4],
+    /// Largest angle (degrees) its up axis made with the vertical at any
+    /// step: a cylinder that tipped over and was stood back up shows it.
+    pub max_tilt_deg: f32,
     /// False once it vanished (placed on its positioning target).
     pub active: bool,
     /// How deep it lies inside where the goal wants it (m): its whole
@@ -116,11 +124,15 @@ impl RunReport {
             .object_ids()
             .map(|id| {
                 let (o, p) = (scene.object(id), w.object_pose(id));
+                let track = session.object_tracks()[id.index()];
                 ObjectReport {
                     name: o.name.clone(),
                     position: p.position.to_array(),
                     rotation: p.rotation.to_array(),
                     linvel: p.linvel.to_array(),
+                    start_position: track.start_position.to_array(),
+                    start_rotation: track.start_rotation.to_array(),
+                    max_tilt_deg: track.max_tilt.to_degrees(),
                     active: p.active,
                     goal_depth_m: session.tracker().depth(id),
                 }

@@ -11,6 +11,7 @@ use crate::pipeline::vision::{Pipeline, VisionFrame, VisionParams};
 use crate::pipeline::world::{World, WorldError};
 use crate::scene::Scene;
 use crate::session::goal::{GoalTracker, Progress};
+use crate::session::object_track::ObjectTrack;
 use std::time::Instant;
 
 #[derive(Debug, thiserror::Error)]
@@ -104,6 +105,8 @@ pub struct Session {
     frames: u64,
     max_counts: TechniqueCounts,
     measure_penetration: bool,
+    /// Each scene object's start and largest tilt (see `ObjectTrack`).
+    tracks: Vec<ObjectTrack>,
 }
 
 impl std::fmt::Debug for Session {
@@ -124,6 +127,7 @@ impl Session {
         };
         let effects = scene.effects.union(kind.required_effects());
         let world = World::with_effects(scene, effects);
+        let tracks = world.object_poses().iter().map(ObjectTrack::new).collect();
         let sensor = Sensor::new(options.sensor_px.0, options.sensor_px.1, scene.table.width, scene.table.depth);
         let mut vision_params = options.vision;
         vision_params.stride = config.particle_stride;
@@ -146,6 +150,7 @@ impl Session {
             frames: 0,
             max_counts: TechniqueCounts::default(),
             measure_penetration: options.measure_penetration,
+            tracks,
         })
     }
 
@@ -190,6 +195,9 @@ impl Session {
             self.world.measure_penetration();
         }
         let t4 = Instant::now();
+        for (track, pose) in self.tracks.iter_mut().zip(self.world.object_poses()) {
+            track.update(&pose);
+        }
         self.progress = self.tracker.update(&mut self.world);
         self.last = StageTimes {
             rasterize_us: (t1 - t0).as_secs_f64() * 1e6,
@@ -223,6 +231,7 @@ impl Session {
         self.vision.reset();
         self.tracker = GoalTracker::new(&self.scene);
         self.progress = Progress::default();
+        self.tracks = self.world.object_poses().iter().map(ObjectTrack::new).collect();
     }
 
     /// Simulated seconds.
@@ -240,6 +249,11 @@ impl Session {
 
     pub fn technique_kind(&self) -> TechniqueKind {
         self.kind
+    }
+
+    /// Each scene object's start and largest tilt so far, by object index.
+    pub fn object_tracks(&self) -> &[ObjectTrack] {
+        &self.tracks
     }
 
     pub fn world(&self) -> &World {

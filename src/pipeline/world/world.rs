@@ -234,14 +234,14 @@ impl World {
         (&mut self.soft, &mut self.physics)
     }
 
-    /// The rapier world, mutable: for this module only. Techniques go
-    /// through `technique_body.rs` and `object.rs`, which cannot remove or
-    /// teleport a scene object.
     /// The rigid scene colliders with their object index and cached AABB.
     pub(super) fn scene_colliders(&self) -> &[(ColliderHandle, Option<usize>, Aabb)] {
         &self.scene_colliders
     }
 
+    /// The rapier world, mutable: for this module only. Techniques go
+    /// through `technique_body.rs` and `object.rs`, which cannot remove or
+    /// teleport a scene object.
     pub(super) fn physics_mut(&mut self) -> &mut PhysicsWorld {
         &mut self.physics
     }
