@@ -356,9 +356,9 @@ mod tests {
         // parry's box-box manifold drops the crossings of the two faces'
         // edges wherever `closest_points_line2d`'s determinant, in m^4,
         // falls under f32::EPSILON: for 2 cm edges at any angle. Measured:
-        // 286 of 1924 chip pairs more than 1 mm off; a chip resting tilted
+        // 288 of these 1927 pairs more than 1 mm off; a chip resting tilted
         // on another sank 5.6 mm into it for good while its manifold said
-        // 0.2 mm (`surfacelab behaviours`, gather_hand_edges). Magnified,
+        // 0.2 mm (a probe of the gather_hand_edges case). Magnified,
         // 4 of these 1927 pairs are still off: steeply tilted pairs whose
         // faces meet obliquely, where clipping one face against the other
         // in projection is itself an approximation, at any scale.
