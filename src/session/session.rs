@@ -195,8 +195,9 @@ impl Session {
             self.world.measure_penetration();
         }
         let t4 = Instant::now();
-        for (track, pose) in self.tracks.iter_mut().zip(self.world.object_poses()) {
-            track.update(&pose);
+        // Every frame of every run: read the poses in place, no list built.
+        for (track, id) in self.tracks.iter_mut().zip(self.world.object_ids()) {
+            track.update(&self.world.object_pose(id));
         }
         self.progress = self.tracker.update(&mut self.world);
         self.last = StageTimes {

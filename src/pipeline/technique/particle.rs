@@ -39,7 +39,7 @@ use super::surface_point::{clamp_len, project_flow, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::FlowInterest;
-use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError};
+use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError, highest_top};
 use glam::{Vec2, Vec3};
 use rapier3d::parry::shape::{Ball, Capsule};
 use rapier3d::prelude::*;
@@ -216,7 +216,7 @@ impl ParticleTechnique {
         let mut culled = Vec::new();
         // Nothing movable reaches above `top`: the part of a line-of-sight
         // capsule above it cannot be inside anything to clear it out of.
-        let top = world.movable_reach().iter().flat_map(|b| b.bound.corners(0.0)).fold(0.0f32, |top, c| top.max(c.z));
+        let top = reach.as_ref().map_or_else(|| highest_top(&world.movable_reach()), SightReach::highest_top);
         let (length, ball) = (Self::sight_length(world), Ball::new(r));
         for e in samples {
             let here = table_point(input.sensor, e.px);

@@ -17,7 +17,7 @@
 
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{ConvexRegion, FlowInterest};
-use crate::pipeline::world::{Reach, World};
+use crate::pipeline::world::{Reach, World, highest_top};
 use glam::{Vec2, Vec3};
 
 /// Below this share of the eye's height left above a grown body, the
@@ -77,6 +77,12 @@ impl SightReach {
         });
         let regions = outlines.iter().filter_map(|o| ConvexRegion::hull_of(o)).collect();
         Self { outlines, regions, bodies, dt, radius, slack, magnification }
+    }
+
+    /// The highest point of any movable body now (not grown by a step's
+    /// travel), so that its caller need not collect the bodies again.
+    pub fn highest_top(&self) -> f32 {
+        highest_top(&self.bodies)
     }
 
     /// Whether a particle starting on the camera ray of glass point

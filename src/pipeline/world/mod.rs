@@ -28,7 +28,7 @@ pub use groups::{Layer, collider_layer};
 pub use magnified::{MAGNIFICATION, MagnifiedDispatcher};
 pub use object::ObjectPush;
 pub use ray::RayHit;
-pub use reach::{Bound, Reach};
+pub use reach::{Bound, Reach, highest_top};
 pub use soft::SoftSurface;
 pub use soft_access::SoftPush;
 pub use stats::WorldStats;

@@ -24,6 +24,11 @@ pub enum Bound {
     Cylinder { center: Vec3, rotation: Quat, radius: f32, half_height: f32 },
 }
 
+/// The highest point (m, at least the table's 0) of any of these bounds.
+pub fn highest_top(bodies: &[Reach]) -> f32 {
+    bodies.iter().flat_map(|b| b.bound.corners(0.0)).fold(0.0f32, |top, c| top.max(c.z))
+}
+
 /// A movable body's bound, and its speed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Reach {
