@@ -5,7 +5,7 @@ use super::error::WorldError;
 use super::face_friction::FaceFriction;
 use super::groups::Layer;
 use super::magnified::MagnifiedDispatcher;
-use super::ray::RayHit;
+use super::ray::{RayHit, cylinder_hit};
 use super::soft::{self, SOFT_TAG, SoftBodies};
 use super::stats::WorldStats;
 use crate::scene::{BodyKind, Effect, EffectSet, ObjectId, Scene, Shape};
@@ -460,7 +460,19 @@ impl World {
                 continue;
             }
             let Some(c) = self.physics.colliders.get(*h) else { continue };
-            if let Some(hit) = c.shape().cast_ray_and_get_normal(c.position(), &ray, limit, true) {
+            // parry casts rays at cylinders by GJK, whose hits land up to a
+            // millimetre off the surface from the eye's distance (see
+            // `ray::cylinder_hit`): solved exactly instead.
+            let hit = match c.shape().as_cylinder() {
+                Some(cyl) => {
+                    let pose = c.position();
+                    let local = Ray::new(pose.inverse_transform_point(origin), pose.rotation.inverse() * dir);
+                    cylinder_hit(local.origin, local.dir, cyl.half_height, cyl.radius, limit)
+                        .map(|(toi, n)| RayIntersection::new(toi, pose.rotation * n, FeatureId::Unknown))
+                }
+                None => c.shape().cast_ray_and_get_normal(c.position(), &ray, limit, true),
+            };
+            if let Some(hit) = hit {
                 best = Some((*h, hit));
             }
         }
@@ -495,29 +507,7 @@ impl World {
             });
         }
         let object = if c.user_data == ENV_TAG { None } else { Some(ObjectId::new(c.user_data as usize)) };
-        let mut out = RayHit { object, point, normal: hit.normal, toi: hit.time_of_impact, soft: None };
-        if let Some(id) = object
-            && let Shape::Cylinder { radius, half_height } = self.scene.object(id).shape
-        {
-            // parry casts rays at cylinders by GJK, whose normals tilt by up
-            // to ~30° near a cap's rim; the particles' flow projection needs
-            // the true tangent plane, so compute it from the known shape.
-            let pose = *c.position();
-            let local = pose.inverse_transform_point(out.point);
-            // The collider is a y-axis cylinder rotated onto z; in its local
-            // frame the axis is y.
-            let n_local = if local.y.abs() >= half_height - 1e-3 * radius.max(half_height) {
-                Vec3::new(0.0, local.y.signum(), 0.0)
-            } else {
-                Vec3::new(local.x, 0.0, local.z).normalize_or(Vec3::X)
-            };
-            out.normal = pose.rotation * n_local;
-            if n_local.y != 0.0 {
-                let snapped = Vec3::new(local.x, half_height * local.y.signum(), local.z);
-                out.point = pose.transform_point(snapped);
-            }
-        }
-        Some(out)
+        Some(RayHit { object, point, normal: hit.normal, toi: hit.time_of_impact, soft: None })
     }
 
     /// The paper's ray cast for a contact: the camera ray through the table point.
