@@ -38,11 +38,12 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      surface, and a hit under the top near the rim got the wall's normal, so the particle there slid down into \
      the top and threw it); that fixed the same drag of a 3 cm tall cylinder (0.0 cm and tipped over -> 20.0 cm, \
      0.2 degrees) and three of the audit's side pushes, but this one moves it 0.9 cm, tilting 14.0 degrees. A \
-     5 cm box of the same mass dragged the same way goes 19.6 cm tilting 0.5 degrees; the cylinder's base as \
-     parry's inscribed square (tipping about a side at 0.71 r) is part of it: as a 12-gon of the rim it slides \
-     under a pull at its top that tips the square (0.45 of its weight; 4.9 degrees and rising), but Particle \
-     still does not drag it (0.5 cm) and Proxy's cube then rocks off its top (19.8 -> 2.0 cm), so the square \
-     stays";
+     5 cm box of the same mass dragged the same way goes 19.6 cm tilting 0.5 degrees. The cylinder's cap as \
+     parry's inscribed square (tipping about a side at 0.71 r) is part of it, but with the cap as its real disc \
+     (a 12-gon of the rim over the face; README, Session 14) Particle still does not drag it (0.5 cm, 15.7 \
+     degrees) and Proxy's cube rocks off its top in four of the audit's top drags, so the square stays. Probed: \
+     the cylinder rocks onto its front rim and yaws (up to 1.9 rad/s) while the particles slip over its top \
+     pressing by their weight only";
 const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Proxy's two cubes' box 39.2 degrees \
      against 57.2 at 1.5 s and 69.0 at 0.75 s, a coupling that loses something every step: stepped at 240 Hz \
      instead of 60 the same cubes turn it 72.5, 73.1 and 72.1 at the three speeds (a local probe with \
