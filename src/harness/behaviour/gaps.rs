@@ -42,8 +42,9 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      parry's inscribed square (tipping about a side at 0.71 r) is part of it, but with the cap as its real disc \
      (a 12-gon of the rim over the face; README, Session 14) Particle still does not drag it (0.5 cm, 15.7 \
      degrees) and Proxy's cube rocks off its top in four of the audit's top drags, so the square stays. Probed: \
-     the cylinder rocks onto its front rim and yaws (up to 1.9 rad/s) while the particles slip over its top \
-     pressing by their weight only";
+     with its tilt locked Particle drags it 19.6 cm, so it is the tipping, not the grip; as it rocks onto its \
+     front rim and back the particles' press swings from a fifth of their weight to six times it; one of 3.5 cm \
+     radius passes in three directions";
 const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Proxy's two cubes' box 39.2 degrees \
      against 57.2 at 1.5 s and 69.0 at 0.75 s, a coupling that loses something every step: stepped at 240 Hz \
      instead of 60 the same cubes turn it 72.5, 73.1 and 72.1 at the three speeds (a local probe with \
