@@ -8,6 +8,6 @@ mod report;
 #[allow(clippy::module_inception)]
 mod session;
 
-pub use object_track::{ObjectTrack, tilt};
+pub use object_track::ObjectTrack;
 pub use report::{ObjectReport, RunReport, StageMeans};
 pub use session::{Session, SessionError, SessionOptions, StageTimes};

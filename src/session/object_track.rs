@@ -30,7 +30,7 @@ impl ObjectTrack {
 
 /// Angle (rad) between a body's up axis, turned by `rotation`, and the
 /// vertical.
-pub fn tilt(rotation: Quat) -> f32 {
+fn tilt(rotation: Quat) -> f32 {
     (rotation * Vec3::Z).z.clamp(-1.0, 1.0).acos()
 }
 

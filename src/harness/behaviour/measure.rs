@@ -6,7 +6,7 @@ use crate::input::{Gesture, GestureError};
 use crate::pipeline::technique::TechniqueKind;
 use crate::scene::{self, BodyKind, SceneError};
 use crate::session::{Session, SessionError, SessionOptions};
-use glam::{Vec2, Vec3};
+use glam::Vec2;
 use std::collections::BTreeMap;
 use std::path::Path;
 
@@ -58,7 +58,6 @@ impl Measurement {
 #[derive(Debug, Default)]
 struct Track {
     yaw_rad: f32,
-    max_tilt: f32,
     max_lift: f32,
     max_drop: f32,
     max_along: f32,
@@ -109,8 +108,6 @@ pub fn run_case(case: &Case, kind: TechniqueKind, root: &Path) -> Result<Measure
         s.step(&hands)?;
         let p = s.world().object_pose(object);
         t.yaw_rad += p.angvel.z * dt as f32;
-        let up = p.rotation * Vec3::Z;
-        t.max_tilt = t.max_tilt.max(up.z.clamp(-1.0, 1.0).acos().to_degrees());
         t.max_lift = t.max_lift.max(p.position.z - start.position.z);
         t.max_drop = t.max_drop.max(start.position.z - p.position.z);
         t.max_along = t.max_along.max((p.position - start.position).truncate().dot(axis));
@@ -132,7 +129,9 @@ pub fn run_case(case: &Case, kind: TechniqueKind, root: &Path) -> Result<Measure
     values.insert(Metric::FollowError, (moved - hand_move).length());
     values.insert(Metric::Across, (moved - axis * along).length());
     values.insert(Metric::Yaw, t.yaw_rad.to_degrees());
-    values.insert(Metric::MaxTilt, t.max_tilt);
+    // The session tracks every object's largest tilt (the run report's
+    // `max_tilt_deg`); read, not tracked a second time.
+    values.insert(Metric::MaxTilt, s.object_tracks()[object.index()].max_tilt.to_degrees());
     values.insert(Metric::MaxLift, t.max_lift);
     values.insert(Metric::MaxDrop, t.max_drop);
     values.insert(Metric::MaxAlong, t.max_along);
