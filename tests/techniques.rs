@@ -229,10 +229,13 @@ fn pooled_and_per_frame_particles_give_the_same_trajectory() {
     let travel = a.last().expect("frames").x;
     assert!(travel > 0.08, "the box actually moved: {travel}");
     // Fresh per-frame contacts get no solver warm start, so with 4 solver
-    // iterations their friction converges a little less (measured: 7.9 vs
-    // 9.0 cm of travel). Within 15% of the travel, all along the way.
+    // iterations their friction converges a little less (measured: 7.8 vs
+    // 9.2 cm of travel, at worst 1.42 cm apart along the way, 15.4%; 14.7%
+    // before the fingertip, which lands on the box, pressed it with the
+    // flat of the finger too, whose points are as fresh). Within 17% of the
+    // travel, all along the way.
     let worst = a.iter().zip(&b).map(|(p, q)| (*p - *q).length()).fold(0.0f32, f32::max);
-    assert!(worst < 0.15 * travel, "pooled and per-frame particles diverge by {worst:.4} m of {travel:.3} m");
+    assert!(worst < 0.17 * travel, "pooled and per-frame particles diverge by {worst:.4} m of {travel:.3} m");
 }
 
 /// Culling the particles that can touch nothing movable (`particle_cull`)
@@ -567,5 +570,54 @@ fn a_fingertip_drags_a_box_from_anywhere_on_its_top() {
             }
         }
         assert!(short.is_empty(), "{kind}: a fingertip dragged the box less than 8 of 10 cm in {short:?}");
+    }
+}
+
+/// A hand rests on what it landed on (`particle_rest`): a flat hand laid on
+/// a ball and slid 30 cm in 1.5 s rolls it about half that, as a real ball
+/// driven at its top by a sliding palm does (0.3 to 0.75 of the hand's
+/// travel when the hand lifts, the behaviour suite's band). With the
+/// paper's particles, whose sides rise from whatever their own ray meets,
+/// the trailing edge's line-of-sight capsules stand on the table behind the
+/// ball, meet it at its equator and push it at the hand's speed.
+#[test]
+fn a_flat_hand_resting_on_a_ball_rolls_it_about_half_its_travel() {
+    let g = Gesture::load(asset("assets/gestures/behaviours/ball_under_hand.toml")).expect("gesture");
+    let carried = |rest: bool| {
+        let s = scene::load(&asset("tasks/cases/ball.toml")).expect("scene");
+        let config = TechniqueConfig { particle_rest: rest, ..TechniqueConfig::from_scene(&s).expect("config") };
+        let options = SessionOptions { config: Some(config), ..SessionOptions::default() };
+        let mut session = Session::new(&s, TechniqueKind::Particle, options).expect("session");
+        session.replay_until(&g, g.duration()).expect("replay");
+        assert_eq!(session.world().stats().nan_count, 0);
+        // The hand slides from x = 0 to 0.30; the ball starts at the origin.
+        session.world().object_pose(ObjectId::new(0)).position.x / 0.30
+    };
+    let (resting, paper) = (carried(true), carried(false));
+    println!("carried: resting {resting:.2}, sides from the table {paper:.2}");
+    assert!((0.3..=0.75).contains(&resting), "a hand resting on the ball carried it {resting:.2} of its travel");
+    assert!(paper > 0.85, "without resting the trailing edge pushed it only {paper:.2} of the way");
+}
+
+/// Landing decides what a hand rests on, not what it covers. A fingertip
+/// put down on the steering platform behind the cylinder (as the eye at the
+/// table's centre sees it) and slid 14 cm through the cylinder's place
+/// comes, in perspective, over the cylinder's top; it stands on the
+/// platform all along and pushes the cylinder's side. Resting on whatever
+/// the contact covered instead, its sides started at the cylinder's top and
+/// moved it 1.5 cm; resting on what it landed on, 6.5 cm (at least 5, the
+/// behaviour suite's side pushes).
+#[test]
+fn a_fingertip_slid_up_behind_a_tall_object_still_pushes_its_side() {
+    let text = "format = \"surfacelab-gesture\"\nversion = 1\n\n[[hands]]\nid = 1\nkind = \"fingertips\"\nfingers = 1\n\
+                keys = [\n  { t = 0.0, pos = [0.36052, 0.27638], pressure = 1.0 },\n  { t = 0.15 },\n  \
+                { t = 1.15, pos = [0.31264, 0.14482] },\n]\n";
+    let g = Gesture::from_str(text, "push_from_behind").expect("gesture");
+    for kind in [TechniqueKind::Particle, TechniqueKind::Hybrid] {
+        let s = replay("tasks/steering.toml", kind, &g, 0.5);
+        let cylinder = s.world().object_pose(ObjectId::new(1));
+        let moved = (cylinder.position.truncate() - glam::Vec2::new(0.34, 0.22)).length();
+        println!("{kind}: moved {:.1} cm", moved * 100.0);
+        assert!(moved >= 0.05, "{kind}: the push from behind moved the cylinder {:.1} cm", moved * 100.0);
     }
 }

@@ -40,6 +40,7 @@ pub enum HitTest {
 /// Parameters of all four techniques. Units: kg, m, s, N.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
+#[allow(clippy::struct_excessive_bools)] // one switch per particle variant, each a `[technique]` key
 pub struct TechniqueConfig {
     // Direct force
     /// Force per unit of relative velocity per kg of the touched object (1/s):
@@ -111,6 +112,12 @@ pub struct TechniqueConfig {
     /// (it would press on the table and nothing else). Off: the paper's
     /// every-particle-a-body.
     pub particle_cull: bool,
+    /// Hands rest on what they land on: a contact that landed on an object
+    /// holds the sides of its line-of-sight particles up at the object's
+    /// height and presses on it with the flat of the hand (see the Particle
+    /// technique's `rest` module). Off: the paper's particles, on the outline
+    /// only, each side drawn from whatever its own ray meets.
+    pub particle_rest: bool,
 
     // Shared limits
     /// Contact speeds above this are clamped (m/s): lost tracking never flings.
@@ -141,6 +148,7 @@ impl Default for TechniqueConfig {
             particle_pooled: true,
             particle_capsules: true,
             particle_cull: true,
+            particle_rest: true,
             max_contact_speed: 4.0,
             pressure: PressureMode::Off,
             hit_test: HitTest::Outline,

@@ -14,6 +14,7 @@ mod joint;
 mod kind;
 mod particle;
 mod proxy;
+mod rest;
 mod sight_reach;
 mod surface_point;
 

@@ -25,20 +25,23 @@
 //! `placements`); its frame cost against ball particles is in README,
 //! "Measured figures" (`cargo bench --bench frame`).
 //!
-//! Four departures from the paper, all measured (README, "Particles: what
+//! Five departures from the paper, all measured (README, "Particles: what
 //! they cost", "Behaviour suite" and the study notes): a particle that can
 //! touch nothing movable during its step is drawn but not simulated
 //! (`particle_cull`), a particle never slides along a surface faster than
 //! [`MAX_SURFACE_SPEEDUP`] times the hand moves over the table, a particle
-//! gives way to a surface that comes at it, and a particle is never created
-//! inside a movable object (both in `placements`).
+//! gives way to a surface that comes at it, a particle is never created
+//! inside a movable object (both in `placements`), and a hand rests on what
+//! it landed on: its sides start up there and the flat of the hand presses
+//! it (`particle_rest`, see `rest`).
 
 use super::proxy::{gravity_scale_for, pressure_weight, soft_mass};
+use super::rest::{PAD, Resting};
 use super::sight_reach::SightReach;
 use super::surface_point::{clamp_len, project_flow, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
 use crate::pipeline::surface::Sensor;
-use crate::pipeline::vision::FlowInterest;
+use crate::pipeline::vision::{EdgeSample, FlowInterest};
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError, highest_top};
 use glam::{Vec2, Vec3};
 use rapier3d::parry::shape::{Ball, Capsule};
@@ -114,6 +117,10 @@ pub struct ParticleTechnique {
     /// Contacts whose particles are balls this frame even with
     /// `particle_capsules` (see [`ParticleTechnique::set_ball_contacts`]).
     ball_contacts: Vec<u32>,
+    /// What each contact landed on, which holds its line-of-sight
+    /// particles' sides up off the table and is pressed by the flat of the
+    /// hand (see `rest`).
+    resting: Resting,
 }
 
 /// One particle to place this frame.
@@ -148,6 +155,7 @@ impl ParticleTechnique {
             reach: None,
             contacts: 0,
             ball_contacts: Vec::new(),
+            resting: Resting::default(),
         }
     }
 
@@ -218,7 +226,43 @@ impl ParticleTechnique {
         // capsule above it cannot be inside anything to clear it out of.
         let top = reach.as_ref().map_or_else(|| highest_top(&world.movable_reach()), SightReach::highest_top);
         let (length, ball) = (Self::sight_length(world), Ball::new(r));
-        for e in samples {
+        // What each hand landed on, and the flat of the hand pressing on it
+        // (see `rest`).
+        if self.config.particle_rest {
+            self.resting.update(input.frame, input.sensor, world);
+        } else {
+            self.resting.clear();
+        }
+        let presses: Vec<EdgeSample> = self
+            .resting
+            .presses()
+            .iter()
+            .map(|p| EdgeSample {
+                px: p.px,
+                flow_px: p.flow_px,
+                magnitude: 0.0,
+                grey: p.grey,
+                contact_id: p.contact_id,
+                has_flow: true,
+            })
+            .collect();
+        // A hand presses no harder for resting on something: a contact with
+        // presses spreads the press its outline alone had over outline and
+        // flat alike. Added on top instead (16 more particles' weight), the
+        // extra friction tipped a 3 cm box dragged from 1 cm behind its
+        // leading edge (47 degrees; `a_fingertip_drags_a_box_from_anywhere_on_its_top`)
+        // and the steering cylinder dragged by its top (16.1 degrees).
+        let mut counts: HashMap<u32, (u32, u32)> = HashMap::new();
+        for e in &samples {
+            counts.entry(e.contact_id).or_default().0 += 1;
+        }
+        for p in &presses {
+            counts.entry(p.contact_id).or_default().1 += 1;
+        }
+        let spread =
+            |id: u32| counts.get(&id).map_or(1.0, |&(n, m)| if n == 0 { 1.0 } else { n as f32 / (n + m) as f32 });
+        let outline = samples.into_iter().map(|e| (e, false));
+        for (e, interior) in outline.chain(presses.iter().map(|e| (e, true))) {
             let here = table_point(input.sensor, e.px);
             let Some(mut hit) = world.cast_contact_ray(here) else { continue };
             let mut next = table_point(input.sensor, [e.px[0] + e.flow_px[0], e.px[1] + e.flow_px[1]]);
@@ -232,7 +276,7 @@ impl ParticleTechnique {
             // to 1.6 m/s in one frame (2.7 cm, half a box) threw a 6 cm box
             // 1.3 cm, and 46 cm so (`surfacelab behaviours`, flick_from_rest).
             let mut start = here;
-            if e.flow_px[0].hypot(e.flow_px[1]) > MIN_SWEEP_PX {
+            if !interior && e.flow_px[0].hypot(e.flow_px[1]) > MIN_SWEEP_PX {
                 let before = table_point(input.sensor, [e.px[0] - e.flow_px[0], e.px[1] - e.flow_px[1]]);
                 if let Some(low) = world.cast_contact_ray(before)
                     && low.point.z < hit.point.z - 2.0 * r
@@ -242,10 +286,24 @@ impl ParticleTechnique {
                     start = before;
                 }
             }
-            let p_next = project_flow(world, &hit, next);
-            let mut v = (p_next - hit.point) / input.dt;
-            // Tangential only: the plane projection already removed the normal part.
-            v -= hit.normal * v.dot(hit.normal);
+            // A hand resting on something it landed on holds its sides up
+            // there (see `rest`): a line-of-sight particle whose ray meets
+            // something lower starts a pad's depth below that height, in the
+            // air on its own ray, and moves as the hand does over the table.
+            let rest = self.resting.height(e.contact_id).map(|z| z - PAD);
+            let lifted = self.config.particle_capsules
+                && !interior
+                && hit.soft.is_none()
+                && !self.ball_contacts.contains(&e.contact_id)
+                && rest.is_some_and(|z| hit.point.z < z);
+            let mut v = if lifted {
+                (next - start).extend(0.0) / input.dt
+            } else {
+                let p_next = project_flow(world, &hit, next);
+                // Tangential only: the plane projection already removed the normal part.
+                let v = (p_next - hit.point) / input.dt;
+                v - hit.normal * v.dot(hit.normal)
+            };
             // Never faster than the hand over the table (plus perspective's
             // scale-up): on a face the camera sees edge-on, like a ball's
             // far side, the projection turns a millimetre of flow into a
@@ -258,10 +316,15 @@ impl ParticleTechnique {
             } else {
                 v.z
             };
-            let center = hit.point + hit.normal * (r - 0.0001);
+            let mut center = hit.point + hit.normal * (r - 0.0001);
             let up = (world.eye() - center).normalize_or(Vec3::Z);
-            let sight =
-                self.config.particle_capsules && hit.soft.is_none() && !self.ball_contacts.contains(&e.contact_id);
+            if let Some(z) = rest.filter(|_| lifted) {
+                center += up * ((z + r - center.z) / up.z.max(0.1));
+            }
+            let sight = self.config.particle_capsules
+                && !interior
+                && hit.soft.is_none()
+                && !self.ball_contacts.contains(&e.contact_id);
             // Along the touched surface's normal, the particle moves at least
             // as fast as that surface does where it touches it: a surface
             // coming towards it pushes it back, so it presses by its weight
@@ -273,7 +336,11 @@ impl ParticleTechnique {
             // particles with 0.01-0.02 N s each a step, 10x their weight,
             // and in one step went from rolling forward to rolling back
             // (variants of `ball_light_touch` in `tests/techniques.rs`).
-            let coming = hit.object.map_or(0.0, |id| world.object_point_velocity(id, hit.point).dot(hit.normal));
+            let coming = if lifted {
+                0.0
+            } else {
+                hit.object.map_or(0.0, |id| world.object_point_velocity(id, hit.point).dot(hit.normal))
+            };
             let velocity = Vec3::new(vt.x, vt.y, vz) + hit.normal * coming.max(0.0);
             // No flow measured: the vision stage found it out of reach of
             // everything movable (see `flow_interest`).
@@ -294,7 +361,6 @@ impl ParticleTechnique {
             // carried it 2.8 cm of 10 (9.0 cleared). What it is placed on it
             // stays 0.1 mm into on purpose (see below), even on a slope; a
             // capsule is tested only up to the highest movable top.
-            let mut center = center;
             if hit.soft.is_none() {
                 let rise = ((top - center.z).max(0.0) / up.z.max(0.1)).min(length);
                 let shift = if sight && rise > 0.0 {
@@ -310,7 +376,9 @@ impl ParticleTechnique {
                 };
                 center += shift;
             }
-            let weight = pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey)) * share;
+            let weight = pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey))
+                * share
+                * spread(e.contact_id);
             out.push(Placement {
                 px: e.px,
                 flow_px: e.flow_px,
@@ -538,6 +606,7 @@ impl Technique for ParticleTechnique {
         self.positions.clear();
         self.sensed_only.clear();
         self.reach = None;
+        self.resting.clear();
     }
 
     fn config_mut(&mut self) -> &mut TechniqueConfig {

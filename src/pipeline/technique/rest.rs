@@ -1,0 +1,251 @@
+//! What each hand rests on: the scene objects under a contact when it
+//! landed, how high they hold it, and where the flat of the hand presses
+//! on them.
+//!
+//! **Why.** The paper's particles lie on the outline only, and a
+//! line-of-sight particle (see `particle_capsules`) stands for the side of
+//! the hand from the surface its outline point's ray meets up towards the
+//! eye. A flat hand laid on a ball rests on the ball's top, 6 cm up: its
+//! outline beyond the ball's silhouette is that high too and cannot reach
+//! the ball's flank, and its palm presses the ball's top. Drawn from the
+//! table up, the trailing edge's capsules met the ball at its equator as
+//! soon as the hand moved and pushed it at the hand's speed (0.94 of the
+//! hand's travel), where a real ball under a sliding hand, driven at its
+//! top, rolls about half of it; and nothing touched a ball rolling on under
+//! a hand that had landed on it, so it drifted on until an edge met it
+//! (`surfacelab behaviours`: `ball_under_hand`, `ball_stop_flat_hand`).
+//!
+//! **How.** While a contact is new (its first [`LANDING_FRAMES`] frames),
+//! rays on a grid over its pixels find the scene objects it lands on. For
+//! as long as rays from the contact still meet one of them, the contact
+//! rests on it, at the height of the highest point the rays meet there:
+//! - its line-of-sight particles' sides start [`PAD`] below that height
+//!   instead of on what their own rays meet;
+//! - the grid points whose rays meet it within [`PAD`] of that height are
+//!   the flat of the hand, and press on it as particles do ([`Press`]).
+//!
+//! Landing decides, not covering: a fingertip that slid across the table up
+//! to a tall object, and that the eye sees over the object's top in
+//! perspective, still stands on the table and pushes the object's side
+//! (`tests/techniques.rs`, the steering task's cylinder pushed from behind);
+//! with "whatever the contact covers" instead, that push moved it 1.5 cm of
+//! 14 instead of 6.5.
+
+use crate::pipeline::surface::Sensor;
+use crate::pipeline::vision::VisionFrame;
+use crate::pipeline::world::World;
+use crate::scene::ObjectId;
+use std::collections::HashMap;
+
+/// Frames after a contact appears during which what its rays meet counts
+/// as what it landed on (50 ms at 60 Hz: a hand's outline grows for a
+/// frame or two as it presses down).
+pub const LANDING_FRAMES: u32 = 3;
+
+/// How far (m) the soft pad of a finger or palm wraps down over the edge
+/// of what it rests on: a particle's side starts this far below the height
+/// the hand rests at. A fingertip landed on a box's top and straddling its
+/// back edge catches that edge within the pad: measured with `surfacelab
+/// behaviours` (Particle, `flick_from_rest`), the flick throws the box
+/// 45.3 cm at 5 mm (47.0 with sides from the table), 43.3 at 3 mm, 45.0 at
+/// 15 mm and 2.2 cm with no pad at all; the ball cases do not depend on it
+/// (0.56-0.58 of the hand's travel, stopped to 0.00 m/s).
+pub const PAD: f32 = 0.005;
+
+/// At most this many points of one hand press on what it rests on, taken
+/// evenly from the grid. Measured (`surfacelab behaviours`, Particle): a
+/// flat hand turning a 14 cm box in place turned it 77.5 degrees with no
+/// presses, 77.7 with 16 and 72.0 with all of them (about a hundred, each
+/// another contact for the solver to share the turn among).
+const MAX_PRESSES: usize = 16;
+
+/// Spacing (m) of the rays cast over a contact's pixels: a fingertip gets
+/// a few, a flat hand about a hundred.
+const GRID: f32 = 0.01;
+
+/// A point of the flat of a hand pressing on what it rests on: one of the
+/// grid's rays that met a landed-on object within [`PAD`] of the height
+/// the hand rests at.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Press {
+    pub contact_id: u32,
+    /// Pixel position `[column, row]`.
+    pub px: [f32; 2],
+    /// The hand's motion there over the last frame (pixels), as an outline
+    /// point's flow: the rigid move fitted to the contact's measured
+    /// outline flow.
+    pub flow_px: [f32; 2],
+    /// The contact's mean grey level (its pressure).
+    pub grey: u8,
+}
+
+/// A contact's motion over the last frame as a rigid move in the image:
+/// a translation and a small turn about a centre.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct RigidFlow {
+    centre: [f32; 2],
+    velocity: [f32; 2],
+    /// Radians per frame, image orientation (as `Contact::rotation_rad`).
+    turn: f32,
+}
+
+impl RigidFlow {
+    /// The least-squares rigid move of contact `id`'s measured outline
+    /// flow, which the vision stage measures to a few hundredths of a pixel
+    /// (its tracked turn is smoothed over frames, and lags a hand that
+    /// starts or stops turning); `None` with fewer than three samples.
+    fn fit(frame: &VisionFrame, id: u32) -> Option<RigidFlow> {
+        let samples: Vec<_> = frame.edges.iter().filter(|e| e.contact_id == id && e.has_flow).collect();
+        if samples.len() < 3 {
+            return None;
+        }
+        let n = samples.len() as f32;
+        let mean = |f: &dyn Fn(&&crate::pipeline::vision::EdgeSample) -> f32| samples.iter().map(f).sum::<f32>() / n;
+        let centre = [mean(&|e| e.px[0]), mean(&|e| e.px[1])];
+        let velocity = [mean(&|e| e.flow_px[0]), mean(&|e| e.flow_px[1])];
+        let (mut num, mut den) = (0.0f32, 0.0f32);
+        for e in &samples {
+            let (dx, dy) = (e.px[0] - centre[0], e.px[1] - centre[1]);
+            // The turn's flow at (dx, dy) is turn * (-dy, dx).
+            num += -dy * (e.flow_px[0] - velocity[0]) + dx * (e.flow_px[1] - velocity[1]);
+            den += dx * dx + dy * dy;
+        }
+        (den > 0.0).then(|| RigidFlow { centre, velocity, turn: num / den })
+    }
+
+    /// The flow (pixels) this move gives the point `px`.
+    fn at(&self, px: [f32; 2]) -> [f32; 2] {
+        let (dx, dy) = (px[0] - self.centre[0], px[1] - self.centre[1]);
+        [self.velocity[0] - self.turn * dy, self.velocity[1] + self.turn * dx]
+    }
+}
+
+/// Per contact, the objects it landed on and the height they hold it at
+/// this frame.
+#[derive(Debug, Clone, Default)]
+pub struct Resting {
+    on: HashMap<u32, Vec<ObjectId>>,
+    height: HashMap<u32, f32>,
+    presses: Vec<Press>,
+}
+
+impl Resting {
+    /// Follows this frame's contacts: new ones record what they land on,
+    /// the others keep what they landed on while their rays still meet it.
+    pub fn update(&mut self, frame: &VisionFrame, sensor: &Sensor, world: &World) {
+        self.height.clear();
+        self.presses.clear();
+        self.on.retain(|id, _| frame.contacts.iter().any(|c| c.id == *id));
+        let step = (GRID / sensor.metres_per_pixel()).round().max(1.0) as u32;
+        for c in &frame.contacts {
+            let landing = c.age_frames < LANDING_FRAMES;
+            if !landing && self.on.get(&c.id).is_none_or(Vec::is_empty) {
+                // It landed on nothing movable and never will now.
+                self.on.remove(&c.id);
+                continue;
+            }
+            let mut met: Vec<(ObjectId, f32)> = Vec::new();
+            let mut rays: Vec<([f32; 2], ObjectId, f32)> = Vec::new();
+            for run in c.blob.runs.iter().filter(|run| run.y % step == 0) {
+                let mut x = run.x0.div_ceil(step) * step;
+                while x < run.x1 {
+                    let at = glam::Vec2::from(sensor.to_table([x as f32, run.y as f32]));
+                    if let Some(hit) = world.cast_contact_ray(at)
+                        && hit.soft.is_none()
+                        && let Some(id) = hit.object
+                    {
+                        rays.push(([x as f32, run.y as f32], id, hit.point.z));
+                        match met.iter_mut().find(|(o, _)| *o == id) {
+                            Some((_, z)) => *z = z.max(hit.point.z),
+                            None => met.push((id, hit.point.z)),
+                        }
+                    }
+                    x += step;
+                }
+            }
+            let on = self.on.entry(c.id).or_default();
+            if landing {
+                for (id, _) in &met {
+                    if !on.contains(id) {
+                        on.push(*id);
+                    }
+                }
+            }
+            on.retain(|id| met.iter().any(|(o, _)| o == id));
+            let top = met.iter().filter(|(o, _)| on.contains(o)).map(|(_, z)| *z).reduce(f32::max);
+            if let Some(z) = top {
+                self.height.insert(c.id, z);
+                let motion = RigidFlow::fit(frame, c.id).unwrap_or(RigidFlow {
+                    centre: c.blob.weighted_centroid,
+                    velocity: c.velocity_px,
+                    turn: c.rotation_rad,
+                });
+                let grey = c.blob.mean_grey.round().clamp(0.0, 255.0) as u8;
+                let touching: Vec<[f32; 2]> =
+                    rays.iter().filter(|(_, id, h)| *h >= z - PAD && on.contains(id)).map(|(px, _, _)| *px).collect();
+                let (n, keep) = (touching.len(), touching.len().min(MAX_PRESSES));
+                for k in 0..keep {
+                    let px = touching[k * n / keep];
+                    self.presses.push(Press { contact_id: c.id, px, flow_px: motion.at(px), grey });
+                }
+            }
+        }
+    }
+
+    /// The height (m) contact `id` rests at this frame, if it rests on an
+    /// object it landed on.
+    pub fn height(&self, id: u32) -> Option<f32> {
+        self.height.get(&id).copied()
+    }
+
+    /// This frame's points of the flat of the hands pressing on what they
+    /// rest on, a grid spacing apart.
+    pub fn presses(&self) -> &[Press] {
+        &self.presses
+    }
+
+    pub fn clear(&mut self) {
+        self.on.clear();
+        self.height.clear();
+        self.presses.clear();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::pipeline::vision::EdgeSample;
+
+    fn sample(contact_id: u32, px: [f32; 2], flow_px: [f32; 2], has_flow: bool) -> EdgeSample {
+        EdgeSample { px, flow_px, magnitude: 40.0, grey: 200, contact_id, has_flow }
+    }
+
+    #[test]
+    fn a_rigid_move_is_recovered_from_its_outline_flow() {
+        // An outline of radius 20 px about (100, 80), translated by
+        // (1.5, -0.5) px and turned 0.01 rad in the frame.
+        let (centre, v, turn) = ([100.0f32, 80.0f32], [1.5f32, -0.5f32], 0.01f32);
+        let mut edges: Vec<EdgeSample> = (0..24)
+            .map(|k| {
+                let a = k as f32 * std::f32::consts::TAU / 24.0;
+                let (dx, dy) = (20.0 * a.cos(), 20.0 * a.sin());
+                sample(7, [centre[0] + dx, centre[1] + dy], [v[0] - turn * dy, v[1] + turn * dx], true)
+            })
+            .collect();
+        // Another contact's outline and unmeasured points do not count.
+        edges.push(sample(8, [100.0, 80.0], [30.0, 30.0], true));
+        edges.push(sample(7, [100.0, 60.0], [-9.0, 9.0], false));
+        let frame =
+            VisionFrame { contacts: Vec::new(), edges, timings: crate::pipeline::vision::StageTimings::default() };
+        let fit = RigidFlow::fit(&frame, 7).expect("enough samples");
+        assert!((fit.turn - turn).abs() < 1e-5, "{fit:?}");
+        // Anywhere, inside the outline too, the flow is the move's.
+        for p in [[100.0, 80.0], [110.0, 75.0], [85.0, 95.0]] {
+            let (dx, dy) = (p[0] - centre[0], p[1] - centre[1]);
+            let want = [v[0] - turn * dy, v[1] + turn * dx];
+            let got = fit.at(p);
+            assert!((got[0] - want[0]).abs() < 1e-4 && (got[1] - want[1]).abs() < 1e-4, "{p:?}: {got:?} vs {want:?}");
+        }
+        assert_eq!(RigidFlow::fit(&frame, 9), None, "no samples");
+    }
+}
