@@ -32,8 +32,8 @@
 //! 14 instead of 6.5.
 
 use crate::pipeline::surface::Sensor;
-use crate::pipeline::vision::VisionFrame;
-use crate::pipeline::world::World;
+use crate::pipeline::vision::{Contact, VisionFrame};
+use crate::pipeline::world::{RayHit, World};
 use crate::scene::ObjectId;
 use std::collections::HashMap;
 
@@ -136,7 +136,6 @@ impl Resting {
         self.height.clear();
         self.presses.clear();
         self.on.retain(|id, _| frame.contacts.iter().any(|c| c.id == *id));
-        let step = (GRID / sensor.metres_per_pixel()).round().max(1.0) as u32;
         for c in &frame.contacts {
             let landing = c.age_frames < LANDING_FRAMES;
             if !landing && self.on.get(&c.id).is_none_or(Vec::is_empty) {
@@ -146,21 +145,12 @@ impl Resting {
             }
             let mut met: Vec<(ObjectId, f32)> = Vec::new();
             let mut rays: Vec<([f32; 2], ObjectId, f32)> = Vec::new();
-            for run in c.blob.runs.iter().filter(|run| run.y % step == 0) {
-                let mut x = run.x0.div_ceil(step) * step;
-                while x < run.x1 {
-                    let at = glam::Vec2::from(sensor.to_table([x as f32, run.y as f32]));
-                    if let Some(hit) = world.cast_contact_ray(at)
-                        && hit.soft.is_none()
-                        && let Some(id) = hit.object
-                    {
-                        rays.push(([x as f32, run.y as f32], id, hit.point.z));
-                        match met.iter_mut().find(|(o, _)| *o == id) {
-                            Some((_, z)) => *z = z.max(hit.point.z),
-                            None => met.push((id, hit.point.z)),
-                        }
-                    }
-                    x += step;
+            for (px, hit) in grid_hits(c, sensor, world) {
+                let Some(id) = hit.object.filter(|_| hit.soft.is_none()) else { continue };
+                rays.push((px, id, hit.point.z));
+                match met.iter_mut().find(|(o, _)| *o == id) {
+                    Some((_, z)) => *z = z.max(hit.point.z),
+                    None => met.push((id, hit.point.z)),
                 }
             }
             let on = self.on.entry(c.id).or_default();
@@ -209,6 +199,30 @@ impl Resting {
         self.height.clear();
         self.presses.clear();
     }
+}
+
+/// What the rays on a [`GRID`] over contact `c`'s pixels meet, with the
+/// pixel each was cast at.
+fn grid_hits(c: &Contact, sensor: &Sensor, world: &World) -> Vec<([f32; 2], RayHit)> {
+    let step = (GRID / sensor.metres_per_pixel()).round().max(1.0) as u32;
+    let mut out = Vec::new();
+    for run in c.blob.runs.iter().filter(|run| run.y % step == 0) {
+        let mut x = run.x0.div_ceil(step) * step;
+        while x < run.x1 {
+            let px = [x as f32, run.y as f32];
+            if let Some(hit) = world.cast_contact_ray(glam::Vec2::from(sensor.to_table(px))) {
+                out.push((px, hit));
+            }
+            x += step;
+        }
+    }
+    out
+}
+
+/// Whether contact `c` lands on something that can move (a scene object
+/// or a soft body) anywhere on its [`GRID`]: then it rests on it.
+pub fn lands_on_movable(c: &Contact, sensor: &Sensor, world: &World) -> bool {
+    grid_hits(c, sensor, world).iter().any(|(_, h)| h.soft.is_some() || h.object.is_some_and(|i| world.is_movable(i)))
 }
 
 #[cfg(test)]
