@@ -1,4 +1,4 @@
-//! What each hand rests on: the scene objects under a contact when it
+//! What each hand rests on: the movable objects under a contact when it
 //! landed, how high they hold it, and where the flat of the hand presses
 //! on them.
 //!
@@ -16,9 +16,10 @@
 //! (`surfacelab behaviours`: `ball_under_hand`, `ball_stop_flat_hand`).
 //!
 //! **How.** While a contact is new (its first [`LANDING_FRAMES`] frames),
-//! rays on a grid over its pixels find the scene objects it lands on. For
-//! as long as rays from the contact still meet one of them, the contact
-//! rests on it, at the height of the highest point the rays meet there:
+//! rays on a grid over its pixels find the movable objects it lands on.
+//! For as long as rays from the contact still meet one of them, the
+//! contact rests on it, at the height of the highest point the rays meet
+//! there:
 //! - its line-of-sight particles' sides start [`PAD`] below that height
 //!   instead of on what their own rays meet;
 //! - the grid points whose rays meet it within [`PAD`] of that height are
@@ -29,7 +30,8 @@
 //! perspective, still stands on the table and pushes the object's side
 //! (`tests/techniques.rs`, the steering task's cylinder pushed from behind);
 //! with "whatever the contact covers" instead, that push moved it 1.5 cm of
-//! 14 instead of 6.5.
+//! 14 instead of 6.5. Fixed ground (the table, a platform) holds no hand
+//! up: there the paper's particles are unchanged.
 
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{Contact, VisionFrame};
@@ -139,14 +141,15 @@ impl Resting {
         for c in &frame.contacts {
             let landing = c.age_frames < LANDING_FRAMES;
             if !landing && self.on.get(&c.id).is_none_or(Vec::is_empty) {
-                // It landed on nothing movable and never will now.
+                // It landed on nothing movable (the table, a platform) and
+                // never will now: the paper's particles.
                 self.on.remove(&c.id);
                 continue;
             }
             let mut met: Vec<(ObjectId, f32)> = Vec::new();
             let mut rays: Vec<([f32; 2], ObjectId, f32)> = Vec::new();
             for (px, hit) in grid_hits(c, sensor, world) {
-                let Some(id) = hit.object.filter(|_| hit.soft.is_none()) else { continue };
+                let Some(id) = hit.object.filter(|&i| hit.soft.is_none() && world.is_movable(i)) else { continue };
                 rays.push((px, id, hit.point.z));
                 match met.iter_mut().find(|(o, _)| *o == id) {
                     Some((_, z)) => *z = z.max(hit.point.z),
