@@ -100,6 +100,7 @@ behaviour_tests!(
     ball_light_touch,
     ball_spin,
     ball_under_hand,
+    ball_under_hand_off_centre,
     ball_stop_flat_hand,
     ball_bounce_hand_edge,
     flick_from_rest,

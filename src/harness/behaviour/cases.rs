@@ -265,6 +265,22 @@ pub fn cases() -> Vec<Case> {
                 vec![limit("joint", JOINT_MAGNET, vec![Check::at_least(Metric::Carry, 0.75)])],
             )
         },
+        // The same slide with the palm landed 2 cm off the ball's centre: the
+        // hand still rests on the ball (session 15: Hybrid's grips decided
+        // this by the centroid's ray, which misses the ball here).
+        Case {
+            settle_s: 0.0,
+            ..case(
+                "ball_under_hand_off_centre",
+                "tasks/cases/ball.toml",
+                "assets/gestures/behaviours/ball_under_hand_off_centre.toml",
+                "ball",
+                "the flat of the hand on a ball, landed off its centre: a real ball rolls forward about half the \
+                 hand's travel",
+                vec![Check::between(Metric::Carry, 0.3, 0.75)],
+                vec![limit("joint", JOINT_MAGNET, vec![Check::at_least(Metric::Carry, 0.75)])],
+            )
+        },
         // The ramp sends the ball at about 0.6 m/s; a flat hand landing on it
         // stops it: under 5 cm/s when the hand lifts a second later.
         Case {
