@@ -112,11 +112,12 @@ pub struct TechniqueConfig {
     /// (it would press on the table and nothing else). Off: the paper's
     /// every-particle-a-body.
     pub particle_cull: bool,
-    /// Hands rest on what they land on: a contact that landed on an object
-    /// holds the sides of its line-of-sight particles up at the object's
-    /// height and presses on it with the flat of the hand (see the Particle
-    /// technique's `rest` module). Off: the paper's particles, on the outline
-    /// only, each side drawn from whatever its own ray meets.
+    /// Hands rest on what they land on: a contact that landed on a movable
+    /// object holds the sides of its line-of-sight particles up at the
+    /// object's height and presses on it with the flat of the hand (see the
+    /// Particle technique's `rest` module; Particle and Hybrid). Off: the
+    /// paper's particles, on the outline only, each side drawn from whatever
+    /// its own ray meets.
     pub particle_rest: bool,
 
     // Shared limits
