@@ -49,16 +49,18 @@ pub const LANDING_FRAMES: u32 = 3;
 /// the hand rests at. A fingertip landed on a box's top and straddling its
 /// back edge catches that edge within the pad: measured with `surfacelab
 /// behaviours` (Particle, `flick_from_rest`), the flick throws the box
-/// 45.3 cm at 5 mm (47.0 with sides from the table), 43.3 at 3 mm, 45.0 at
-/// 15 mm and 2.2 cm with no pad at all; the ball cases do not depend on it
-/// (0.56-0.58 of the hand's travel, stopped to 0.00 m/s).
+/// 45.7 cm at 5 mm (47.0 with sides from the table), 38.2 at 3 mm, 46.0 at
+/// 15 mm and 1.9 cm with no pad at all; the ball cases hardly depend on it
+/// (0.52-0.58 of the hand's travel, stopped to 0.00 m/s).
 pub const PAD: f32 = 0.005;
 
 /// At most this many points of one hand press on what it rests on, taken
 /// evenly from the grid. Measured (`surfacelab behaviours`, Particle): a
 /// flat hand turning a 14 cm box in place turned it 77.5 degrees with no
-/// presses, 77.7 with 16 and 72.0 with all of them (about a hundred, each
-/// another contact for the solver to share the turn among).
+/// presses, 76.5 with 16 and 74.0 with all of them (about a hundred, each
+/// another contact for the solver to share the turn among); with none, a
+/// flat hand that landed on a rolling ball let it roll on at 0.05 m/s
+/// (0.00 with 16).
 const MAX_PRESSES: usize = 16;
 
 /// Spacing (m) of the rays cast over a contact's pixels: a fingertip gets
