@@ -244,3 +244,60 @@ fn cap_and_wall_hits_get_their_own_normals() {
     // The patches cover the top and the part of the near wall in view.
     assert!(tops > 24 * 1500 && walls > 24 * 50, "{tops} top hits, {walls} wall hits");
 }
+
+/// A row of five 2.2 cm discs and two walls on technique layers, driven
+/// like a hand's bodies (whatever impulse it takes) at a sweep's 0.2 m/s.
+fn squeeze_row(walls: &[f32]) -> (f32, f32, World) {
+    use rapier3d::prelude::{ColliderBuilder, RigidBodyBuilder};
+    use std::fmt::Write;
+    use surfacelab::pipeline::world::Layer;
+    let mut text = String::from("name = \"row\"\neffects = [\"gravity\", \"friction\"]\n[table]\nsize = [1.0, 0.75]\n");
+    for i in 0..5 {
+        let x = -0.046 + 0.023 * i as f32;
+        let _ = write!(
+            text,
+            "[[objects]]\nname = \"d{i}\"\nshape = \"cylinder\"\nradius = 0.011\nheight = 0.01\nmass = 0.01\nposition = [{x}, 0.0]\ncolor = \"blue\"\n"
+        );
+    }
+    let s = scene::parse(&text, "row.toml").expect("scene");
+    let mut w = World::new(&s);
+    let mut bodies = Vec::new();
+    for &x in walls {
+        let body = RigidBodyBuilder::kinematic_velocity_based().translation(Vec3::new(x, 0.0, 0.01)).linvel(Vec3::new(
+            -0.2 * x.signum(),
+            0.0,
+            0.0,
+        ));
+        let wall = ColliderBuilder::cuboid(0.005, 0.04, 0.01).collision_groups(Layer::Proxy.groups());
+        bodies.push(w.for_technique().spawn_body(body, wall));
+    }
+    let start = w.object_pose(ObjectId::new(0)).position.x;
+    let mut deepest = 0.0f32;
+    for _ in 0..30 {
+        w.step();
+        deepest = deepest.max(w.max_object_overlap());
+    }
+    let moved = w.object_pose(ObjectId::new(0)).position.x - start;
+    (deepest, moved, w)
+}
+
+/// Hands give way at a jammed pile (`pipeline/world/give_way.rs`): two
+/// walls closing on a row of five discs (11 cm of them) from 18 cm apart
+/// to 6 cm in 0.5 s cannot fit them. Driven with whatever impulse it takes,
+/// as before hands gave way, they pressed the discs 10.2 mm into each
+/// other, crushed the row to 1.0 cm between its end discs' centres and
+/// squirted it out to 5.1 cm. Now the walls pass into the end discs: 3.6
+/// mm deepest, in the step the row first closes (one step of both walls'
+/// travel is 6.7 mm, before the pile is seen), and the row ends 11.8 cm
+/// long. One wall alone still pushes the row along (6.6 cm, 1.4 mm).
+#[test]
+fn a_row_squeezed_between_two_hands_gives_way_instead_of_interpenetrating() {
+    let (deepest, _, w) = squeeze_row(&[-0.09, 0.09]);
+    assert!(deepest < 0.0045, "discs sank {:.1} mm into each other", deepest * 1000.0);
+    let ends = w.object_pose(ObjectId::new(4)).position.x - w.object_pose(ObjectId::new(0)).position.x;
+    assert!(ends > 0.08, "the row was squeezed to {:.1} cm between centres", ends * 100.0);
+
+    let (deepest, moved, _) = squeeze_row(&[-0.09]);
+    assert!(moved > 0.03, "one wall pushed the row only {:.1} cm", moved * 100.0);
+    assert!(deepest < 0.002, "discs pushed along sank {:.1} mm into each other", deepest * 1000.0);
+}

@@ -7,6 +7,7 @@
 mod config;
 mod error;
 mod face_friction;
+mod give_way;
 mod groups;
 mod magnified;
 mod object;

@@ -2,7 +2,7 @@
 
 use super::config::WorldConfig;
 use super::error::WorldError;
-use super::face_friction::FaceFriction;
+use super::give_way::{self, StepHooks};
 use super::groups::Layer;
 use super::magnified::MagnifiedDispatcher;
 use super::ray::{RayHit, cylinder_hit};
@@ -50,6 +50,12 @@ pub struct World {
     /// and walking past hundreds of them per ray cost more than the physics
     /// (measured with `cargo bench --bench frame`).
     scene_colliders: Vec<(ColliderHandle, Option<usize>, Aabb)>,
+    /// By object index: whether it is in a jammed pile this step, where
+    /// hands give way (`give_way`).
+    jammed: Vec<bool>,
+    /// Which way hands pressed each object in the last step, in object order
+    /// (see `give_way::pushes`).
+    pushes: Vec<Vec2>,
     time: f64,
     stats: WorldStats,
 }
@@ -91,6 +97,8 @@ impl World {
             objects,
             soft: SoftBodies::default(),
             scene_colliders,
+            jammed: Vec::new(),
+            pushes: Vec::new(),
             time: 0.0,
             stats: WorldStats::default(),
         };
@@ -265,7 +273,10 @@ impl World {
         if self.config.sleeping && !self.physics.soft_bodies.is_empty() {
             soft::wake_touched(&mut self.physics);
         }
-        self.physics.step_with_events(&FaceFriction, &());
+        self.update_jammed();
+        self.physics.step_with_events(&StepHooks { jammed: &self.jammed }, &());
+        let objects: Vec<ColliderHandle> = self.objects.iter().map(|s| s.collider).collect();
+        self.pushes = give_way::pushes(&self.physics, &objects);
         self.time += f64::from(self.config.dt);
         self.stats.steps += 1;
 
@@ -293,6 +304,29 @@ impl World {
             self.stats.nan_count += 1;
         }
         self.refresh_scene_aabbs();
+    }
+
+    /// Finds the objects in jammed piles (see `give_way`) and gives exactly
+    /// their colliders the contact-modification hook for the step: every
+    /// other pair keeps rapier's contact recycling.
+    fn update_jammed(&mut self) {
+        let objects: Vec<ColliderHandle> = self.objects.iter().map(|s| s.collider).collect();
+        if self.pushes.len() != objects.len() {
+            self.pushes = vec![Vec2::ZERO; objects.len()];
+        }
+        let now = give_way::jammed(&self.physics, &objects, &self.pushes, self.config.dt);
+        if now == self.jammed {
+            return;
+        }
+        for (i, &h) in objects.iter().enumerate() {
+            let (was, is) = (self.jammed.get(i).copied().unwrap_or(false), now[i]);
+            if was != is
+                && let Some(c) = self.physics.colliders.get_mut(h)
+            {
+                c.set_active_hooks(if is { ActiveHooks::MODIFY_SOLVER_CONTACTS } else { ActiveHooks::empty() });
+            }
+        }
+        self.jammed = now;
     }
 
     /// Recomputes the cached AABBs of the rigid scene colliders.
