@@ -245,13 +245,17 @@ fn cap_and_wall_hits_get_their_own_normals() {
     assert!(tops > 24 * 1500 && walls > 24 * 50, "{tops} top hits, {walls} wall hits");
 }
 
-/// A row of five 2.2 cm discs and two walls on technique layers, driven
-/// like a hand's bodies (whatever impulse it takes) at a sweep's 0.2 m/s.
-fn squeeze_row(walls: &[f32]) -> (f32, f32, World) {
+/// A row of five 2.2 cm discs and walls on a technique layer, driven like
+/// a hand's bodies (whatever impulse it takes) at a sweep's 0.2 m/s.
+/// Returns the deepest overlap of two discs, how far the first disc moved
+/// and the world after 0.5 s.
+fn squeeze_row(walls: &[f32], give_way: bool) -> (f32, f32, World) {
     use rapier3d::prelude::{ColliderBuilder, RigidBodyBuilder};
     use std::fmt::Write;
     use surfacelab::pipeline::world::Layer;
-    let mut text = String::from("name = \"row\"\neffects = [\"gravity\", \"friction\"]\n[table]\nsize = [1.0, 0.75]\n");
+    let mut text = format!(
+        "name = \"row\"\neffects = [\"gravity\", \"friction\"]\n[physics]\ngive_way = {give_way}\n[table]\nsize = [1.0, 0.75]\n"
+    );
     for i in 0..5 {
         let x = -0.046 + 0.023 * i as f32;
         let _ = write!(
@@ -261,7 +265,6 @@ fn squeeze_row(walls: &[f32]) -> (f32, f32, World) {
     }
     let s = scene::parse(&text, "row.toml").expect("scene");
     let mut w = World::new(&s);
-    let mut bodies = Vec::new();
     for &x in walls {
         let body = RigidBodyBuilder::kinematic_velocity_based().translation(Vec3::new(x, 0.0, 0.01)).linvel(Vec3::new(
             -0.2 * x.signum(),
@@ -269,7 +272,7 @@ fn squeeze_row(walls: &[f32]) -> (f32, f32, World) {
             0.0,
         ));
         let wall = ColliderBuilder::cuboid(0.005, 0.04, 0.01).collision_groups(Layer::Proxy.groups());
-        bodies.push(w.for_technique().spawn_body(body, wall));
+        w.for_technique().spawn_body(body, wall);
     }
     let start = w.object_pose(ObjectId::new(0)).position.x;
     let mut deepest = 0.0f32;
@@ -281,23 +284,30 @@ fn squeeze_row(walls: &[f32]) -> (f32, f32, World) {
     (deepest, moved, w)
 }
 
-/// Hands give way at a jammed pile (`pipeline/world/give_way.rs`): two
-/// walls closing on a row of five discs (11 cm of them) from 18 cm apart
-/// to 6 cm in 0.5 s cannot fit them. Driven with whatever impulse it takes,
-/// as before hands gave way, they pressed the discs 10.2 mm into each
-/// other, crushed the row to 1.0 cm between its end discs' centres and
-/// squirted it out to 5.1 cm. Now the walls pass into the end discs: 3.6
-/// mm deepest, in the step the row first closes (one step of both walls'
-/// travel is 6.7 mm, before the pile is seen), and the row ends 11.8 cm
-/// long. One wall alone still pushes the row along (6.6 cm, 1.4 mm).
+/// The length of the row between its end discs' centres (m).
+fn row_length(w: &World) -> f32 {
+    w.object_pose(ObjectId::new(4)).position.x - w.object_pose(ObjectId::new(0)).position.x
+}
+
+/// Hands give way where they close on a pile (`pipeline/world/give_way.rs`,
+/// scene `physics.give_way`): two walls closing on a row of five discs
+/// (11 cm of them) from 18 cm apart to 6 cm in 0.5 s cannot fit them.
+/// Pressing with whatever impulse it takes (`give_way = false`), they
+/// pressed the discs 10.2 mm into each other and left the row 5.1 cm long
+/// after crushing it; giving way, they stop pressing once they close on the
+/// row: 0.05 mm, 8.9 cm. One wall alone still pushes the row along (7.2 cm,
+/// 0.6 mm deepest): a push from one side is no squeeze.
 #[test]
 fn a_row_squeezed_between_two_hands_gives_way_instead_of_interpenetrating() {
-    let (deepest, _, w) = squeeze_row(&[-0.09, 0.09]);
-    assert!(deepest < 0.0045, "discs sank {:.1} mm into each other", deepest * 1000.0);
-    let ends = w.object_pose(ObjectId::new(4)).position.x - w.object_pose(ObjectId::new(0)).position.x;
-    assert!(ends > 0.08, "the row was squeezed to {:.1} cm between centres", ends * 100.0);
+    let (deepest, _, w) = squeeze_row(&[-0.09, 0.09], false);
+    assert!(deepest > 0.005, "without giving way the discs sank only {:.1} mm", deepest * 1000.0);
+    assert!(row_length(&w) < 0.07, "without giving way the row kept {:.1} cm", row_length(&w) * 100.0);
 
-    let (deepest, moved, _) = squeeze_row(&[-0.09]);
-    assert!(moved > 0.03, "one wall pushed the row only {:.1} cm", moved * 100.0);
+    let (deepest, _, w) = squeeze_row(&[-0.09, 0.09], true);
+    assert!(deepest < 0.001, "discs sank {:.1} mm into each other", deepest * 1000.0);
+    assert!(row_length(&w) > 0.08, "the row was squeezed to {:.1} cm between centres", row_length(&w) * 100.0);
+
+    let (deepest, moved, _) = squeeze_row(&[-0.09], true);
+    assert!(moved > 0.05, "one wall pushed the row only {:.1} cm", moved * 100.0);
     assert!(deepest < 0.002, "discs pushed along sank {:.1} mm into each other", deepest * 1000.0);
 }

@@ -74,6 +74,8 @@ pub struct PhysicsFile {
     pub max_speed: Option<f32>,
     #[serde(default)]
     pub contact_hz: Option<f32>,
+    #[serde(default)]
+    pub give_way: Option<bool>,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]

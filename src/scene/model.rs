@@ -94,6 +94,10 @@ pub struct PhysicsSpec {
     /// is the pair's effective mass × (2π·hz)², so a heavy object on a
     /// light one sinks unless this is raised (a 100:1 stack at 30 Hz: 2.5 cm).
     pub contact_hz: f32,
+    /// Whether hands give way where they close on a pile of objects
+    /// (`pipeline/world/give_way.rs`); off reproduces the paper's bodies
+    /// that press with whatever impulse it takes.
+    pub give_way: bool,
 }
 
 impl Default for PhysicsSpec {
@@ -107,6 +111,7 @@ impl Default for PhysicsSpec {
             ccd_substeps: 1,
             max_speed: 50.0,
             contact_hz: 30.0,
+            give_way: true,
         }
     }
 }

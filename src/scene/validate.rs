@@ -236,6 +236,9 @@ impl Checker<'_> {
             if let Some(hz) = p.contact_hz {
                 physics.contact_hz = self.num(&span, "physics.contact_hz", hz, 1.0, 10_000.0)?;
             }
+            if let Some(g) = p.give_way {
+                physics.give_way = g;
+            }
             if let Some(v) = p.max_speed {
                 physics.max_speed = self.within(&span, "physics.max_speed", v, bounds::MAX_SPEED_M_S)?;
             }

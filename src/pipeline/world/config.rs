@@ -27,6 +27,8 @@ pub struct WorldConfig {
     pub length_unit: f32,
     pub max_speed: f32,
     pub contact_hz: f32,
+    /// Hands give way where they close on a pile (`give_way.rs`).
+    pub give_way: bool,
 }
 
 impl WorldConfig {
@@ -47,6 +49,7 @@ impl WorldConfig {
             length_unit: p.length_unit,
             max_speed: p.max_speed,
             contact_hz: p.contact_hz,
+            give_way: p.give_way,
         }
     }
 }

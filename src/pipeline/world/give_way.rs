@@ -1,34 +1,38 @@
-//! A hand gives way where what it pushes is already pressed into something.
+//! Hands give way where they close on a pile.
 //!
 //! **Why.** A technique's bodies follow the user's hand, whose motion the
 //! simulation cannot change: to the solver they push with whatever impulse
 //! it takes (particles weigh 40 times a 10 g piece, Joint's prisms are
 //! kinematic). Pieces swept into a pile leave the solver no way out once
-//! the pile is jammed between two hands: rigid pieces cannot shrink, so it
-//! pressed them 8-14 mm into each other (`gather_hand_edges`,
-//! `gather_forearms`), while 8 or 16 iterations, stiffer contacts or
-//! shorter steps left that at 5-24 mm (README, "Piles"). A real hand
-//! sweeping real chips feels the pile and its skin gives, or the chips ride
-//! up; either way what it presses them with is bounded by what the pile
-//! holds.
+//! two hands close on it: rigid pieces cannot shrink, so it pressed them
+//! 8-14 mm into each other (`gather_hand_edges`, `gather_forearms`), while
+//! 8 or 16 iterations, stiffer contacts or shorter steps left that at
+//! 5-24 mm (README, "Piles"). A real hand sweeping real chips feels the
+//! pile and its skin gives, or the chips ride up; either way what it
+//! presses them with is bounded by what the pile holds.
 //!
-//! **Model.** Before each step, every movable object pressed deeper than
-//! [`GIVE`] into another movable object is *jammed*. For that step the
-//! contacts between technique bodies and a jammed object are dropped: the
-//! hand passes into it instead of pressing it further into the pile, and
-//! the pile's own contacts push its pieces apart. Once the piece is back
-//! within [`GIVE`] the hand presses it again. Nothing changes for an
-//! object that is not pressed into another: a lone box, a ball, the
-//! steering cylinder, a gripped block. A hand is not stopped by a jam (it
-//! never is on a real surface); its particles, created clear of movable
-//! objects every frame, are re-placed beside the piece.
+//! **Model.** Before each step, movable objects that touch (or will within
+//! the step at their present speeds, see [`TOUCH`]) form piles. A pile is
+//! *jammed* when hands close on it: two different objects of it were
+//! pushed in the last step from opposed sides (more than 120° apart) by
+//! technique bodies closing on each other faster than the pile's contacts
+//! take up ([`TOUCH`] a step); or when two of its objects overlap deeper
+//! than [`GIVE`] while a hand presses on into one of them faster than it
+//! moves ([`PRESSING`]: a push the closing test saw a step late). A hand
+//! pushing a row of objects along moves them, and two hands holding two
+//! blocks between them neither close on them nor press on. For that step
+//! the contacts between technique bodies and the jammed pile's objects are
+//! dropped: the hand passes into the pile instead of pressing it. A hand is not stopped (it
+//! never is on a real surface); particles, created clear of movable
+//! objects every frame, are re-placed beside the pile. One object pressed
+//! from both sides (a grasp) is no pile.
 //!
-//! **How.** The depth is asked of the pair's shapes now (the magnified
-//! query, as `max_object_overlap` does), not read from rapier's manifold,
-//! which keeps a recycled pair's separation frozen while it drifts. A
-//! jammed object's collider gets rapier's contact-modification flag for
-//! the step, so objects that are not jammed keep rapier's contact
-//! recycling and every other behaviour is bit for bit what it was.
+//! **How.** Depths are asked of the pair's shapes now (the magnified query,
+//! as `max_object_overlap` does), not read from rapier's manifold, which
+//! keeps a recycled pair's separation frozen while it drifts. Only a jammed
+//! object's collider gets rapier's contact-modification flag, for the
+//! step, so everything else keeps rapier's contact recycling and every
+//! behaviour without a pile is bit for bit what it was.
 
 use super::face_friction::FaceFriction;
 use super::groups::{Layer, collider_layer};
@@ -37,25 +41,34 @@ use glam::Vec2;
 use rapier3d::parry::query::QueryDispatcher;
 use rapier3d::prelude::*;
 
-/// Overlap (m) between two movable objects beyond which a pile counts as
-/// jammed however the hands press it: a sixth of the behaviour suite's 3 mm
-/// limit for piles, five times rapier's allowed error at the default length
-/// unit. Measured over 24 sweeps (below): 0.2 mm and 0.5 mm gave the same
-/// mean deepest overlap within 0.3 mm, 1 mm 0.3-0.6 mm more.
+/// Overlap (m) between two objects of a pile beyond which hands that press
+/// on into it give way: the net for what the closing test misses (a push
+/// seen a step late, a pile pressed against something fixed). A sixth of
+/// the behaviour suite's 3 mm limit for piles; ordinary pushes of one
+/// object into another hold them 0.5-1.5 mm into each other, but move
+/// them at the hand's speed (see [`PRESSING`]).
 pub const GIVE: f32 = 0.0005;
+
+/// Speed (m/s) at which a hand moving into an object, relative to it,
+/// presses on into it rather than pushing it along: half a sweep's
+/// 0.2 m/s. Measured on a fingertip pushing a 50 g box into a 400 g one
+/// (Particle): with 0.03 the overlap net let the finger through the small
+/// box (it moved 10.4 cm of 20, 15.3 without the net); with 0.06 and
+/// 0.1, 15.3.
+const PRESSING: f32 = 0.1;
 
 /// Gap (m) under which two objects touch, for grouping them into a pile,
 /// after taking off what they close in the coming step at their present
 /// speeds: pieces swept at 0.2 m/s close 3.3 mm a step, more than rapier's
-/// 2 mm prediction distance, and meet within the step.
+/// 2 mm prediction distance. Hands closing on a pile faster than this a
+/// step squeeze it.
 pub const TOUCH: f32 = 0.0005;
 
-/// How far (m) beyond touching two objects' depth is asked for (the
-/// magnified query's prediction): far enough for any closing speed below
-/// 1.2 m/s at 60 Hz.
+/// How far beyond touching (m) a pair's separation is asked for: enough for
+/// any closing speed under 1.2 m/s at 60 Hz.
 const QUERY_REACH: f32 = 0.02;
 
-/// Cosine under which two hands' pushes are opposed (more than 120° apart).
+/// Cosine under which two pushes are opposed (more than 120° apart).
 const OPPOSED: f32 = -0.5;
 
 /// Whether `c` belongs to a technique (proxy, particle, line of sight).
@@ -70,50 +83,72 @@ fn movable_index(c: &Collider, bodies: &RigidBodySet) -> Option<usize> {
         .then_some(c.user_data as usize)
 }
 
-/// Which way technique bodies pressed each scene object in the step just
-/// taken, by object index: the sum of the level parts of the contact
-/// normals, pointing into the object, of every technique body touching it
-/// (contacts dropped by [`StepHooks`] included: they still touch). Zero for
-/// an object no hand touched. Read after the step, while the narrow phase
-/// still holds this frame's technique bodies.
-pub(super) fn pushes(physics: &PhysicsWorld, objects: &[ColliderHandle]) -> Vec<Vec2> {
+fn linvel(c: &Collider, bodies: &RigidBodySet) -> Vector {
+    c.parent().and_then(|b| bodies.get(b)).map_or(Vector::ZERO, RigidBody::linvel)
+}
+
+/// How the hands pushed one scene object across the table in a step.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub(super) struct Push {
+    /// Sum of the level parts (unit) of the contact normals, pointing into
+    /// the object, of the technique bodies touching it. Zero for an object
+    /// no hand touched (a press from above is no push across).
+    dir: Vec2,
+    /// Those bodies' mean velocity along `dir` (m/s). With another object's,
+    /// how fast two hands close on a pile, whatever the pile itself does.
+    speed: f32,
+    /// The fastest any of them moved into the object along its normal,
+    /// relative to the object (m/s): above [`PRESSING`], the hand presses
+    /// on into it instead of moving it along.
+    pressing: f32,
+}
+
+/// How technique bodies pushed each scene object (in `objects`' order) in
+/// the step just taken, contacts dropped by [`StepHooks`] included (they
+/// still touch). Read right after the step, while the narrow phase still
+/// holds this frame's technique bodies.
+pub(super) fn pushes(physics: &PhysicsWorld, objects: &[ColliderHandle]) -> Vec<Push> {
     let colliders = &physics.colliders;
+    let bodies = &physics.bodies;
     objects
         .iter()
         .map(|&h| {
-            let mut sum = Vec2::ZERO;
+            let Some(object) = colliders.get(h) else { return Push::default() };
+            let v_object = linvel(object, bodies);
+            let (mut dir, mut velocity, mut pressing, mut n) = (Vec2::ZERO, Vector::ZERO, f32::MIN, 0.0f32);
             for pair in physics.narrow_phase.contact_pairs_with(h) {
                 let (other, into) = if pair.collider1 == h { (pair.collider2, -1.0) } else { (pair.collider1, 1.0) };
-                if !colliders.get(other).is_some_and(is_technique) {
-                    continue;
-                }
+                let Some(body) = colliders.get(other).filter(|c| is_technique(c)) else { continue };
                 let Some(c1) = colliders.get(pair.collider1) else { continue };
-                for m in pair.manifolds().iter().filter(|m| m.points.iter().any(|p| p.dist < TOUCH)) {
-                    let n = c1.position().rotation * m.local_n1 * into;
-                    let level = Vec2::new(n.x, n.y);
-                    // A press from above is not a push across.
+                // Touching when the step began, or pushed during it (a contact
+                // predicted from a gap keeps the gap as its distance).
+                let touched = |m: &&ContactManifold| m.points.iter().any(|p| p.dist < TOUCH || p.data.impulse > 0.0);
+                for m in pair.manifolds().iter().filter(touched) {
+                    let normal = c1.position().rotation * m.local_n1 * into;
+                    let level = Vec2::new(normal.x, normal.y);
                     if level.length() > 0.5 {
-                        sum += level.normalize();
+                        dir += level.normalize();
+                        velocity += linvel(body, bodies);
+                        pressing = pressing.max((linvel(body, bodies) - v_object).dot(normal));
+                        n += 1.0;
                     }
                 }
             }
-            sum
+            if n == 0.0 {
+                return Push::default();
+            }
+            let mean = velocity / n;
+            Push { dir, speed: Vec2::new(mean.x, mean.y).dot(dir.normalize_or_zero()), pressing }
         })
         .collect()
 }
 
-/// Which scene objects (by index) are in a jammed pile. A pile is a group
-/// of movable objects linked by the pairs that touch (or will within the
-/// step, see [`TOUCH`]); it is jammed when hands press two different
-/// objects of it from opposed sides (`pushes`, from the last step), or when
-/// two of its objects overlap deeper than [`GIVE`]. The whole pile, because
-/// a hand pushing its near piece presses the far pair through the pieces
-/// between. One object pressed from both sides (a grasp) is no pile.
-pub(super) fn jammed(physics: &PhysicsWorld, objects: &[ColliderHandle], pushes: &[Vec2], dt: f32) -> Vec<bool> {
+/// Which scene objects (in `objects`' order) are in a jammed pile this step
+/// (see the module doc), from the objects' poses and speeds now and the
+/// hands' `pushes` in the last step.
+pub(super) fn jammed(physics: &PhysicsWorld, objects: &[ColliderHandle], pushes: &[Push], dt: f32) -> Vec<bool> {
     let colliders = &physics.colliders;
     let bodies = &physics.bodies;
-    let velocity = |c: &Collider| c.parent().and_then(|b| bodies.get(b)).map_or(Vector::ZERO, RigidBody::linvel);
-    // Union-find over the objects.
     let mut parent: Vec<usize> = (0..objects.len()).collect();
     let mut deep = vec![false; objects.len()];
     for (i, &h) in objects.iter().enumerate() {
@@ -128,7 +163,7 @@ pub(super) fn jammed(physics: &PhysicsWorld, objects: &[ColliderHandle], pushes:
             };
             // Normal out of a towards b, and how fast they close along it.
             let n = a.position().rotation * c.normal1;
-            let closing = (velocity(a) - velocity(b)).dot(n).max(0.0);
+            let closing = (linvel(a, bodies) - linvel(b, bodies)).dot(n).max(0.0);
             if c.dist - closing * dt >= TOUCH {
                 continue;
             }
@@ -137,18 +172,25 @@ pub(super) fn jammed(physics: &PhysicsWorld, objects: &[ColliderHandle], pushes:
             deep[rj] |= deep[ri] || -c.dist > GIVE;
         }
     }
-    let mut dirs: Vec<Vec<Vec2>> = vec![Vec::new(); objects.len()];
+    // Per pile, each pushed object's push: direction and speed.
+    let mut sides: Vec<Vec<(Vec2, f32)>> = vec![Vec::new(); objects.len()];
+    let mut pressed = vec![false; objects.len()];
     for (i, p) in pushes.iter().enumerate().take(objects.len()) {
-        if p.length() > 0.5 {
+        if p.dir.length() > 0.5 {
             let r = root(&mut parent, i);
-            dirs[r].push(p.normalize());
+            sides[r].push((p.dir.normalize(), p.speed));
+            pressed[r] |= p.pressing > PRESSING;
         }
     }
-    let opposed = |d: &[Vec2]| d.iter().enumerate().any(|(k, a)| d[k + 1..].iter().any(|b| a.dot(*b) < OPPOSED));
+    let closing_on = |s: &[(Vec2, f32)]| {
+        s.iter()
+            .enumerate()
+            .any(|(k, (da, va))| s[k + 1..].iter().any(|(db, vb)| da.dot(*db) < OPPOSED && va + vb > TOUCH / dt))
+    };
     (0..objects.len())
         .map(|i| {
             let r = root(&mut parent, i);
-            deep[r] || opposed(&dirs[r])
+            (deep[r] && pressed[r]) || closing_on(&sides[r])
         })
         .collect()
 }

@@ -2,7 +2,7 @@
 
 use super::config::WorldConfig;
 use super::error::WorldError;
-use super::give_way::{self, StepHooks};
+use super::give_way::{self, Push, StepHooks};
 use super::groups::Layer;
 use super::magnified::MagnifiedDispatcher;
 use super::ray::{RayHit, cylinder_hit};
@@ -55,7 +55,7 @@ pub struct World {
     jammed: Vec<bool>,
     /// Which way hands pressed each object in the last step, in object order
     /// (see `give_way::pushes`).
-    pushes: Vec<Vec2>,
+    pushes: Vec<Push>,
     time: f64,
     stats: WorldStats,
 }
@@ -275,8 +275,10 @@ impl World {
         }
         self.update_jammed();
         self.physics.step_with_events(&StepHooks { jammed: &self.jammed }, &());
-        let objects: Vec<ColliderHandle> = self.objects.iter().map(|s| s.collider).collect();
-        self.pushes = give_way::pushes(&self.physics, &objects);
+        if self.config.give_way {
+            let objects: Vec<ColliderHandle> = self.objects.iter().map(|s| s.collider).collect();
+            self.pushes = give_way::pushes(&self.physics, &objects);
+        }
         self.time += f64::from(self.config.dt);
         self.stats.steps += 1;
 
@@ -310,10 +312,10 @@ impl World {
     /// their colliders the contact-modification hook for the step: every
     /// other pair keeps rapier's contact recycling.
     fn update_jammed(&mut self) {
-        let objects: Vec<ColliderHandle> = self.objects.iter().map(|s| s.collider).collect();
-        if self.pushes.len() != objects.len() {
-            self.pushes = vec![Vec2::ZERO; objects.len()];
+        if !self.config.give_way {
+            return;
         }
+        let objects: Vec<ColliderHandle> = self.objects.iter().map(|s| s.collider).collect();
         let now = give_way::jammed(&self.physics, &objects, &self.pushes, self.config.dt);
         if now == self.jammed {
             return;
