@@ -149,6 +149,11 @@ pub(super) fn pushes(physics: &PhysicsWorld, objects: &[ColliderHandle]) -> Vec<
 /// (see the module doc), from the objects' poses and speeds now and the
 /// hands' `pushes` in the last step.
 pub(super) fn jammed(physics: &PhysicsWorld, objects: &[ColliderHandle], pushes: &[Push], dt: f32) -> Vec<bool> {
+    // Both tests need an object that hands pushed: without one (most steps
+    // of most scenes) no pair needs asking.
+    if !pushes.iter().any(|p| p.dir.length() > 0.5) {
+        return vec![false; objects.len()];
+    }
     let colliders = &physics.colliders;
     let bodies = &physics.bodies;
     let mut parent: Vec<usize> = (0..objects.len()).collect();

@@ -273,10 +273,11 @@ impl World {
         if self.config.sleeping && !self.physics.soft_bodies.is_empty() {
             soft::wake_touched(&mut self.physics);
         }
-        self.update_jammed();
+        let objects: Vec<ColliderHandle> =
+            if self.config.give_way { self.objects.iter().map(|s| s.collider).collect() } else { Vec::new() };
+        self.update_jammed(&objects);
         self.physics.step_with_events(&StepHooks { jammed: &self.jammed }, &());
         if self.config.give_way {
-            let objects: Vec<ColliderHandle> = self.objects.iter().map(|s| s.collider).collect();
             self.pushes = give_way::pushes(&self.physics, &objects);
         }
         self.time += f64::from(self.config.dt);
@@ -311,12 +312,12 @@ impl World {
     /// Finds the objects in jammed piles (see `give_way`) and gives exactly
     /// their colliders the contact-modification hook for the step: every
     /// other pair keeps rapier's contact recycling.
-    fn update_jammed(&mut self) {
+    /// `objects`: every object's collider, in object order.
+    fn update_jammed(&mut self, objects: &[ColliderHandle]) {
         if !self.config.give_way {
             return;
         }
-        let objects: Vec<ColliderHandle> = self.objects.iter().map(|s| s.collider).collect();
-        let now = give_way::jammed(&self.physics, &objects, &self.pushes, self.config.dt);
+        let now = give_way::jammed(&self.physics, objects, &self.pushes, self.config.dt);
         if now == self.jammed {
             return;
         }
