@@ -57,35 +57,14 @@ const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Pro
      held at stale points. With recycling off, Proxy turns it 59.9 degrees, but its cube then spins a ball \
      75.9 degrees (the paper's limit: little grip of spherical objects) and carries one under a flat hand 0.76 \
      of the way (at most 0.75), so rapier's default stays (38.7 degrees)";
-const PILE_CONTACTS: &str = "pieces swept together by two hands are still pressed 3.1-4.7 mm into each \
-     other (8.3-14.4 until session 16). Whatever stands for a hand follows the real hand with whatever impulse the \
-     solver needs, so a pile caught between two hands was squeezed (8 or 16 iterations, 60 or 120 Hz contacts, \
-     120 or 240 Hz steps, lighter particles or contact recycling off all left 5-24 mm; README, Piles). Since \
-     session 16 hands give way where they close on a pile (pipeline/world/give_way.rs): over 24 independent \
-     sweeps the deepest overlap averaged 4.7 / 3.7 / 3.6 mm (Joint / Particle / Hybrid) against 11.6-11.9 \
-     before. What is left, measured with a probe: the closing test reads the hands' pushes of the step before, \
-     so a hand arriving at a pile presses it for a step; two pieces pushed towards each other by the two fronts \
-     close 6.9 mm within a step (0.41 m/s at 60 Hz) from 3 mm apart, beyond rapier's 2 mm contact prediction; \
-     and a recycled contact between two squeezed pieces kept saying 3.7 mm while they sank to 8.2. Giving way \
-     wherever two pieces overlap 0.5 mm brought the sweeps to 2.4-2.6 mm and passed these six cells, but let a \
-     fingertip pushing a small box into a big one pass through the small box (3.7 cm of 20 against 15.3) and \
-     let go of a grasp of two touching blocks (0.08 of the travel against 1.01), so it is not kept (README, \
-     Session 16)";
-
-use Metric::{Along as Distance, MaxOverlap as Overlap, Yaw as Turn};
-use TechniqueKind::{Hybrid, Joint, Particle, Proxy};
+use Metric::{Along as Distance, Yaw as Turn};
+use TechniqueKind::{Hybrid, Particle, Proxy};
 
 /// The known gaps, as measured by `surfacelab behaviours` on this build.
 pub const GAPS: &[Gap] = &[
     Gap { case: "two_finger_twist_slow", technique: Proxy, metric: Turn, why: SLOW_TWIST_PROXY },
     Gap { case: "cylinder_top_drag", technique: Particle, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
     Gap { case: "cylinder_top_drag", technique: Hybrid, metric: Distance, why: TOP_FRICTION_ON_A_CYLINDER },
-    Gap { case: "gather_hand_edges", technique: Joint, metric: Overlap, why: PILE_CONTACTS },
-    Gap { case: "gather_hand_edges", technique: Particle, metric: Overlap, why: PILE_CONTACTS },
-    Gap { case: "gather_hand_edges", technique: Hybrid, metric: Overlap, why: PILE_CONTACTS },
-    Gap { case: "gather_forearms", technique: Joint, metric: Overlap, why: PILE_CONTACTS },
-    Gap { case: "gather_forearms", technique: Particle, metric: Overlap, why: PILE_CONTACTS },
-    Gap { case: "gather_forearms", technique: Hybrid, metric: Overlap, why: PILE_CONTACTS },
 ];
 
 /// The known gap for this cell, if it is one.

@@ -28,6 +28,8 @@
 //! never is on a real surface); particles, created clear of movable
 //! objects every frame, are re-placed beside the pile. One object pressed
 //! from both sides (a grasp) is no pile.
+//! What the step still leaves of pieces closing on each other faster than
+//! contacts are predicted, `pile_projection` moves apart after it.
 //!
 //! **How.** Depths are asked of the pair's shapes now (the magnified query,
 //! as `max_object_overlap` does), not read from rapier's manifold, which
@@ -103,6 +105,13 @@ pub(super) struct Push {
     /// relative to the object (m/s): above [`PRESSING`], the hand presses
     /// on into it instead of moving it along.
     pressing: f32,
+}
+
+impl Push {
+    /// Whether any technique body pushed the object across the table.
+    pub(super) fn touched(&self) -> bool {
+        self.dir.length() > 0.5
+    }
 }
 
 /// How technique bodies pushed each scene object (in `objects`' order) in

@@ -12,6 +12,7 @@ mod groups;
 mod magnified;
 mod object;
 mod overlap;
+mod pile_projection;
 mod ray;
 mod reach;
 mod soft;

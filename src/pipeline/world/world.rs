@@ -5,6 +5,7 @@ use super::error::WorldError;
 use super::give_way::{self, Push, StepHooks};
 use super::groups::Layer;
 use super::magnified::MagnifiedDispatcher;
+use super::pile_projection;
 use super::ray::{RayHit, cylinder_hit};
 use super::soft::{self, SOFT_TAG, SoftBodies};
 use super::stats::WorldStats;
@@ -279,6 +280,11 @@ impl World {
         self.physics.step_with_events(&StepHooks { jammed: &self.jammed }, &());
         if self.config.give_way {
             self.pushes = give_way::pushes(&self.physics, &objects);
+            // Hands drive objects into each other only while they touch one.
+            if self.pushes.iter().any(Push::touched) || self.jammed.contains(&true) {
+                let slots: Vec<_> = self.objects.iter().map(|s| (s.body, s.collider)).collect();
+                pile_projection::separate(&mut self.physics, &slots);
+            }
         }
         self.time += f64::from(self.config.dt);
         self.stats.steps += 1;
