@@ -47,7 +47,14 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      radius passes in three directions. Session 15: a hand now rests on what it landed on and presses it with the \
      flat of the finger too (pipeline/technique/rest.rs); the drag moves it 0.7 cm tilting 13.8 degrees, and \
      fails within one rock in its first 0.2 s, while the particles slip over the top and pull with their full \
-     friction: the finger has slid off the top by the time the cylinder settles";
+     friction: the finger has slid off the top by the time the cylinder settles. Session 17, probed: the \
+     particles on the top press 2-5 times their weight as soon as the drag starts (0.003-0.006 N s a step \
+     each against 0.0013 at rest), the cylinder tilts 13.9 degrees within 0.15 s while the finger slides 3 cm \
+     over it, and falls back once the finger has passed the top; a lower friction for particles and proxies \
+     (1.2, 1.0, 0.8 instead of 1.5) did not help (tilts 16.9, 90 and 16.1 degrees, 0.7, 6.5 and 0.2 cm), nor did \
+     capping each particle's friction at its weight's share (the friction scaled by its weight over the last \
+     step's normal impulse): it tipped over; both together, on an outside audit's 2 s drag of the cylinder \
+     standing on the floor, tilted it 3.7-13.4 degrees and moved it at most 0.2 cm at every friction";
 const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Proxy's two cubes' box 39.2 degrees \
      against 57.2 at 1.5 s and 69.0 at 0.75 s, a coupling that loses something every step: stepped at 240 Hz \
      instead of 60 the same cubes turn it 72.5, 73.1 and 72.1 at the three speeds (a local probe with \
@@ -56,7 +63,11 @@ const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Pro
      more than 11 degrees keeps its contact points, normal and separation frozen, so a slowly turning box is \
      held at stale points. With recycling off, Proxy turns it 59.9 degrees, but its cube then spins a ball \
      75.9 degrees (the paper's limit: little grip of spherical objects) and carries one under a flat hand 0.76 \
-     of the way (at most 0.75), so rapier's default stays (38.7 degrees)";
+     of the way (at most 0.75), so rapier's default stays (38.7 degrees). Session 17: recycling off for \
+     Proxy's pairs alone does the same (59.9 degrees, ball spun 75.9, carried 0.76 and 0.77); a shorter \
+     recycling distance (0.02, 0.01, 0.005 x length_unit) leaves the twist at 36.8-40.2 degrees and already \
+     carries the ball 0.76; cubes free to tilt (as a dynamic cube in the paper's engine would be) turn it \
+     34.2 and fail eight other cells";
 use Metric::{Along as Distance, Yaw as Turn};
 use TechniqueKind::{Hybrid, Particle, Proxy};
 
