@@ -1,6 +1,6 @@
 //! The command-line contract, driven through the real binary.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
@@ -10,11 +10,10 @@ fn bin() -> Command {
     c
 }
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("surfacelab-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("temp dir");
-    d
+/// A scratch folder for one test, removed with everything in it when the
+/// returned guard goes out of scope.
+fn tmp(name: &str) -> tempfile::TempDir {
+    tempfile::Builder::new().prefix(&format!("surfacelab-cli-{name}-")).tempdir().expect("temp dir")
 }
 
 fn text(o: &Output) -> String {
@@ -23,7 +22,8 @@ fn text(o: &Output) -> String {
 
 #[test]
 fn run_writes_the_documented_report() {
-    let dir = tmp("run");
+    let scratch_dir = tmp("run");
+    let dir = scratch_dir.path().to_path_buf();
     let report = dir.join("r.json");
     let o = bin()
         .args([
@@ -69,7 +69,8 @@ fn run_writes_the_documented_report() {
 /// pieces with its goal met, the rigid scene with none.
 #[test]
 fn run_reports_the_state_of_soft_bodies() {
-    let dir = tmp("soft_report");
+    let scratch_dir = tmp("soft_report");
+    let dir = scratch_dir.path().to_path_buf();
     let report = dir.join("tear.json");
     let o = bin()
         .args(["run", "--task", "tear", "--technique", "particle", "--gesture", "assets/gestures/tear_two_hands.toml"])
@@ -93,7 +94,8 @@ fn run_reports_the_state_of_soft_bodies() {
 /// the paper, and each trial's completion lands in `trials.csv`.
 #[test]
 fn study_replays_the_soft_scenes_and_times_them() {
-    let dir = tmp("soft_study");
+    let scratch_dir = tmp("soft_study");
+    let dir = scratch_dir.path().to_path_buf();
     let gestures = dir.join("gestures");
     std::fs::create_dir_all(&gestures).expect("dir");
     for (task, gesture) in [("cloth", "flatten"), ("tear", "tear_two_hands")] {
@@ -123,7 +125,8 @@ fn study_replays_the_soft_scenes_and_times_them() {
 /// coarser, the particle stride wider and the edge threshold higher.
 #[test]
 fn tradeoff_errors_grow_as_each_knob_saves_time() {
-    let out = tmp("tradeoff");
+    let scratch_out = tmp("tradeoff");
+    let out = scratch_out.path().to_path_buf();
     let o = bin().args(["tradeoff", "--quick", "--out"]).arg(&out).output().expect("runs");
     assert!(o.status.success(), "{}", text(&o));
     let csv = std::fs::read_to_string(out.join("tradeoff.csv")).expect("tradeoff.csv");
@@ -176,7 +179,8 @@ fn tradeoff_errors_grow_as_each_knob_saves_time() {
 
 #[test]
 fn bad_inputs_exit_2_and_name_the_file_and_field() {
-    let dir = tmp("bad");
+    let scratch_dir = tmp("bad");
+    let dir = scratch_dir.path().to_path_buf();
     let scene = dir.join("broken.toml");
     std::fs::write(&scene, "name = \"x\"\neffects = [\"gravity\"]\n[table]\nsize = [1.0, 0.75]\n[[objects]]\nname = \"a\"\nshape = \"box\"\nsize = [0.1, 0.1, 0.1]\nmass = -1.0\ncolor = \"red\"\nposition = [0.0, 0.0]\n").expect("write");
     let o = bin()
@@ -222,7 +226,8 @@ fn bad_inputs_exit_2_and_name_the_file_and_field() {
 
 #[test]
 fn contact_answers_one_line_of_json() {
-    let dir = tmp("contact");
+    let scratch_dir = tmp("contact");
+    let dir = scratch_dir.path().to_path_buf();
     let f = dir.join("q.json");
     std::fs::write(&f, r#"{"a": [[0,0],[1,0],[1,1],[0,1]], "b": [[0.5,0.5],[2,0.5],[2,2],[0.5,2]]}"#).expect("write");
     let o = bin().arg("contact").arg(&f).output().expect("runs");
@@ -244,7 +249,8 @@ fn contact_refuses_a_concave_polygon_over_the_decomposition_limit() {
             [r * t.cos(), r * t.sin()]
         })
         .collect();
-    let dir = tmp("contact-concave");
+    let scratch_dir = tmp("contact-concave");
+    let dir = scratch_dir.path().to_path_buf();
     let f = dir.join("q.json");
     let q = serde_json::json!({"a": [[0.5, 0.5], [0.7, 0.5], [0.7, 0.7], [0.5, 0.7]], "b": star});
     std::fs::write(&f, q.to_string()).expect("write");
@@ -255,7 +261,8 @@ fn contact_refuses_a_concave_polygon_over_the_decomposition_limit() {
 
 #[test]
 fn screenshot_writes_a_png_headless() {
-    let dir = tmp("shot");
+    let scratch_dir = tmp("shot");
+    let dir = scratch_dir.path().to_path_buf();
     let png = dir.join("s.png");
     let o = bin()
         .args(["screenshot", "--task", "steering", "--technique", "proxy", "--feedback", "--size", "320x240", "--out"])
@@ -293,14 +300,16 @@ fn study_args(out: &Path) -> Command {
 
 #[test]
 fn a_study_killed_with_sigkill_resumes_to_the_same_trials() {
-    let full = tmp("study-full");
+    let scratch_full = tmp("study-full");
+    let full = scratch_full.path().to_path_buf();
     let o = study_args(&full.join("run")).output().expect("runs");
     assert!(o.status.success(), "{}", text(&o));
     let expected = std::fs::read_to_string(full.join("run/trials.csv")).expect("trials");
     assert_eq!(expected.lines().count(), 1 + 2 * 3 * 2, "{expected}");
 
     // Kill it once a few rows are on disk, then resume.
-    let killed = tmp("study-killed");
+    let scratch_killed = tmp("study-killed");
+    let killed = scratch_killed.path().to_path_buf();
     let run = killed.join("run");
     let mut child = study_args(&run).stdout(Stdio::null()).stderr(Stdio::null()).spawn().expect("spawn");
     let t0 = Instant::now();
@@ -329,7 +338,8 @@ fn a_study_killed_with_sigkill_resumes_to_the_same_trials() {
 
 #[test]
 fn study_frames_writes_every_frame_of_every_trial() {
-    let dir = tmp("frames");
+    let scratch_dir = tmp("frames");
+    let dir = scratch_dir.path().to_path_buf();
     let out = dir.join("run");
     let o = bin()
         .args([
@@ -388,7 +398,8 @@ fn behaviours_prints_the_table_and_checks_it() {
 /// from any folder; a file on disk with the same path still wins.
 #[test]
 fn built_in_scenes_and_gestures_work_from_any_folder() {
-    let dir = tmp("anywhere");
+    let scratch_dir = tmp("anywhere");
+    let dir = scratch_dir.path().to_path_buf();
     let report = dir.join("r.json");
     let run = |task: &str| {
         let mut c = bin();
@@ -425,7 +436,8 @@ fn built_in_scenes_and_gestures_work_from_any_folder() {
 /// 2 before any work starts, and the message names the flag and the value.
 #[test]
 fn bad_flag_values_exit_2_and_name_the_flag() {
-    let out = tmp("bad_flags");
+    let scratch_out = tmp("bad_flags");
+    let out = scratch_out.path().to_path_buf();
     let study = |flag: &str, value: &str| {
         bin()
             .args(["study", "--no-progress", "--out"])
@@ -455,7 +467,8 @@ fn bad_flag_values_exit_2_and_name_the_flag() {
 /// exit 2, naming the flag or the file and field, and the bound.
 #[test]
 fn inputs_past_a_bound_exit_2_instead_of_hanging_or_aborting() {
-    let dir = tmp("bounds");
+    let scratch_dir = tmp("bounds");
+    let dir = scratch_dir.path().to_path_buf();
     // A design of a billion participants asked for 864 GB before; now it
     // is refused before anything is planned or written.
     for (flag, value, bound) in [("--participants", "1000000000", "1..=1000"), ("--reps", "1000000000", "1..=100")] {
@@ -539,7 +552,8 @@ fn inputs_past_a_bound_exit_2_instead_of_hanging_or_aborting() {
 /// temporary file behind.
 #[test]
 fn a_report_that_cannot_be_written_exits_1_and_leaves_the_folder_clean() {
-    let dir = tmp("atomic");
+    let scratch_dir = tmp("atomic");
+    let dir = scratch_dir.path().to_path_buf();
     let run = |report: &Path| {
         bin()
             .args(["run", "--task", "cases/one_box", "--technique", "joint", "--gesture", "assets/gestures/flick.toml"])

@@ -1,7 +1,7 @@
 //! The study's command line for issue 15: failures counted at the time limit
 //! (scripted and replayed), and `--seeds N`, through the real binary.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
 
 fn bin() -> Command {
@@ -10,11 +10,10 @@ fn bin() -> Command {
     c
 }
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("surfacelab-study-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("temp dir");
-    d
+/// A scratch folder for one test, removed with everything in it when the
+/// returned guard goes out of scope.
+fn tmp(name: &str) -> tempfile::TempDir {
+    tempfile::Builder::new().prefix(&format!("surfacelab-study-cli-{name}-")).tempdir().expect("temp dir")
 }
 
 fn text(o: &Output) -> String {
@@ -38,7 +37,8 @@ fn tiny(out: &Path) -> Command {
 
 #[test]
 fn a_short_time_limit_fails_every_trial_at_the_limit() {
-    let out = tmp("limit").join("run");
+    let scratch_out = tmp("limit");
+    let out = scratch_out.path().join("run");
     let o = tiny(&out).output().expect("runs");
     assert!(o.status.success(), "{}", text(&o));
     // Nobody places eight objects in 5 s: 3 techniques x on/off, all failed.
@@ -57,7 +57,8 @@ fn a_short_time_limit_fails_every_trial_at_the_limit() {
 
 #[test]
 fn a_replayed_trial_that_does_not_finish_is_recorded_at_the_limit() {
-    let dir = tmp("replay");
+    let scratch_dir = tmp("replay");
+    let dir = scratch_dir.path().to_path_buf();
     let gestures = dir.join("gestures");
     std::fs::create_dir_all(&gestures).expect("dir");
     // A 2 s flat-hand press in the middle of the table places nothing.
@@ -83,7 +84,8 @@ fn a_replayed_trial_that_does_not_finish_is_recorded_at_the_limit() {
 
 #[test]
 fn seeds_run_independent_studies_and_count_findings() {
-    let out = tmp("seeds").join("many");
+    let scratch_out = tmp("seeds");
+    let out = scratch_out.path().join("many");
     let o = tiny(&out).args(["--seed", "7", "--seeds", "2"]).output().expect("runs");
     assert!(o.status.success(), "{}", text(&o));
     for k in [1, 2] {
@@ -122,7 +124,8 @@ fn seeds_run_independent_studies_and_count_findings() {
 /// trial.
 #[test]
 fn a_running_study_locks_its_folder_and_a_killed_one_does_not() {
-    let out = tmp("lock").join("run");
+    let scratch_out = tmp("lock");
+    let out = scratch_out.path().join("run");
     let mut running = bin()
         .args(["study", "--participants", "2", "--reps", "2", "--no-progress", "--jobs", "1", "--out"])
         .arg(&out)
@@ -162,7 +165,8 @@ fn a_running_study_locks_its_folder_and_a_killed_one_does_not() {
 /// way forward, and a run.toml from before the design hash still resumes.
 #[test]
 fn resume_refuses_a_changed_design_and_says_what_it_drops() {
-    let out = tmp("resume").join("run");
+    let scratch_out = tmp("resume");
+    let out = scratch_out.path().join("run");
     let o = tiny(&out).output().expect("runs");
     assert!(o.status.success(), "{}", text(&o));
     let run_toml = out.join("run.toml");

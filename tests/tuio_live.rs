@@ -6,7 +6,7 @@
 use rosc::{OscBundle, OscMessage, OscPacket, OscTime, OscType, encoder};
 use std::io::{BufRead, BufReader};
 use std::net::{SocketAddr, UdpSocket};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Child, Command, Output, Stdio};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
@@ -25,11 +25,10 @@ fn bin() -> Command {
     c
 }
 
-fn tmp(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("surfacelab-tuio-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).expect("temp dir");
-    d
+/// A scratch folder for one test, removed with everything in it when the
+/// returned guard goes out of scope.
+fn tmp(name: &str) -> tempfile::TempDir {
+    tempfile::Builder::new().prefix(&format!("surfacelab-tuio-{name}-")).tempdir().expect("temp dir")
 }
 
 fn text(o: &Output) -> String {
@@ -175,7 +174,8 @@ const BOXES_Y: [f64; 3] = [-0.035, 0.0, 0.035];
 #[test]
 fn a_tuio_2_contour_of_a_flat_hand_sweeps_boxes_under_particle_and_its_recording_replays() {
     let _one = REAL_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-    let dir = tmp("sweep");
+    let scratch_dir = tmp("sweep");
+    let dir = scratch_dir.path().to_path_buf();
     let (live, recorded) = (dir.join("live.json"), dir.join("sweep.toml"));
     let common = ["--task", "tasks/cases/three_boxes.toml", "--technique", "particle", "--settle", "0.5"];
     let (child, addr, stderr) = start_live(
@@ -223,7 +223,8 @@ fn a_tuio_2_contour_of_a_flat_hand_sweeps_boxes_under_particle_and_its_recording
 #[test]
 fn a_tuio_1_1_cursor_drags_a_box_live() {
     let _one = REAL_TIME.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
-    let dir = tmp("drag");
+    let scratch_dir = tmp("drag");
+    let dir = scratch_dir.path().to_path_buf();
     let live = dir.join("live.json");
     let (child, addr, stderr) = start_live(&[
         "--task",
