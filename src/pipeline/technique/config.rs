@@ -119,6 +119,13 @@ pub struct TechniqueConfig {
     /// paper's particles, on the outline only, each side drawn from whatever
     /// its own ray meets.
     pub particle_rest: bool,
+    /// A hand's skin sticks to what it rests on: while a resting contact's
+    /// centre has slipped less than a few millimetres over the object under
+    /// it since it last stuck, its particles on that object also take up
+    /// that slip within the step (see the Particle technique's `rest`
+    /// module). Off: the paper's particles, which match the hand's velocity
+    /// only, so a lag once taken is never made up.
+    pub particle_stick: bool,
 
     // Shared limits
     /// Contact speeds above this are clamped (m/s): lost tracking never flings.
@@ -150,6 +157,7 @@ impl Default for TechniqueConfig {
             particle_capsules: true,
             particle_cull: true,
             particle_rest: true,
+            particle_stick: true,
             max_contact_speed: 4.0,
             pressure: PressureMode::Off,
             hit_test: HitTest::Outline,

@@ -341,7 +341,18 @@ impl ParticleTechnique {
             } else {
                 hit.object.map_or(0.0, |id| world.object_point_velocity(id, hit.point).dot(hit.normal))
             };
-            let velocity = Vec3::new(vt.x, vt.y, vz) + hit.normal * coming.max(0.0);
+            let mut velocity = Vec3::new(vt.x, vt.y, vz) + hit.normal * coming.max(0.0);
+            // Where the hand's skin sticks to the object under it, the
+            // particles on that object take up the hand's slip over it
+            // within the step (see `rest`): friction, capped by the solver
+            // at the particles' press, pulls the stuck point back under the
+            // hand, as a fingertip's stretched skin does.
+            if self.config.particle_stick
+                && !lifted
+                && let Some(slip) = hit.object.and_then(|o| self.resting.slip(e.contact_id, o))
+            {
+                velocity += (slip / input.dt).extend(0.0);
+            }
             // No flow measured: the vision stage found it out of reach of
             // everything movable (see `flow_interest`).
             let travel = velocity.length() * input.dt;
