@@ -573,6 +573,20 @@ fn a_fingertip_drags_a_box_from_anywhere_on_its_top() {
     }
 }
 
+/// A Particle session on `task` with its scene's technique parameters as
+/// `tweak` leaves them, replayed through `gesture` until `until` s, with
+/// no NaN on the way.
+fn particle_replay(task: &str, gesture: &Gesture, until: f64, tweak: impl FnOnce(&mut TechniqueConfig)) -> Session {
+    let s = scene::load(&asset(task)).expect("scene");
+    let mut config = TechniqueConfig::from_scene(&s).expect("config");
+    tweak(&mut config);
+    let options = SessionOptions { config: Some(config), ..SessionOptions::default() };
+    let mut session = Session::new(&s, TechniqueKind::Particle, options).expect("session");
+    session.replay_until(gesture, until).expect("replay");
+    assert_eq!(session.world().stats().nan_count, 0);
+    session
+}
+
 /// A hand rests on what it landed on (`particle_rest`): a flat hand laid on
 /// a ball and slid 30 cm in 1.5 s rolls it about half that, as a real ball
 /// driven at its top by a sliding palm does (0.3 to 0.75 of the hand's
@@ -584,12 +598,7 @@ fn a_fingertip_drags_a_box_from_anywhere_on_its_top() {
 fn a_flat_hand_resting_on_a_ball_rolls_it_about_half_its_travel() {
     let g = Gesture::load(asset("assets/gestures/behaviours/ball_under_hand.toml")).expect("gesture");
     let carried = |rest: bool| {
-        let s = scene::load(&asset("tasks/cases/ball.toml")).expect("scene");
-        let config = TechniqueConfig { particle_rest: rest, ..TechniqueConfig::from_scene(&s).expect("config") };
-        let options = SessionOptions { config: Some(config), ..SessionOptions::default() };
-        let mut session = Session::new(&s, TechniqueKind::Particle, options).expect("session");
-        session.replay_until(&g, g.duration()).expect("replay");
-        assert_eq!(session.world().stats().nan_count, 0);
+        let session = particle_replay("tasks/cases/ball.toml", &g, g.duration(), |c| c.particle_rest = rest);
         // The hand slides from x = 0 to 0.30; the ball starts at the origin.
         session.world().object_pose(ObjectId::new(0)).position.x / 0.30
     };
@@ -611,12 +620,8 @@ fn a_flat_hand_resting_on_a_ball_rolls_it_about_half_its_travel() {
 fn a_sticking_fingertip_turns_the_box_with_it_in_pin_and_spin() {
     let g = Gesture::load(asset("assets/gestures/behaviours/pin_and_spin_small_box.toml")).expect("gesture");
     let turned = |stick: bool| {
-        let s = scene::load(&asset("tasks/cases/small_box.toml")).expect("scene");
-        let config = TechniqueConfig { particle_stick: stick, ..TechniqueConfig::from_scene(&s).expect("config") };
-        let options = SessionOptions { config: Some(config), ..SessionOptions::default() };
-        let mut session = Session::new(&s, TechniqueKind::Particle, options).expect("session");
-        session.replay_until(&g, g.duration() + 0.3).expect("replay");
-        assert_eq!(session.world().stats().nan_count, 0);
+        let session =
+            particle_replay("tasks/cases/small_box.toml", &g, g.duration() + 0.3, |c| c.particle_stick = stick);
         yaw_deg(session.world().object_pose(ObjectId::new(0)).rotation)
     };
     let (sticking, paper) = (turned(true), turned(false));
