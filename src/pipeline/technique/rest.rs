@@ -38,9 +38,12 @@
 //! caps their friction at their press, so a pull the press cannot give
 //! lets the slip grow past [`STICK`], and the contact sticks anew where it
 //! is (it slipped). Measured (`surfacelab behaviours`, Particle, before →
-//! after): pin and spin 71.6° → 89.7° and 76.0° → 88.4° (Joint 86.8° and
+//! after): pin and spin 71.6° → 89.4° and 76.0° → 88.6° (Joint 86.8° and
 //! 84.9°), the pinned point moving 0.5 → 0.0 cm; two fingers twisting 90°
-//! turn the box 84.7° → 94.5°, over 3 s 74.9° → 94.9°.
+//! turn the box 84.7° → 94.9°, over 3 s 74.9° → 94.8°. With 2 mm instead
+//! of [`STICK`] the steering cylinder dragged by its top tilts 17.3° (15
+//! allowed); with 4 or 5 mm that one drag passes, but none of an outside
+//! audit's nine others does, so the pad's shear decides, not that case.
 //!
 //! Landing decides, not covering: a fingertip that slid across the table up
 //! to a tall object, and that the eye sees over the object's top in
@@ -168,7 +171,7 @@ pub struct Resting {
     /// Per resting contact, the object point its centre sticks to.
     anchors: HashMap<u32, Anchor>,
     /// Per resting contact, this frame's slip (m, across the table): where
-    /// its centre meets the object now less where the stuck point went.
+    /// the hand has carried the stuck point less where the point went.
     slips: HashMap<u32, (ObjectId, glam::Vec2)>,
 }
 

@@ -27,11 +27,11 @@
 //! lifts the upper one against gravity instead of pressing the lower one
 //! into the table.
 //!
-//! **When.** Only in steps where a hand touches an object or a pile is
-//! jammed: free objects collide with finite momentum, which their contacts
-//! absorb within a step, while a hand's bodies drive on with whatever
-//! impulse it takes. Every scene step without a hand on an object is bit for
-//! bit what it was.
+//! **When.** Only in steps where a hand pushes an object across the table
+//! (a press from above is no push) or a pile is jammed: free objects
+//! collide with finite momentum, which their contacts absorb within a
+//! step, while a hand's bodies drive on with whatever impulse it takes.
+//! Every other step is bit for bit what it was.
 
 use super::magnified::MagnifiedDispatcher;
 use glam::Vec3;

@@ -280,7 +280,8 @@ impl World {
         self.physics.step_with_events(&StepHooks { jammed: &self.jammed }, &());
         if self.config.give_way {
             self.pushes = give_way::pushes(&self.physics, &objects);
-            // Hands drive objects into each other only while they touch one.
+            // Hands drive objects into each other only while they push one
+            // across the table, or close on a jammed pile.
             if self.pushes.iter().any(Push::touched) || self.jammed.contains(&true) {
                 let slots: Vec<_> = self.objects.iter().map(|s| (s.body, s.collider)).collect();
                 pile_projection::separate(&mut self.physics, &slots);
