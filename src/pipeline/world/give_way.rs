@@ -160,7 +160,7 @@ pub(super) fn pushes(physics: &PhysicsWorld, objects: &[ColliderHandle]) -> Vec<
 pub(super) fn jammed(physics: &PhysicsWorld, objects: &[ColliderHandle], pushes: &[Push], dt: f32) -> Vec<bool> {
     // Both tests need an object that hands pushed: without one (most steps
     // of most scenes) no pair needs asking.
-    if !pushes.iter().any(|p| p.dir.length() > 0.5) {
+    if !pushes.iter().any(Push::touched) {
         return vec![false; objects.len()];
     }
     let colliders = &physics.colliders;
@@ -192,7 +192,7 @@ pub(super) fn jammed(physics: &PhysicsWorld, objects: &[ColliderHandle], pushes:
     let mut sides: Vec<Vec<(Vec2, f32)>> = vec![Vec::new(); objects.len()];
     let mut pressed = vec![false; objects.len()];
     for (i, p) in pushes.iter().enumerate().take(objects.len()) {
-        if p.dir.length() > 0.5 {
+        if p.touched() {
             let r = root(&mut parent, i);
             sides[r].push((p.dir.normalize(), p.speed));
             pressed[r] |= p.pressing > PRESSING;

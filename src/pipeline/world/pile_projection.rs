@@ -59,17 +59,17 @@ const REACH: f32 = 0.005;
 /// colliders with them.
 pub(super) fn separate(physics: &mut PhysicsWorld, objects: &[(RigidBodyHandle, ColliderHandle)]) {
     let (colliders, bodies) = (&physics.colliders, &physics.bodies);
-    // (collider, inverse mass) of each movable object, by object index.
-    let pieces: Vec<Option<(&Collider, f32)>> = objects
+    // (index, collider, inverse mass, bounding box before any move) of each
+    // movable object.
+    let live: Vec<(usize, &Collider, f32, Aabb)> = objects
         .iter()
-        .map(|&(b, c)| {
+        .enumerate()
+        .filter_map(|(i, &(b, c))| {
             let body = bodies.get(b).filter(|b| b.is_dynamic() && b.is_enabled())?;
-            Some((colliders.get(c)?, body.mass_properties().local_mprops.inv_mass))
+            let collider = colliders.get(c)?;
+            Some((i, collider, body.mass_properties().local_mprops.inv_mass, collider.compute_aabb()))
         })
         .collect();
-    // (index, collider, inverse mass, bounding box before any move).
-    let live: Vec<(usize, &Collider, f32, Aabb)> =
-        pieces.iter().enumerate().filter_map(|(i, p)| p.map(|(c, w)| (i, c, w, c.compute_aabb()))).collect();
     // Pairs whose boxes, widened by [`REACH`], meet: sorted along x and
     // swept, so a thousand objects cost a sort rather than half a million
     // box tests a sweep; then taken in object order, as a nested loop
