@@ -58,7 +58,18 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      a resting hand's skin sticks to what it rests on (`particle_stick`, session 17) the drag here moves it \
      6.0 cm tilting 15.0 degrees (14.97, at the edge of the 15 allowed); with 4 or 5 mm of stick instead of 3 \
      it passes (20.0 cm, 1.7 degrees), but the outside audit's nine top drags still move it 0.3-2.0 cm, so \
-     that is no fix and the stick stays at what a fingertip's pad shears";
+     that is no fix and the stick stays at what a fingertip's pad shears. Session 18, probed: the drag's first \
+     step pulls the top to the hand's speed at once (its point moving at 0.109 m/s against the particles' 0.116), \
+     which for 150 g at 0.12 m/s in one 60 Hz step takes 1.1 N beyond the base's 1.2 N of friction, over the \
+     1.8 N that tips it about its rim while it accelerates; within 1-3 steps the particles press 4-10 N instead \
+     of their 1.55 N of weight, as the rising back of the top lifts their 8 kg of inertia. The cylinder's end as \
+     its real rim against a box face (four rim points, the first where it leans lowest) with the platform's \
+     pairs decided afresh every step slides it, pulled at its top with 0.45 of its weight, in all 24 directions \
+     tilting under 3 degrees (rapier's recycled platform pair: 3.8 towards 105 degrees), but drags worse here: \
+     Particle 1.1 cm, Proxy 19.8 -> 2.7 cm (the rim alone: 0.8 cm, 16.1 degrees; fresh pairs alone: 1.3 cm, \
+     30.1 degrees); particles of 0.1 and 0.02 kg instead of 0.4 tilt it 15.3 and 29 degrees and move it 1.4 and \
+     0.4 cm; a skin that gives (friction asked to take up half the slip a step, through the contacts' tangent \
+     velocity) moves it 10 cm tilting 20 degrees";
 const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Proxy's two cubes' box 39.2 degrees \
      against 57.2 at 1.5 s and 69.0 at 0.75 s, a coupling that loses something every step: stepped at 240 Hz \
      instead of 60 the same cubes turn it 72.5, 73.1 and 72.1 at the three speeds (a local probe with \
