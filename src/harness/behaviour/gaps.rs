@@ -65,7 +65,8 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      of their 1.55 N of weight, as the rising back of the top lifts their 8 kg of inertia. The cylinder's end as \
      its real rim against a box face (four rim points, the first where it leans lowest) with the platform's \
      pairs decided afresh every step slides it, pulled at its top with 0.45 of its weight, in all 24 directions \
-     tilting under 3 degrees (rapier's recycled platform pair: 3.8 towards 105 degrees), but drags worse here: \
+     tilting under 3 degrees (with rapier's recycled platform pair the first to pass 3 tilted 3.8, pulled \
+     towards 105 degrees), but drags worse here: \
      Particle 1.1 cm, Proxy 19.8 -> 2.7 cm (the rim alone: 0.8 cm, 16.1 degrees; fresh pairs alone: 1.3 cm, \
      30.1 degrees); particles of 0.1 and 0.02 kg instead of 0.4 tilt it 15.3 and 29 degrees and move it 1.4 and \
      0.4 cm; a skin that gives (friction asked to take up half the slip a step, through the contacts' tangent \
