@@ -70,7 +70,11 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      Particle 1.1 cm, Proxy 19.8 -> 2.7 cm (the rim alone: 0.8 cm, 16.1 degrees; fresh pairs alone: 1.3 cm, \
      30.1 degrees); particles of 0.1 and 0.02 kg instead of 0.4 tilt it 15.3 and 29 degrees and move it 1.4 and \
      0.4 cm; a skin that gives (friction asked to take up half the slip a step, through the contacts' tangent \
-     velocity) moves it 10 cm tilting 20 degrees";
+     velocity) moves it 10 cm tilting 20 degrees; the stick's slip taken up over 1.5, 2, 3 or 5 steps instead of \
+     one tilts it 17.9, 31.4, 16.3 and 20.0 degrees (1.4, 6.7, 2.1 and 0.4 cm), the particles' whole speed \
+     relative to the top so smoothed over 2, 3 or 4 steps 14.4 (2.9 cm), 35.9 and over; particles that do not \
+     give way to a rising top (normals within 25 or 45 degrees of vertical) tip it over, and so do 0.01 kg \
+     particles of friction 1.0 on the rim contact above";
 const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Proxy's two cubes' box 39.2 degrees \
      against 57.2 at 1.5 s and 69.0 at 0.75 s, a coupling that loses something every step: stepped at 240 Hz \
      instead of 60 the same cubes turn it 72.5, 73.1 and 72.1 at the three speeds (a local probe with \
