@@ -104,6 +104,7 @@ behaviour_tests!(
     ball_stop_flat_hand,
     ball_bounce_hand_edge,
     flick_from_rest,
+    flick_fast,
     gather_hand_edges,
     gather_forearms,
     grasp_flat_hands,

@@ -79,6 +79,11 @@ impl TechniqueWorld<'_> {
         self.world.technique_collider_mut(body)
     }
 
+    /// See [`World::drive`].
+    pub fn drive(&mut self, body: TechniqueBody, velocity: Vec3) {
+        self.world.drive(body, velocity);
+    }
+
     /// See [`World::remove_body`].
     pub fn remove_body(&mut self, body: TechniqueBody) {
         self.world.remove_body(body);
