@@ -194,9 +194,10 @@ impl Technique for ProxyTechnique {
                     vz = vz.max(-LIGHT_MAX_FALL);
                 }
                 // Driven through the world, which predicts the cube's
-                // contacts along a fast motion: a fingertip flicked from
-                // rest at 3 m/s moves it 5 cm a step, six times its half
-                // width, into a box's side and through it (`World::drive`).
+                // contacts along a sudden fast start: a fingertip flicked
+                // from rest at 3 m/s moves it 5 cm in a step, six times its
+                // half width, into a box's side and through it
+                // (`World::drive`).
                 world.drive(p.body, Vec3::new(v.x, v.y, vz));
             } else {
                 let weight = pressure_weight(&self.config, self.config.proxy_weight, c.blob.mean_grey);
