@@ -89,23 +89,23 @@ impl World {
     pub fn drive(&mut self, body: TechniqueBody, velocity: Vec3) {
         let physics = self.physics_mut();
         let dt = physics.integration_parameters.dt;
-        let Some(b) = physics.bodies.get(body.0) else { return };
-        let colliders = b.colliders().to_vec();
-        let thickness = colliders
+        let (bodies, colliders) = (&mut physics.bodies, &mut physics.colliders);
+        let Some(b) = bodies.get_mut(body.0) else { return };
+        let thickness = b
+            .colliders()
             .iter()
-            .filter_map(|&h| physics.colliders.get(h))
+            .filter_map(|&h| colliders.get(h))
             .map(|c| c.shape().ccd_thickness())
             .fold(f32::INFINITY, f32::min);
         let motion = velocity.length() * dt;
-        let Some(b) = physics.bodies.get_mut(body.0) else { return };
         let starts = motion > thickness && b.linvel().length() * dt <= thickness;
         b.set_linvel(velocity, true);
         b.set_soft_ccd_prediction(if starts { motion } else { 0.0 });
         if !starts {
             return;
         }
-        for h in colliders {
-            if let Some(c) = physics.colliders.get_mut(h)
+        for &h in b.colliders() {
+            if let Some(c) = colliders.get_mut(h)
                 && let Some(&at) = c.position_wrt_parent()
             {
                 // Re-attached where it is: marked as moved, so its
