@@ -74,7 +74,18 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      one tilts it 17.9, 31.4, 16.3 and 20.0 degrees (1.4, 6.7, 2.1 and 0.4 cm), the particles' whole speed \
      relative to the top so smoothed over 2, 3 or 4 steps 14.4 (2.9 cm), 35.9 and over; particles that do not \
      give way to a rising top (normals within 25 or 45 degrees of vertical) tip it over, and so do 0.01 kg \
-     particles of friction 1.0 on the rim contact above";
+     particles of friction 1.0 on the rim contact above. Session 19, probed: a skin that is a spring, not a \
+     velocity (the stuck point joined to a kinematic anchor carried by the hand through a force-based motor \
+     across the table, stiffness mu x press over the stick, damping stiffness x 0-0.03 s, capped at mu x press, \
+     the anchor sliding along once the stretch passes the stick; the contact's particles on that object \
+     frictionless, pressing only): the top keeps up with the hand by tilting about the base's front rim (2.5 \
+     rad/s, the base not sliding) and the cylinder tips over (94-119 degrees at a 3 mm stick, 45-100 at 1-2 cm, \
+     moving it at most 7.6 cm); with those particles also holding their height against a rising top it tilts \
+     14-40 degrees but does not slide (0.1-0.4 cm back), their extra press raising the base's friction past \
+     the skin's cap at the nominal press; capped at the measured press instead it tips over (39-91 degrees). \
+     Every variant also lost pin and spin on the 14 cm box (0.6-41 degrees) and the flat hand's turn (15-33). \
+     A steady pull at the top slides this cylinder only between 0.4 and 0.5 of its load (base friction over \
+     radius over height), and a coupling that sticks pulls whatever keeps the top with the hand";
 const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Proxy's two cubes' box 39.2 degrees \
      against 57.2 at 1.5 s and 69.0 at 0.75 s, a coupling that loses something every step: stepped at 240 Hz \
      instead of 60 the same cubes turn it 72.5, 73.1 and 72.1 at the three speeds (a local probe with \
