@@ -16,8 +16,12 @@
 //! grows towards [`FLAT`] they move back out to where rapier put them, with
 //! no jump from one step to the next. The normal and the friction
 //! coefficient are untouched, so sliding friction, the press and the weight
-//! are as before; only the lever arm of friction about the face's centre
-//! changes, and a face that tips pivots about its real edge.
+//! are as before, and a face that has tipped by [`FLAT`] pivots about its
+//! real edge. rapier applies a point's normal and friction at the same
+//! place, so while the face lies flat the press acts at the mean radius
+//! too: a face starts to tip at about half the pull at its top that its
+//! edge would hold, and rights itself unless that pull still tips it once
+//! the points are back at the edge (0.5 mm of tilt, 1° across a 3 cm face).
 //!
 //! The hook is on the table only: rapier recomputes every step the
 //! contacts of a pair with a hook (it cannot recycle them), and pairs
