@@ -84,16 +84,17 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      14-40 degrees but does not slide (0.1-0.4 cm back), their extra press raising the base's friction past \
      the skin's cap at the nominal press; capped at the measured press instead it tips over (39-91 degrees). \
      Every variant also lost pin and spin on the 14 cm box (0.6-41 degrees) and the flat hand's turn (15-33). \
-     A steady pull at the top slides this cylinder only between 0.4 and 0.5 of its load (its base friction, 0.4, \
-     and its radius over its height, 0.5), and a coupling that sticks pulls whatever keeps the top with the hand. Decomposed step \
-     by step (the outside audit's 2 s drag on the floor): in the drag's first two steps the particles on the top \
-     pull 1.7 and then 4.5 N, pressing 3.3 and then 7-9 N within 6 mm of the axis, while the base stands on its \
+     A steady pull at the top slides this cylinder only between 0.4 and 0.5 of its load (its base friction, \
+     0.4, and its radius over its height, 0.5), and a coupling that sticks pulls whatever keeps the top with \
+     the hand. Decomposed step by step (the outside audit's 2 s drag on the floor): in the drag's first two \
+     steps the particles on the top pull 1.7 and then 4.5 N, pressing 3.3 and then 7-9 N within 6 mm of the axis, while the base stands on its \
      front rim alone at 9-11 N: driven at the hand's speed, the top pivots about the rim, which takes less \
      impulse than sliding the base. With the spring skin the hand leads the top instead, and the press moves \
      to the top's front edge, 19-23 mm ahead of the axis, over the pivot, where it holds nothing back. Also \
      measured: the press moved to where the top is highest, as a stiff fingertip's would (50-100000 N/m over \
-     the pad) swings this drag between 0.4 and 11.6 cm and passes it only at the stiffest (19.7 cm, 1.2 degrees) but moves the audit's nine 0.2-1.9 cm; \
-     the cylinder as a 24- or 48-sided hull tips over (101-107 degrees) and breaks Proxy's drag (3.2, 8.1 cm)";
+     the pad) swings this drag between 0.4 and 11.6 cm and passes it only at the stiffest (19.7 cm, 1.2 \
+     degrees), where the audit's nine drags move it 0.2-1.9 cm; the cylinder as a 24- or 48-sided hull tips \
+     over (101-107 degrees) and breaks Proxy's drag (3.2, 8.1 cm)";
 const SLOW_TWIST_PROXY: &str = "the same twist at half the speed (3 s) turns Proxy's two cubes' box 39.2 degrees \
      against 57.2 at 1.5 s and 69.0 at 0.75 s, a coupling that loses something every step: stepped at 240 Hz \
      instead of 60 the same cubes turn it 72.5, 73.1 and 72.1 at the three speeds (a local probe with \

@@ -74,9 +74,9 @@ impl World {
     /// the end of a step, from the velocity it had then, and refreshes it
     /// before the next step only for colliders that moved. A proxy cube at
     /// rest driven at 2.9 m/s (a fingertip flicked from rest) found nothing
-    /// in its way and passed through a 6 cm box 2.6 cm away (the box moved
-    /// 1 mm); predicted along its motion, it pushed the box 2.3 cm in that
-    /// step (`a_body_driven_suddenly_meets_what_is_in_its_way_within_the_step`).
+    /// in its way and passed into a 6 cm box 1.8 cm ahead of it, which was
+    /// left still; predicted along its motion, it pushed the box on at 2.74
+    /// m/s (`a_body_driven_suddenly_meets_what_is_in_its_way_within_the_step`).
     /// Every other step is left as rapier has it. Measured against that:
     /// soft CCD on every step of a proxy made three of an outside audit's
     /// nine top drags of the steering cylinder fail that had passed;
