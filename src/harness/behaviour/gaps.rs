@@ -87,8 +87,8 @@ const TOP_FRICTION_ON_A_CYLINDER: &str = "particles on the steering cylinder's t
      A steady pull at the top slides this cylinder only between 0.4 and 0.5 of its load (its base friction, \
      0.4, and its radius over its height, 0.5), and a coupling that sticks pulls whatever keeps the top with \
      the hand. Decomposed step by step (the outside audit's 2 s drag on the floor): in the drag's first two \
-     steps the particles on the top pull 1.7 and then 4.5 N, pressing 3.3 and then 7-9 N within 6 mm of the axis, while the base stands on its \
-     front rim alone at 9-11 N: driven at the hand's speed, the top pivots about the rim, which takes less \
+     steps the particles on the top pull 1.7 and then 4.5 N, pressing 3.3 and then 7-9 N within 6 mm of the \
+     axis, while the base stands on its front rim alone at 9-11 N: driven at the hand's speed, the top pivots about the rim, which takes less \
      impulse than sliding the base. With the spring skin the hand leads the top instead, and the press moves \
      to the top's front edge, 19-23 mm ahead of the axis, over the pivot, where it holds nothing back. Also \
      measured: the press moved to where the top is highest, as a stiff fingertip's would (50-100000 N/m over \
