@@ -3,7 +3,10 @@
 //! sorting scene — with the paper's create/destroy particles against
 //! pooled particles, each with and without culling the particles that can
 //! touch nothing movable, all with line-of-sight capsules (the default),
-//! and the default with ball particles. Prints a table of per-stage means.
+//! and the default with ball particles. The pooled rows move a resting
+//! hand's particles on what it rests on as one persistent pad (the
+//! default, `particle_pad`); the create/destroy rows keep the paper's
+//! independent particles. Prints a table of per-stage means.
 //!
 //! `cargo bench --bench frame`
 
@@ -31,6 +34,8 @@ fn run(pooled: bool, cull: bool, capsules: bool) -> (StageTimes, usize, usize) {
         particle_cull: cull,
         particle_capsules: capsules,
         particle_stride: 2,
+        // The paper's particles are independent bodies: no resting hand's pad.
+        particle_pad: pooled,
         ..TechniqueConfig::default()
     };
     let mut s = Session::new(

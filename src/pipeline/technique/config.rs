@@ -126,6 +126,12 @@ pub struct TechniqueConfig {
     /// module). Off: the paper's particles, which match the hand's velocity
     /// only, so a lag once taken is never made up.
     pub particle_stick: bool,
+    /// A resting hand's particles on what it rests on move as one pad, a
+    /// rigid body, so its press goes where the surface meets it (see the
+    /// Particle technique's `pad` module): the finger over its bone, held
+    /// by the arm. Off: each particle presses with its own weight where it
+    /// is, as the paper's do.
+    pub particle_pad: bool,
 
     // Shared limits
     /// Contact speeds above this are clamped (m/s): lost tracking never flings.
@@ -158,6 +164,7 @@ impl Default for TechniqueConfig {
             particle_cull: true,
             particle_rest: true,
             particle_stick: true,
+            particle_pad: true,
             max_contact_speed: 4.0,
             pressure: PressureMode::Off,
             hit_test: HitTest::Outline,

@@ -12,6 +12,7 @@ pub mod hit_test;
 mod hybrid;
 mod joint;
 mod kind;
+mod pad;
 mod particle;
 mod proxy;
 mod rest;

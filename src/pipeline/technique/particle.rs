@@ -35,6 +35,7 @@
 //! it landed on: its sides start up there and the flat of the hand presses
 //! it (`particle_rest`, see `rest`).
 
+use super::pad::{PadParticle, Pads};
 use super::proxy::{gravity_scale_for, pressure_weight, soft_mass};
 use super::rest::{PAD, Resting};
 use super::sight_reach::SightReach;
@@ -46,7 +47,7 @@ use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldE
 use glam::{Vec2, Vec3};
 use rapier3d::parry::shape::{Ball, Capsule};
 use rapier3d::prelude::*;
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap};
 
 /// Outline spacing (m) that `particle_mass` and `particle_weight` are given
 /// for: the default stride (3 px) on the default sensor (1.5625 mm pixels).
@@ -121,6 +122,9 @@ pub struct ParticleTechnique {
     /// particles' sides up off the table and is pressed by the flat of the
     /// hand (see `rest`).
     resting: Resting,
+    /// Each resting contact's particles on what it rests on, as one body
+    /// (see `pad`).
+    pads: Pads,
 }
 
 /// One particle to place this frame.
@@ -143,6 +147,12 @@ struct Placement {
     weight: f32,
     /// Inertia (kg).
     mass: f32,
+    /// The part of `velocity` that gives way to a surface coming at it
+    /// (see `coming` in `placements`).
+    give_way: Vec3,
+    /// The contact whose pad it belongs to: it lands on the object that
+    /// contact rests on (see `pad`).
+    pad: Option<u32>,
 }
 
 impl ParticleTechnique {
@@ -156,6 +166,7 @@ impl ParticleTechnique {
             contacts: 0,
             ball_contacts: Vec::new(),
             resting: Resting::default(),
+            pads: Pads::default(),
         }
     }
 
@@ -341,7 +352,8 @@ impl ParticleTechnique {
             } else {
                 hit.object.map_or(0.0, |id| world.object_point_velocity(id, hit.point).dot(hit.normal))
             };
-            let mut velocity = Vec3::new(vt.x, vt.y, vz) + hit.normal * coming.max(0.0);
+            let give_way = hit.normal * coming.max(0.0);
+            let mut velocity = Vec3::new(vt.x, vt.y, vz) + give_way;
             // Where the hand's skin sticks to the object under it, the
             // particles on that object take up the hand's slip over it
             // within the step (see `rest`): friction, capped by the solver
@@ -353,6 +365,12 @@ impl ParticleTechnique {
             {
                 velocity += (slip / input.dt).extend(0.0);
             }
+            let pad = hit
+                .object
+                .filter(|&o| {
+                    self.config.particle_pad && !lifted && hit.soft.is_none() && self.resting.rests_on(e.contact_id, o)
+                })
+                .map(|_| e.contact_id);
             // No flow measured: the vision stage found it out of reach of
             // everything movable (see `flow_interest`).
             let travel = velocity.length() * input.dt;
@@ -408,12 +426,15 @@ impl ParticleTechnique {
                 weight,
                 // On a soft body a particle weighs what it presses (see `soft_mass`).
                 mass: if hit.soft.is_some() { soft_mass(weight) } else { self.config.particle_mass * share },
+                give_way,
+                pad,
             });
         }
         (out, culled)
     }
 
-    fn new_body(&self, world: &mut TechniqueWorld<'_>, p: &Placement) -> TechniqueBody {
+    /// A particle's collider, placed relative to its body at `Self::pose(p)`.
+    fn collider(&self, world: &World, p: &Placement) -> ColliderBuilder {
         let r = self.config.particle_radius;
         let shape = if p.sight {
             // From the touched point (the body's origin) up its line of sight.
@@ -422,6 +443,15 @@ impl ParticleTechnique {
         } else {
             ColliderBuilder::ball(r)
         };
+        shape
+            .mass(p.mass)
+            .friction(self.config.friction)
+            .friction_combine_rule(CoefficientCombineRule::Max)
+            .restitution(0.0)
+            .collision_groups(Self::layer(p.sight).groups())
+    }
+
+    fn new_body(&self, world: &mut TechniqueWorld<'_>, p: &Placement) -> TechniqueBody {
         // Rotations locked: a rolling ball would transmit no friction.
         let body = RigidBody::from(
             RigidBodyBuilder::dynamic()
@@ -439,13 +469,7 @@ impl ParticleTechnique {
                 // and _090).
                 .soft_ccd_prediction(self.config.max_contact_speed * world.dt()),
         );
-        let col = shape
-            .mass(p.mass)
-            .friction(self.config.friction)
-            .friction_combine_rule(CoefficientCombineRule::Max)
-            .restitution(0.0)
-            .collision_groups(Self::layer(p.sight).groups())
-            .build();
+        let col = self.collider(world, p).build();
         world.spawn_body(body, col)
     }
 
@@ -572,8 +596,33 @@ impl Technique for ParticleTechnique {
 
     fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {
         self.contacts = input.frame.contacts.len();
-        let (placements, culled) = self.placements(input, world);
+        let (all, culled) = self.placements(input, world);
         self.sensed_only = culled;
+        // A resting contact's particles on what it rests on move as one pad
+        // (see `pad`), by contact in id order (deterministic).
+        let mut pads: BTreeMap<u32, Vec<PadParticle>> = BTreeMap::new();
+        let mut placements = Vec::with_capacity(all.len());
+        for p in all {
+            match p.pad {
+                Some(id) => {
+                    let mut collider = self.collider(world, &p);
+                    // Relative to the particle's centre, not rotated: the
+                    // pad is level.
+                    collider.position = Pose::from_translation(-p.center) * Self::pose(&p) * collider.position;
+                    pads.entry(id).or_default().push(PadParticle {
+                        center: p.center,
+                        velocity: p.velocity - Vec3::new(0.0, 0.0, p.give_way.z),
+                        rise: p.give_way.z,
+                        weight: p.weight,
+                        mass: p.mass,
+                        collider,
+                    });
+                }
+                None => placements.push(p),
+            }
+        }
+        let ccd = self.config.max_contact_speed * world.dt();
+        self.pads.place(world, pads, ccd, self.config.particle_pooled);
         if self.config.particle_pooled {
             self.place_pooled(world, &placements);
         } else {
@@ -592,6 +641,11 @@ impl Technique for ParticleTechnique {
             if let Some(b) = world.technique_body(s.body) {
                 self.positions.push(b.translation());
             }
+        }
+        self.positions.extend(self.pads.positions(world));
+        if !self.config.particle_pooled {
+            // The paper's way: created before the step, destroyed after it.
+            self.pads.clear(world);
         }
         if !self.config.particle_pooled {
             for s in std::mem::take(&mut self.slots) {
@@ -618,6 +672,7 @@ impl Technique for ParticleTechnique {
         self.sensed_only.clear();
         self.reach = None;
         self.resting.clear();
+        self.pads.clear(world);
     }
 
     fn config_mut(&mut self) -> &mut TechniqueConfig {

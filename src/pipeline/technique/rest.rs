@@ -275,6 +275,11 @@ impl Resting {
         self.slips.get(&id).filter(|(o, _)| *o == on).map(|(_, s)| *s)
     }
 
+    /// Whether contact `id` rests on object `on` this frame.
+    pub fn rests_on(&self, id: u32, on: ObjectId) -> bool {
+        self.height.contains_key(&id) && self.on.get(&id).is_some_and(|o| o.contains(&on))
+    }
+
     /// The height (m) contact `id` rests at this frame, if it rests on an
     /// object it landed on.
     pub fn height(&self, id: u32) -> Option<f32> {

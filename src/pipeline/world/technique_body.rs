@@ -46,6 +46,64 @@ impl World {
         TechniqueBody(body)
     }
 
+    /// Adds a technique body with several colliders, each placed by its own
+    /// position relative to the body (a resting hand's pad of particles).
+    /// Each collider must be on a technique layer, as for [`World::spawn_body`].
+    pub fn spawn_compound(&mut self, body: impl Into<RigidBody>, colliders: Vec<Collider>) -> TechniqueBody {
+        debug_assert!(
+            colliders.iter().all(|c| matches!(collider_layer(c), Layer::Proxy | Layer::Particle | Layer::Sight)),
+            "a technique body's colliders must be on a technique layer"
+        );
+        let physics = self.physics_mut();
+        let body = physics.bodies.insert(body);
+        for c in colliders {
+            physics.colliders.insert_with_parent(c, body, &mut physics.bodies);
+        }
+        TechniqueBody(body)
+    }
+
+    /// Gives a technique body exactly these colliders (each placed by its
+    /// builder's position relative to the body, weighed by its mass), re-using
+    /// the ones it has: placed, reshaped where the shape's kind changed (a
+    /// ball for a capsule; shapes of one kind are taken to be alike, as a
+    /// pad's particles are) and re-weighed in place, so rapier keeps their
+    /// pairs and warm-starts their contacts from step to step. Extra
+    /// colliders go, missing ones are added.
+    pub fn set_compound(&mut self, body: TechniqueBody, colliders: Vec<ColliderBuilder>) {
+        let physics = self.physics_mut();
+        let Some(have) = physics.bodies.get(body.0).map(|b| b.colliders().to_vec()) else { return };
+        let mut parts = colliders.into_iter();
+        for h in have {
+            match parts.next() {
+                Some(part) => {
+                    let Some(c) = physics.colliders.get_mut(h) else { continue };
+                    c.set_position_wrt_parent(part.position);
+                    if c.shape().shape_type() != part.shape.shape_type() {
+                        c.set_shape(part.shape);
+                    }
+                    if let ColliderMassProps::Mass(m) = part.mass_properties
+                        && (c.mass() - m).abs() > 1e-7
+                    {
+                        c.set_mass(m);
+                    }
+                    c.set_collision_groups(part.collision_groups);
+                }
+                None => {
+                    physics.colliders.remove(
+                        h,
+                        &mut physics.islands,
+                        &mut physics.bodies,
+                        &mut physics.soft_bodies,
+                        true,
+                    );
+                }
+            }
+        }
+        for part in parts {
+            physics.colliders.insert_with_parent(part.build(), body.0, &mut physics.bodies);
+        }
+    }
+
     /// Adds a kinematic anchor at `at`, with no collider: the end of a
     /// joint or a soft particle's attachment that the contact drives.
     pub fn spawn_anchor(&mut self, at: Vec3) -> TechniqueBody {
@@ -214,6 +272,52 @@ position = [0.0, 0.0]
         let body = RigidBodyBuilder::dynamic().translation(Vec3::new(x, y, 0.0105)).lock_rotations().build();
         let collider = ColliderBuilder::cuboid(0.01, 0.01, 0.01).mass(0.05).collision_groups(Layer::Proxy.groups());
         world.spawn_body(body, collider)
+    }
+
+    /// `n` ball colliders 1 cm apart along x, on the particle layer.
+    fn balls(n: usize, radius: f32) -> Vec<ColliderBuilder> {
+        (0..n)
+            .map(|i| {
+                ColliderBuilder::ball(radius)
+                    .translation(Vec3::new(0.01 * i as f32, 0.0, 0.0))
+                    .mass(0.1)
+                    .collision_groups(Layer::Particle.groups())
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_compound_keeps_its_colliders_when_reshaped() {
+        let mut w = world();
+        let before = w.physics().colliders.len();
+        let body = RigidBodyBuilder::dynamic().translation(Vec3::new(0.3, 0.0, 0.1)).build();
+        let b = w.spawn_compound(body, balls(3, 0.003).iter().map(ColliderBuilder::build).collect());
+        let handles = |w: &World| w.physics().bodies[b.handle()].colliders().to_vec();
+        let first = handles(&w);
+        assert_eq!(first.len(), 3);
+        // Two, shifted 5 mm along y: the first two colliders stay, moved.
+        let mut moved = balls(2, 0.003);
+        for c in &mut moved {
+            c.position.translation.y = 0.005;
+        }
+        w.set_compound(b, moved);
+        let now = handles(&w);
+        assert_eq!(now, first[..2].to_vec(), "the first two colliders are re-used");
+        assert_eq!(w.physics().colliders.len(), before + 2);
+        let at = w.physics().colliders[now[1]].position_wrt_parent().expect("attached").translation;
+        assert!((at - Vec3::new(0.01, 0.005, 0.0)).length() < 1e-6, "{at:?}");
+        // Four: two more are added; a capsule replaces a ball's shape.
+        let mut four = balls(4, 0.003);
+        four[0] = ColliderBuilder::capsule_z(0.05, 0.003).mass(0.2).collision_groups(Layer::Sight.groups());
+        w.set_compound(b, four);
+        let now = handles(&w);
+        assert_eq!(now.len(), 4);
+        assert_eq!(now[..2], first[..2]);
+        let c0 = &w.physics().colliders[now[0]];
+        assert!(c0.shape().as_capsule().is_some(), "reshaped");
+        assert!((c0.mass() - 0.2).abs() < 1e-6 && c0.collision_groups() == Layer::Sight.groups());
+        w.remove_body(b);
+        assert_eq!(w.physics().colliders.len(), before);
     }
 
     #[test]

@@ -64,6 +64,16 @@ impl TechniqueWorld<'_> {
         self.world.spawn_body(body, collider)
     }
 
+    /// See [`World::spawn_compound`].
+    pub fn spawn_compound(&mut self, body: impl Into<RigidBody>, colliders: Vec<Collider>) -> TechniqueBody {
+        self.world.spawn_compound(body, colliders)
+    }
+
+    /// See [`World::set_compound`].
+    pub fn set_compound(&mut self, body: TechniqueBody, colliders: Vec<ColliderBuilder>) {
+        self.world.set_compound(body, colliders);
+    }
+
     /// See [`World::spawn_anchor`].
     pub fn spawn_anchor(&mut self, at: Vec3) -> TechniqueBody {
         self.world.spawn_anchor(at)
