@@ -14,7 +14,7 @@
 //! cylinder tipped or the finger slid over its top (`surfacelab behaviours`,
 //! `cylinder_top_drag`: 6.0 cm tilting 15.0 degrees; an outside audit's nine
 //! top drags on the floor, the platform and the steering task, 1 and 2 s,
-//! moved it 0.6-7.4 cm, tipping it over in three).
+//! moved it 0.6-7.4 cm, tipping it over in two).
 //!
 //! **How.** Each frame, the particles of a contact that rests on an object
 //! (see `rest`) and land on that object become the colliders of one dynamic
@@ -37,11 +37,11 @@
 //! `a_light_touch_rolls_a_ball_forward_wherever_it_ends`): held level (no
 //! vertical speed), a light fingertip sliding fast past a ball's top left
 //! its surface within the step and rolled it 0.3 cm; following the surface
-//! up as well, 6-7 of the audit's 9 top drags passed instead of 8-9 (probed
+//! up as well, 6-7 of the audit's 9 top drags passed instead of 9 (probed
 //! at 8 and 16 extra solver iterations); giving way in no direction, a
 //! fingertip on a ball's far flank stopped the ball rolling into it dead
 //! (0.7 cm of 4).
-
+//!
 //! **Solver.** A pad touches its object through many contacts at once, all
 //! acting on the same two bodies, and rapier's 4 iterations do not
 //! converge them. Pads persist while their contact rests (as pooled

@@ -25,15 +25,17 @@
 //! `placements`); its frame cost against ball particles is in README,
 //! "Measured figures" (`cargo bench --bench frame`).
 //!
-//! Five departures from the paper, all measured (README, "Particles: what
+//! Six departures from the paper, all measured (README, "Particles: what
 //! they cost", "Behaviour suite" and the study notes): a particle that can
 //! touch nothing movable during its step is drawn but not simulated
 //! (`particle_cull`), a particle never slides along a surface faster than
 //! [`MAX_SURFACE_SPEEDUP`] times the hand moves over the table, a particle
 //! gives way to a surface that comes at it, a particle is never created
-//! inside a movable object (both in `placements`), and a hand rests on what
-//! it landed on: its sides start up there and the flat of the hand presses
-//! it (`particle_rest`, see `rest`).
+//! inside a movable object (both in `placements`), a hand rests on what it
+//! landed on: its sides start up there, the flat of the hand presses it and
+//! its skin sticks to it (`particle_rest`, `particle_stick`, see `rest`),
+//! and the particles it lays on what it rests on move as one pad
+//! (`particle_pad`, see `pad`).
 
 use super::pad::{PadParticle, Pads};
 use super::proxy::{gravity_scale_for, pressure_weight, soft_mass};
