@@ -615,7 +615,7 @@ fn a_flat_hand_resting_on_a_ball_rolls_it_about_half_its_travel() {
 /// finger's speed, so the lag the box takes while it starts to turn is
 /// never made up, and the finger slides over it. Measured: 90.4 degrees
 /// sticking, 68.8 without; since a resting hand's particles move as one pad
-/// (`particle_pad`), 90.4 and 74.4 (the suite: the pinned point moves 0.0
+/// (`particle_pad`), 90.4 and 73.8 (the suite: the pinned point moves 0.0
 /// cm, 0.5 without).
 #[test]
 fn a_sticking_fingertip_turns_the_box_with_it_in_pin_and_spin() {
@@ -640,7 +640,7 @@ fn a_sticking_fingertip_turns_the_box_with_it_in_pin_and_spin() {
 /// cylinder up while its base slides. The paper's particles each press
 /// with their own weight where they are, near the axis: the cylinder tips
 /// and the finger slides over its top. Measured: 20.0 cm tilting at most
-/// 0.8 degrees as a pad; 6.0 cm tilting 15.0 without.
+/// 1.0 degree as a pad; 6.0 cm tilting 15.0 without.
 #[test]
 fn a_fingertip_pad_drags_the_steering_cylinder_upright_by_its_top() {
     let g = Gesture::load(asset("assets/gestures/behaviours/cylinder_top_drag.toml")).expect("gesture");
@@ -672,8 +672,8 @@ fn a_fingertip_pad_drags_the_steering_cylinder_upright_by_its_top() {
 /// default) or are created afresh every step with extra solver iterations
 /// (the paper's create/destroy). Fresh pads at rapier's default iterations
 /// sank the box of an outside audit's pin-and-spin turns 1.1-2.0 cm into
-/// the table. Measured: the deepest contact 0.6 mm pooled, 0.9 mm fresh
-/// (17.0 mm fresh with no extra iterations).
+/// the table. Measured: the deepest contact 0.6 mm pooled, 0.8 mm fresh
+/// (16.9 mm fresh with no extra iterations).
 #[test]
 fn a_pad_does_not_press_what_it_rests_on_into_the_table() {
     let g = Gesture::load(asset("assets/gestures/behaviours/pin_and_spin_small_box.toml")).expect("gesture");
