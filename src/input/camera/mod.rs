@@ -7,7 +7,7 @@
 //! /dev/videoN ─▶ V4lCamera ─▶ bytes ─▶ decode (PixelFormat) ─▶ CameraImage ─▶ capture thread ─▶ CameraFeed ─▶ ContactImage
 //! ```
 //!
-//! Only [`V4lCamera`] touches the device, and it needs the `camera` cargo
+//! Only `V4lCamera` touches the device, and it needs the `camera` cargo
 //! feature (the `v4l` crate's bindings are generated with libclang at
 //! build time). Everything after the bytes is built and tested in every
 //! build, with recorded frames standing in for the device

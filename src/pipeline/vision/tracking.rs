@@ -54,7 +54,7 @@ pub struct BlobTrackerParams {
     pub steady_elongation: f32,
     /// Frames over which the axis of a blob at `min_elongation` is smoothed
     /// (the inverse of the share each frame's angle gets, see
-    /// [`SmoothedAxis`]); fewer for longer blobs, down to one (no
+    /// `SmoothedAxis`); fewer for longer blobs, down to one (no
     /// smoothing) at `steady_elongation`.
     pub max_turn_frames: usize,
     /// Most frames a slow contact's flow is measured over (see
@@ -196,7 +196,7 @@ pub struct Tracked {
     /// Turn of the principal axis since the previous frame, radians per
     /// frame in image orientation (positive = clockwise on screen), of the
     /// axis smoothed for blobs under [`BlobTrackerParams::steady_elongation`]
-    /// (see [`SmoothedAxis`]); 0 for blobs under
+    /// (see `SmoothedAxis`); 0 for blobs under
     /// [`BlobTrackerParams::min_elongation`] and in frames where the contact
     /// merged or split.
     pub rotation: f32,
