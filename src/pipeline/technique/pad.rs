@@ -49,6 +49,7 @@
 //! islands get [`SOLVER_ITERATIONS`] more. Created afresh every step (the
 //! paper's create/destroy variant) they get [`FRESH_SOLVER_ITERATIONS`].
 
+use super::surface_point::least_squares_turn;
 use crate::pipeline::world::{TechniqueBody, TechniqueWorld};
 use glam::Vec3;
 use rapier3d::prelude::*;
@@ -218,13 +219,9 @@ impl Pads {
 fn rigid_fit(particles: &[PadParticle], origin: Vec3) -> (Vec3, f32) {
     let n = particles.len().max(1) as f32;
     let mean = particles.iter().map(|p| p.velocity).sum::<Vec3>() / n;
-    let (mut num, mut den) = (0.0f32, 0.0f32);
-    for p in particles {
-        let (d, dv) = (p.center - origin, p.velocity - mean);
-        num += d.x * dv.y - d.y * dv.x;
-        den += d.x * d.x + d.y * d.y;
-    }
-    let turn = if den > 1e-12 { num / den } else { 0.0 };
+    let turn =
+        least_squares_turn(particles.iter().map(|p| ((p.center - origin).truncate(), (p.velocity - mean).truncate())))
+            .unwrap_or(0.0);
     let rise = particles.iter().map(|p| p.rise).reduce(f32::min).unwrap_or(0.0).max(0.0);
     (Vec3::new(mean.x, mean.y, mean.z.min(0.0) + rise), turn)
 }

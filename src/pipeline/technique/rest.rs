@@ -53,6 +53,7 @@
 //! 14 instead of 6.5. Fixed ground (the table, a platform) holds no hand
 //! up: there the paper's particles are unchanged.
 
+use super::surface_point::least_squares_turn;
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{Contact, VisionFrame};
 use crate::pipeline::world::{RayHit, World};
@@ -144,14 +145,11 @@ impl RigidFlow {
         let mean = |f: &dyn Fn(&&crate::pipeline::vision::EdgeSample) -> f32| samples.iter().map(f).sum::<f32>() / n;
         let centre = [mean(&|e| e.px[0]), mean(&|e| e.px[1])];
         let velocity = [mean(&|e| e.flow_px[0]), mean(&|e| e.flow_px[1])];
-        let (mut num, mut den) = (0.0f32, 0.0f32);
-        for e in &samples {
-            let (dx, dy) = (e.px[0] - centre[0], e.px[1] - centre[1]);
-            // The turn's flow at (dx, dy) is turn * (-dy, dx).
-            num += -dy * (e.flow_px[0] - velocity[0]) + dx * (e.flow_px[1] - velocity[1]);
-            den += dx * dx + dy * dy;
-        }
-        (den > 0.0).then(|| RigidFlow { centre, velocity, turn: num / den })
+        let turn = least_squares_turn(samples.iter().map(|e| {
+            let d = glam::Vec2::new(e.px[0] - centre[0], e.px[1] - centre[1]);
+            (d, glam::Vec2::new(e.flow_px[0] - velocity[0], e.flow_px[1] - velocity[1]))
+        }))?;
+        Some(RigidFlow { centre, velocity, turn })
     }
 
     /// The flow (pixels) this move gives the point `px`.

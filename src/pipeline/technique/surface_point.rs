@@ -14,6 +14,19 @@ pub fn table_velocity(sensor: &Sensor, px_per_frame: [f32; 2], dt: f32) -> Vec2 
     Vec2::from(sensor.vector_to_table(px_per_frame)) / dt
 }
 
+/// The least-squares turn (rad per unit of time) of points moving about
+/// their centroid: each point's offset from the centroid and its velocity
+/// less the mean velocity. A turn `w` moves the offset `(x, y)` at
+/// `w * (-y, x)`. `None` when the points have no spread.
+pub fn least_squares_turn(points: impl IntoIterator<Item = (Vec2, Vec2)>) -> Option<f32> {
+    let (mut num, mut den) = (0.0f32, 0.0f32);
+    for (d, dv) in points {
+        num += -d.y * dv.x + d.x * dv.y;
+        den += d.x * d.x + d.y * d.y;
+    }
+    (den > 0.0).then(|| num / den)
+}
+
 /// Clamps a vector's length.
 pub fn clamp_len(v: Vec2, max: f32) -> Vec2 {
     let l = v.length();

@@ -35,15 +35,7 @@ impl World {
     /// technique layer ([`Layer::Proxy`], [`Layer::Particle`] or [`Layer::Sight`]): scene ray
     /// casts and the goal measures ignore exactly those.
     pub fn spawn_body(&mut self, body: impl Into<RigidBody>, collider: impl Into<Collider>) -> TechniqueBody {
-        let collider = collider.into();
-        debug_assert!(
-            matches!(collider_layer(&collider), Layer::Proxy | Layer::Particle | Layer::Sight),
-            "a technique body's collider must be on a technique layer"
-        );
-        let physics = self.physics_mut();
-        let body = physics.bodies.insert(body);
-        physics.colliders.insert_with_parent(collider, body, &mut physics.bodies);
-        TechniqueBody(body)
+        self.spawn_compound(body, vec![collider.into()])
     }
 
     /// Adds a technique body with several colliders, each placed by its own
