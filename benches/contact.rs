@@ -27,7 +27,7 @@ use surfacelab::contact::{
 };
 
 const SIZES: [usize; 10] = [8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
-/// The brute force is quadratic: 4096² pairs take ~0.1 s per call.
+/// The brute force is quadratic: at 4096 vertices a call takes far too long to sample.
 const BRUTE_MAX: usize = 1024;
 
 /// Nanoseconds per call of every timing criterion made, by method and size,
@@ -48,7 +48,7 @@ fn pair(n: usize) -> (ConvexPolygon, ConvexPolygon) {
     (a, b)
 }
 
-/// Sizes of the random-pair comparison with parry (issue 20).
+/// Sizes of the random-pair comparison with parry.
 const RANDOM_SIZES: [usize; 8] = [8, 16, 32, 64, 128, 256, 512, 1024];
 /// Random pairs per size; each call takes the next, so no one pair's
 /// geometry decides a timing.
@@ -243,9 +243,8 @@ fn benches(c: &mut Criterion) {
 const SAMPLE_SIZE: usize = 10;
 
 /// The median of the measured samples. The warm-up's come first, and from
-/// one call at a time upwards: counted in, they moved the median of a 0.6 µs
-/// query by half (0.90x against parry at n = 8 where criterion's own
-/// estimates said 1.46x).
+/// one call at a time upwards: counted in, they would move the median of a
+/// sub-microsecond query by half, far from criterion's own estimates.
 fn median(v: &[f64]) -> f64 {
     let mut v = v[v.len().saturating_sub(SAMPLE_SIZE)..].to_vec();
     v.sort_by(f64::total_cmp);
@@ -308,7 +307,7 @@ fn summary() {
     }
 }
 
-/// Ratios on random pairs (issue 20's targets): parry's time over ours.
+/// Ratios on random pairs, against their targets: parry's time over ours.
 fn random_summary(medians: &BTreeMap<(&str, usize), f64>) {
     let ratio = |slow: &str, fast: &str, n: usize| Some(medians.get(&(slow, n))? / medians.get(&(fast, n))?);
     let any = RANDOM_SIZES.iter().any(|&n| ratio("parry_random_overlap", "random_overlap", n).is_some());

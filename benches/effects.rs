@@ -63,7 +63,7 @@ fn bench_under_hand(c: &mut Criterion, group: &str, runs: Vec<(&str, Scene)>) {
     g.sample_size(20).warm_up_time(Duration::from_millis(500)).measurement_time(Duration::from_secs(3));
     for (label, s) in runs {
         let at = s.soft_bodies.first().map_or(glam::Vec2::ZERO, |b| b.position.truncate());
-        let mut session = Session::new(&s, TechniqueKind::Proxy, SessionOptions::default()).expect("session");
+        let mut session = Session::new(&s, TechniqueKind::PROXY, SessionOptions::default()).expect("session");
         let mut k = 0u32;
         g.bench_function(label, |b| {
             b.iter(|| {

@@ -1,4 +1,4 @@
-//! Goal P1: one frame from surface to physics — two flat hands on a
+//! One frame from surface to physics — two flat hands on a
 //! 640×480 contact image → vision → ~1400 particles → one step of the
 //! sorting scene — with the paper's create/destroy particles against
 //! pooled particles, each with and without culling the particles that can
@@ -40,7 +40,7 @@ fn run(pooled: bool, cull: bool, capsules: bool) -> (StageTimes, usize, usize) {
     };
     let mut s = Session::new(
         &scene,
-        TechniqueKind::Particle,
+        TechniqueKind::PARTICLE,
         SessionOptions { config: Some(config), ..SessionOptions::default() },
     )
     .expect("session");
@@ -99,7 +99,7 @@ fn main() {
         totals.push(t.total_us());
     }
     println!(
-        "\npooled vs paper: {:.1}x; pooled + cull vs paper: {:.1}x (P1 goal: <= 2 ms and >= 5x); \
+        "\npooled vs paper: {:.1}x; pooled + cull vs paper: {:.1}x (target: <= 2 ms and >= 5x); \
          line-of-sight capsules cost {:.2}x ball particles (pooled + cull)",
         totals[0] / totals[1],
         totals[0] / totals[3],

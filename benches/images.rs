@@ -1,4 +1,4 @@
-//! Issue 19, cost of the image path: per 640×480 camera frame, decoding
+//! Cost of the image path: per 640×480 camera frame, decoding
 //! its PNG and rectifying it into the 640×480 contact image, for an 8-bit
 //! IR frame (with background subtraction) and a 16-bit depth frame, both
 //! from the synthetic cameras filming a flat hand; and the same frames as a

@@ -26,8 +26,8 @@ fn capture_frames(c: &mut Criterion) {
     for (name, list, sample_count) in &runs {
         let options = RendererOptions { sample_count: *sample_count, ..RendererOptions::default() };
         let mut capture = Capture::with_options(&gpu, WIDTH, HEIGHT, options).unwrap_or_else(|e| panic!("{e}"));
-        // The first frame compiles the driver's shader variants (~0.1-0.4 s
-        // on lavapipe): keep it out of the measurement.
+        // The first frame compiles the driver's shader variants (slow on
+        // lavapipe): keep it out of the measurement.
         capture.render(list).unwrap_or_else(|e| panic!("{e}"));
         group.bench_function(*name, |b| b.iter(|| capture.render(list).unwrap_or_else(|e| panic!("{e}"))));
     }

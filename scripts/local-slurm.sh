@@ -79,7 +79,7 @@ done
 # controller's saved state are started afresh every time: they hold nothing a
 # later start needs (the cluster is registered again below), and a machine
 # stopped mid-write leaves InnoDB files that MariaDB refuses to open
-# ("Data structure corruption"), which used to make every later start fail.
+# ("Data structure corruption"), which would make every later start fail.
 as_root rm -rf "$dir/mysql" "$dir/ctld" "$dir/spool"
 as_root mkdir -p "$dir/munge" "$dir/ctld" "$dir/spool" "$dir/mysql"
 as_root chmod 700 "$dir/munge"

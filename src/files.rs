@@ -10,7 +10,7 @@ use std::path::Path;
 
 /// Bytes read from any input file (scene, gesture, contact JSON, run.toml;
 /// trials.csv excepted): the largest recording (a 25 s sorting gesture) is
-/// about 200 kB. A larger file, or `/dev/urandom`, is refused after this
+/// a few hundred kilobytes. A larger file, or `/dev/urandom`, is refused after this
 /// many bytes instead of read without end.
 pub const MAX_INPUT_BYTES: u64 = 64 * 1024 * 1024;
 

@@ -2,33 +2,40 @@
 //!
 //! Tabletop physics driven by what a vision-based surface sees, after Wilson
 //! et al., *Bringing Physics to the Surface* (UIST 2008), with exact 2D contact
-//! geometry after Cheng et al. (2016) and a study harness.
+//! geometry after Cheng et al. (2016) and a study harness that reproduces the
+//! paper's user study with simulated participants.
 //!
-//! Data flows one way, top to bottom; a module reads only the ones above it
-//! (see `ARCHITECTURE.md`):
+//! ## Extending it
 //!
-//! ```text
-//! scene, contact, error      data, pure geometry and error kinds every layer may read
-//! input                      mouse, TUIO, gesture files ──▶ hands
-//! pipeline                   surface ──▶ vision ──▶ technique ──▶ world
-//! session                    one scene running through the pipeline; its goals measured
-//! harness                    participants, study, behaviours, trade-off
-//! render                     a draw list ──▶ pixels (wgpu), on screen or off
-//! app                        the demo window; how a session looks
-//! cli                        the command line, which only wires these together
-//! ```
+//! A technique, a scene or a participant of your own needs no fork:
 //!
-//! - [`scene`]: scene/task files (table, camera, objects, goals, declared effects) as data.
-//! - [`contact`]: exact 2D contact geometry (Contact Theory, Cheng et al. 2016); pure.
-//! - [`error`]: the kind every module's errors share (bad input or runtime), which picks the exit code.
-//! - [`files`]: input files read with a size cap, output files written atomically.
-//! - [`input`]: every source of hands (mouse, TUIO, gesture files, scripts).
-//! - [`pipeline`]: the contact image, vision, the paper's techniques, and the rapier3d world.
-//! - [`session`]: the frame loop that drives the pipeline, and the goal tracker.
-//! - [`harness`]: what measures sessions: participants, the study, behaviours, the trade-off.
-//! - [`render`]: the wgpu renderer; knows draw lists, not sessions.
-//! - [`app`]: the desktop demo, and the mapping from a session to a draw list.
-//! - [`cli`]: the command line.
+//! - [`pipeline::technique::Technique`]: the trait a technique implements;
+//!   [`pipeline::technique::TechniqueSpec`] and
+//!   [`pipeline::technique::register`] add it under a name, and from then on
+//!   the command line, the session, the study, the behaviour suite and the
+//!   demo take that name like a built-in one.
+//! - [`cli::main_with`]: the whole `surfacelab` command line with your
+//!   techniques added ([`pipeline::technique::TechniqueRegistry`]), for a
+//!   ten-line `main.rs` in your own crate.
+//! - [`scene::SceneBuilder`]: a scene built in Rust, validated as a scene
+//!   file is.
+//! - [`session::Session`]: one scene running through the pipeline, stepped
+//!   with hands or contact images; [`harness::participant::run_trial`] runs
+//!   a trial with a hand policy of your own.
+//! - [`harness::study::run_study`] with a [`harness::study::StudyDesign`]:
+//!   a study from code, writing the same folder `surfacelab study` does.
+//! - [`harness::behaviour::run_suite`]: the paper's manipulations under any
+//!   registered technique.
+//!
+//! The user guide's `docs/extending.md` walks through writing a technique,
+//! with the crate's `examples/` as its code.
+//!
+//! ## Layout
+//!
+//! Data flows one way: input → contact image → vision → technique → world →
+//! session → harness, render and app; a module reads only the ones before
+//! it. `ARCHITECTURE.md` is the module map: where each concept lives and
+//! what each layer may read.
 
 pub mod app;
 pub mod cli;

@@ -40,8 +40,8 @@ fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2
     let mut feed = CameraFeed::start(Box::new(camera), Some(files.calibration().clone())).expect("starts");
 
     let box_at = |s: &Session| s.world().object_pose(ObjectId::new(0)).position.truncate();
-    let mut read = Session::new(&scene, TechniqueKind::Particle, SessionOptions::default()).expect("session");
-    let mut streamed = Session::new(&scene, TechniqueKind::Particle, SessionOptions::default()).expect("session");
+    let mut read = Session::new(&scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
+    let mut streamed = Session::new(&scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
     let until = files.duration(dt) + 0.5;
     let mut sent = None;
     while read.time() + 0.5 * dt < until {
@@ -70,7 +70,7 @@ fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2
         streamed.step_image(feed.image_at(Instant::now(), &sensor).expect("frame")).expect("step");
     }
     let (a, b) = (box_at(&read), box_at(&streamed));
-    let travel = (a - box_at(&Session::new(&scene, TechniqueKind::Particle, options).expect("session"))).length();
+    let travel = (a - box_at(&Session::new(&scene, TechniqueKind::PARTICLE, options).expect("session"))).length();
     (a, b, travel)
 }
 
@@ -99,7 +99,7 @@ fn demo(args: &[&str]) -> std::process::Output {
         .expect("runs")
 }
 
-/// Without the `camera` feature (the README's test build) the flag is
+/// Without the `camera` feature (the default test build) the flag is
 /// understood and refused with how to get it; with it, a device that does
 /// not exist is named. Either way: exit 2, before any window.
 #[test]

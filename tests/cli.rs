@@ -145,16 +145,14 @@ fn tradeoff_errors_grow_as_each_knob_saves_time() {
         }
         // Neighbouring settings may swap by a little: the error is where a
         // dragged box ends, and which contacts rapier solves in which order
-        // moves that (measured after the switch to per-point friction: 0.62
-        // then 0.58 cm at the two finest resolutions, 1.70 then 1.60 cm at
+        // moves that by millimetres (at the two finest resolutions, and at
         // edge thresholds 24 and 48). The resolutions swap by more: the
         // box rides on the friction of the few particles on its top, and
-        // with culling by footprint the error at 640x480 moved between
-        // 0.39 and 1.44 cm as the cull slack alone went from 1 to 5 cm,
-        // while 160x120 stayed at 3.0-3.3 cm. Since particles are created
-        // clear of the box and weigh 0.4 kg (session 13), stride 2 ends
-        // 0.80 cm off the stride-1 run and stride 3 0.38 cm (4, 6, 8: 0.98,
-        // 1.15, 2.52). A real loss of accuracy is centimetres, so a setting
+        // at 640x480 the error moves by about a centimetre with the cull
+        // slack alone, while at 160x120 it stays large. Particles are
+        // created clear of the box and weigh 0.4 kg, so neighbouring
+        // strides end within a centimetre of each other. A real loss of
+        // accuracy is centimetres, so a setting
         // may sit at most 0.5 cm (resolution: 1.1 cm) below the finer one,
         // and the coarsest must be the worst.
         let swap = if knob == "resolution" { 1.1 } else { 0.5 };
@@ -166,10 +164,9 @@ fn tradeoff_errors_grow_as_each_knob_saves_time() {
     }
     let cull = errors("particle_cull");
     assert_eq!(cull.len(), 2, "{csv}");
-    // Culling drops only particles that cannot touch the box (a probe of the
-    // flat-hand sweep found every dropped one at least 13 mm from the box's
-    // bounding box after every step), yet the box ends 2.1 cm off the full
-    // run: with fewer bodies rapier meets the box's contacts in another
+    // Culling drops only particles that cannot touch the box (see
+    // `no_culled_particle_could_have_touched_the_box`), yet the box may end centimetres off the
+    // full run: with fewer bodies rapier meets the box's contacts in another
     // order, and 4 PGS iterations of per-point friction do not converge
     // to one answer (see `culled_particles_change_nothing_the_objects_feel`
     // in tests/techniques.rs). A real loss would be the box left behind.
@@ -241,7 +238,7 @@ fn contact_answers_one_line_of_json() {
 
 #[test]
 fn contact_refuses_a_concave_polygon_over_the_decomposition_limit() {
-    // 8,000 alternating-radius vertices took 4-12 s before the limit (issue #20).
+    // 8,000 alternating-radius vertices would take seconds to decompose: refused at once.
     let star: Vec<[f64; 2]> = (0..8000)
         .map(|i| {
             let t = std::f64::consts::TAU * f64::from(i) / 8000.0;
@@ -394,7 +391,7 @@ fn behaviours_prints_the_table_and_checks_it() {
     assert!(text(&o).contains("--case"), "{}", text(&o));
 }
 
-/// Issue 17: the built-in scenes and gestures are in the binary, so it runs
+/// The built-in scenes and gestures are in the binary, so it runs
 /// from any folder; a file on disk with the same path still wins.
 #[test]
 fn built_in_scenes_and_gestures_work_from_any_folder() {
@@ -463,14 +460,14 @@ fn bad_flag_values_exit_2_and_name_the_flag() {
     }
 }
 
-/// Inputs that used to hang, abort or panic: each is refused at once with
+/// Inputs that would hang, abort or panic if accepted: each is refused at once with
 /// exit 2, naming the flag or the file and field, and the bound.
 #[test]
 fn inputs_past_a_bound_exit_2_instead_of_hanging_or_aborting() {
     let scratch_dir = tmp("bounds");
     let dir = scratch_dir.path().to_path_buf();
-    // A design of a billion participants asked for 864 GB before; now it
-    // is refused before anything is planned or written.
+    // A design of a billion participants would ask for hundreds of gigabytes:
+    // it is refused before anything is planned or written.
     for (flag, value, bound) in [("--participants", "1000000000", "1..=1000"), ("--reps", "1000000000", "1..=100")] {
         let o = bin()
             .args(["study", "--no-progress", "--out"])
@@ -583,7 +580,7 @@ fn a_report_that_cannot_be_written_exits_1_and_leaves_the_folder_clean() {
     assert_eq!(std::fs::read(&report).expect("report"), first, "the earlier report is untouched");
 }
 
-/// Every flag of `run --help` says what it does; `--feedback` once had no line.
+/// Every flag of `run --help` says what it does, `--feedback` included.
 #[test]
 fn run_help_describes_feedback() {
     let out = bin().args(["run", "--help"]).output().expect("runs");
@@ -596,4 +593,101 @@ fn run_help_describes_feedback() {
     let next = lines.get(at + 1).map_or("", |l| l.trim());
     let description = if same.is_empty() && !next.starts_with('-') { next } else { same };
     assert!(description.len() > 10, "no description for --feedback:\n{help}");
+}
+
+#[test]
+fn gestures_resolve_by_built_in_name_from_any_folder() {
+    let scratch = tmp("gesture-name");
+    let o = bin()
+        .current_dir(scratch.path())
+        .args(["run", "--task", "cases/one_box", "--technique", "joint", "--gesture", "fingertip_drag"])
+        .output()
+        .expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let report: serde_json::Value = serde_json::from_slice(&o.stdout).expect("the report on standard output");
+    let moved = report["objects"][0]["position"][0].as_f64().expect("x");
+    // The built-in drag pulls the box 10 cm to the right.
+    assert!(moved > 0.05, "box at x = {moved}");
+
+    let o = bin()
+        .current_dir(scratch.path())
+        .args(["run", "--task", "cases/one_box", "--technique", "joint", "--gesture", "fingertip_drgs"])
+        .output()
+        .expect("runs");
+    let t = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{t}");
+    for needle in [
+        "no gesture `fingertip_drgs`",
+        "assets/gestures/fingertip_drgs.toml",
+        "fingertip_drag, flat_hand_sweep",
+        "path to a gesture file",
+    ] {
+        assert!(t.contains(needle), "{needle:?} not in {t}");
+    }
+}
+
+#[test]
+fn run_list_names_the_built_in_scenes_gestures_and_techniques() {
+    let o = bin().args(["run", "--list"]).output().expect("runs");
+    let t = text(&o);
+    assert!(o.status.success(), "{t}");
+    assert!(t.contains("scenes (--task): ball, cards, cloth, gather, positioning,"), "{t}");
+    assert!(t.contains("cases/one_box") && t.contains("fingertip_drag") && t.contains("behaviours/NAME"), "{t}");
+    assert!(t.contains("techniques (--technique): direct, joint, proxy, particle, hybrid"), "{t}");
+    // --list stands alone.
+    let o = bin().args(["run", "--list", "--task", "positioning"]).output().expect("runs");
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
+}
+
+#[test]
+fn an_incomplete_run_says_why() {
+    let scratch = tmp("incomplete");
+    let cases = [
+        // The drag crosses the table's middle, where no positioning object lies.
+        ("positioning", "fingertip_drag", "1", "goal not met: 0 of 8 placed"),
+        ("cases/one_box", "flick", "0", "the scene has no goal"),
+        // A flat hand sweeps the pieces and the run ends as it lifts.
+        ("sorting", "flat_hand_sweep", "0", "still moving when the settle time ran out"),
+    ];
+    for (task, gesture, settle, why) in cases {
+        let report = scratch.path().join("r.json");
+        let o = bin()
+            .args([
+                "run",
+                "--task",
+                task,
+                "--technique",
+                "particle",
+                "--gesture",
+                gesture,
+                "--settle",
+                settle,
+                "--report",
+            ])
+            .arg(&report)
+            .output()
+            .expect("runs");
+        let t = text(&o);
+        assert!(o.status.success(), "{t}");
+        assert!(t.contains("complete: false (") && t.contains(why), "{task}: {t}");
+        let json: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(&report).expect("report")).expect("JSON");
+        assert!(json["completion"]["incomplete"].as_str().is_some_and(|s| s.contains(why)), "{task}: {json}");
+    }
+}
+
+#[test]
+fn a_headless_picture_without_a_runtime_dir_prints_no_error() {
+    let scratch = tmp("no-xdg");
+    let out = scratch.path().join("p.png");
+    let o = bin()
+        .env_remove("XDG_RUNTIME_DIR")
+        .args(["screenshot", "--task", "positioning", "--size", "320x240", "--out"])
+        .arg(&out)
+        .output()
+        .expect("runs");
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{stderr}");
+    assert!(!stderr.to_lowercase().contains("error"), "{stderr}");
+    assert!(out.is_file());
 }

@@ -182,11 +182,11 @@ fn snapped(a: &[[f64; 2]], b: &[[f64; 2]], dx: f64, dy: f64, snap: u32) -> (Conv
     (a.translated(t).expect("moved"), b)
 }
 
-/// Two touching pairs of regular polygons that the one-shot query called
-/// separated (by 0.62 and 1.39): a normal half a turn from the search's
-/// reference direction fell in either half by rounding, and the separating
-/// axis search took the opposite vertex. Each failed about once in 200
-/// runs of the proptest before the fix (`at_or_after_in_half`).
+/// Two touching pairs of regular polygons that a one-shot query can call
+/// separated: a normal half a turn from the search's reference direction
+/// falls in either half by rounding, and the separating axis search would
+/// take the opposite vertex (`at_or_after_in_half` decides it). The
+/// proptest meets such pairs rarely; these two are kept.
 #[test]
 #[allow(clippy::unreadable_literal)] // the proptest's numbers, as printed
 fn touching_regular_polygons_are_not_called_separated() {
@@ -314,9 +314,9 @@ proptest! {
         let theirs = query::contact(&id, &pa, &id, &pb, ours.distance.max(0.0) + 1.0)
             .expect("supported")
             .expect("within prediction");
-        // parry's GJK and EPA stop at about 1e-8 of the size here (checked
-        // against exact rational arithmetic on a failing case: ours was the
-        // exact one), so the comparison is at 1e-7.
+        // parry's GJK and EPA stop at about 1e-8 of the size here (exact
+        // rational arithmetic on such a case agrees with ours), so the
+        // comparison is at 1e-7.
         let eps = 1e-7;
         prop_assert!(
             (theirs.dist - ours.distance).abs() <= eps,

@@ -41,7 +41,7 @@ fn doctor_display(display: &str) -> String {
     stdout.lines().find(|l| l.starts_with("display: ")).expect("a display line").to_owned()
 }
 
-/// Issue 17: a `DISPLAY` with no server behind it is no display; one with a
+/// A `DISPLAY` with no server behind it is no display; one with a
 /// live Xvfb is. (Xvfb comes from `.ci/setup`.)
 #[test]
 fn doctor_connects_to_the_display_instead_of_trusting_the_variable() {

@@ -1,4 +1,4 @@
-//! The fuzz harness (issue 17): every reader of user input is fed valid
+//! The fuzz harness: every reader of user input is fed valid
 //! files with numbers swapped for extremes, lines dropped and bytes
 //! flipped, and must answer with a value or an error, never a panic or a
 //! hang. Scenes that still load are also built into a world and stepped,
@@ -178,7 +178,7 @@ fn scene_templates() -> Vec<&'static str> {
 /// everything the physics cannot take.
 fn check_scene(text: &str) {
     let Ok(scene) = scene::parse(text, "fuzz.toml") else { return };
-    for kind in [TechniqueKind::Joint, TechniqueKind::Particle] {
+    for kind in [TechniqueKind::JOINT, TechniqueKind::PARTICLE] {
         let Ok(mut session) = Session::new(&scene, kind, SessionOptions::default()) else { continue };
         for _ in 0..3 {
             let hand = Hand::new(1, HandKind::FlatHand, 0.0, 0.0).with_pressure(1.0);

@@ -69,24 +69,24 @@ fn grasp(task: &str, gesture: &str, kind: TechniqueKind) -> Grasp {
 fn two_flat_hands_closing_on_a_box_carry_it_with_hybrid() {
     let task = "tasks/cases/small_box.toml";
     let gesture = "assets/gestures/grasp_two_hands.toml";
-    let h = grasp(task, gesture, TechniqueKind::Hybrid);
+    let h = grasp(task, gesture, TechniqueKind::HYBRID);
     assert_eq!(h.nan, 0);
-    // The issue's threshold: at least 90% of the hands' travel.
+    // The grasp threshold: at least 90% of the hands' travel.
     assert!(h.carried >= 0.9 * CARRY, "hybrid carried the box {:.3} m of {CARRY}", h.carried);
     assert!(h.max_lag < 0.03, "hybrid: the box strayed {:.3} m from the hands", h.max_lag);
     // Released when the hands open: it does not keep going.
     assert!(h.speed_after < 0.05, "hybrid: box still moving at {:.3} m/s after release", h.speed_after);
-    // Particle carries it too (measured 0.138 m): the outline's particles
+    // Particle carries it too: the outline's particles
     // land on the rim of the box's top, friction from the top and collision
     // from the side, the paper's Figure 4. "A proxy is one body per blob":
     // the flat hand's proxy sits at the palm's centre, 7.5 cm from the box,
     // and never touches it.
-    let p = grasp(task, gesture, TechniqueKind::Proxy);
+    let p = grasp(task, gesture, TechniqueKind::PROXY);
     assert!(p.carried.abs() < 0.01, "proxy moved the box {:.3} m", p.carried);
 }
 
 /// A grasp, by one definition for every technique: the object travels at
-/// least 90% of the hands' carry (the issue's threshold), stays within 1 cm
+/// least 90% of the hands' carry, stays within 1 cm
 /// of where the fingers hold it all the way, and is at rest (under 2 cm/s)
 /// half a second after the fingers open and lift.
 fn is_grasp(g: &Grasp) -> bool {
@@ -97,7 +97,7 @@ fn is_grasp(g: &Grasp) -> bool {
 fn a_pinch_grasps_a_ball_with_hybrid_and_lets_it_go() {
     let task = "tasks/cases/ball.toml";
     let gesture = "assets/gestures/grasp_pinch.toml";
-    let h = grasp(task, gesture, TechniqueKind::Hybrid);
+    let h = grasp(task, gesture, TechniqueKind::HYBRID);
     assert_eq!(h.nan, 0);
     assert!(
         is_grasp(&h),
@@ -111,9 +111,8 @@ fn a_pinch_grasps_a_ball_with_hybrid_and_lets_it_go() {
     // proxy corresponding to a grasping finger on top of the object, thus
     // defeating attempts to grasp it". Pinching a ball, its particles land
     // on the ball's flanks and push it ahead: it rolls away from the
-    // fingers and keeps rolling when they let go (measured: 1.9 cm astray,
-    // 0.09 m/s after release).
-    let p = grasp(task, gesture, TechniqueKind::Particle);
+    // fingers and keeps rolling when they let go.
+    let p = grasp(task, gesture, TechniqueKind::PARTICLE);
     assert!(
         !is_grasp(&p),
         "particle grasped the ball (carried {:.3} m, strayed {:.3} m, {:.3} m/s after)",
@@ -123,7 +122,7 @@ fn a_pinch_grasps_a_ball_with_hybrid_and_lets_it_go() {
     );
     // "A proxy is one body per blob": each fingertip's proxy lands on the
     // ball's top and slides off it.
-    assert!(!is_grasp(&grasp(task, gesture, TechniqueKind::Proxy)));
+    assert!(!is_grasp(&grasp(task, gesture, TechniqueKind::PROXY)));
 }
 
 #[test]
@@ -136,7 +135,7 @@ fn hybrid_presses_from_the_top_like_particle() {
         s.replay_until(&g, g.duration() + 1.0).expect("replay");
         s.world().object_pose(ObjectId::new(0)).position
     };
-    let (h, p) = (run(TechniqueKind::Hybrid), run(TechniqueKind::Particle));
+    let (h, p) = (run(TechniqueKind::HYBRID), run(TechniqueKind::PARTICLE));
     assert!((0.08..=0.11).contains(&h.x), "hybrid moved the box {:.3} m", h.x);
     assert!((h - p).length() < 0.005, "hybrid {h} differs from particle {p}");
 }
@@ -161,7 +160,7 @@ t = 0.5
         "inline",
     )
     .expect("gesture");
-    let mut s = session("tasks/cases/small_box.toml", TechniqueKind::Hybrid);
+    let mut s = session("tasks/cases/small_box.toml", TechniqueKind::HYBRID);
     s.replay_until(&g, 0.5).expect("replay");
     let p = s.world().object_pose(ObjectId::new(0));
     assert!(p.position.truncate().length() < 0.005, "box shoved to {}", p.position);

@@ -41,8 +41,8 @@ fn box_y(report: &Path) -> f64 {
     r["objects"][0]["position"][1].as_f64().expect("y")
 }
 
-/// Filmed depth frames push the box forward as the edge push does (about
-/// 17 cm; the library test bounds the gap to the gesture at 10%).
+/// Filmed depth frames push the box forward as the edge push does (the
+/// library test, tests/images.rs, bounds the gap to the gesture at 10%).
 #[test]
 fn synthesized_frames_run_and_push_the_box() {
     let tmp = tempfile::tempdir().expect("dir");

@@ -44,11 +44,11 @@ fn one_technique_under_two_names_gives_identical_trials_and_strategies() {
     // every strategy must agree; only the label column differs.
     let a = scratch("guard_proxy");
     let b = scratch("guard_relabelled");
-    let design_a = tiny("sorting", TechniqueKind::Proxy);
+    let design_a = tiny("sorting", TechniqueKind::PROXY);
     run_study(&design_a, &a, &ScriptedRunner::new(design_a.clone(), None), &quiet()).expect("run a");
-    let design_b = tiny("sorting", TechniqueKind::Joint);
+    let design_b = tiny("sorting", TechniqueKind::JOINT);
     let mut runner_b = ScriptedRunner::new(design_b.clone(), None);
-    runner_b.relabel = BTreeMap::from([(TechniqueKind::Joint, TechniqueKind::Proxy)]);
+    runner_b.relabel = BTreeMap::from([(TechniqueKind::JOINT, TechniqueKind::PROXY)]);
     run_study(&design_b, &b, &runner_b, &quiet()).expect("run b");
     for file in [TRIALS_CSV, "strategies.csv"] {
         let ta = read(&a.join(file));
@@ -66,7 +66,7 @@ fn one_technique_under_two_names_gives_identical_trials_and_strategies() {
 fn a_resumed_scripted_run_writes_the_same_bytes() {
     // Two participants, practice + 1 measured trial: killed after P1's
     // practice trial, the resume must replay it to rebuild P1's learner.
-    let design = StudyDesign { participants: 2, ..tiny("sorting", TechniqueKind::Particle) };
+    let design = StudyDesign { participants: 2, ..tiny("sorting", TechniqueKind::PARTICLE) };
     let full_dir = scratch("resume_full");
     run_study(&design, &full_dir, &ScriptedRunner::new(design.clone(), None), &quiet()).expect("full");
     let full = read(&full_dir.join(TRIALS_CSV));
@@ -90,7 +90,7 @@ fn practice_tries_several_manners_and_what_is_learned_carries_over() {
         ..PlannerOptions::default()
     };
     let (o, learned) =
-        run_scripted_with(&scene, TechniqueKind::Proxy, true, skill, 5, 120.0, fresh.clone(), practice, None)
+        run_scripted_with(&scene, TechniqueKind::PROXY, true, skill, 5, 120.0, fresh.clone(), practice, None)
             .expect("practice");
     // The manners column: `name:time_s:net_m` per manner used.
     let used: Vec<&str> = o.manners.split(';').filter_map(|item| item.split(':').next()).collect();
@@ -99,7 +99,7 @@ fn practice_tries_several_manners_and_what_is_learned_carries_over() {
     // The same measured trial from the learned state and from a fresh one
     // differ: learning has an effect (and so the order of trials matters).
     let run = |l: Learner| {
-        run_scripted_with(&scene, TechniqueKind::Proxy, true, skill, 6, 120.0, l, PlannerOptions::default(), None)
+        run_scripted_with(&scene, TechniqueKind::PROXY, true, skill, 6, 120.0, l, PlannerOptions::default(), None)
             .expect("measured")
             .0
     };
@@ -115,7 +115,7 @@ fn the_perception_delay_model_is_an_option_off_by_default() {
     let delayed = PlannerOptions { perception_delay_s: 0.15, ..PlannerOptions::default() };
     let trial = |feedback: bool, options: PlannerOptions| {
         let learner = Learner::new(skill.habit());
-        run_scripted_with(&scene, TechniqueKind::Joint, feedback, skill, 9, 20.0, learner, options, None)
+        run_scripted_with(&scene, TechniqueKind::JOINT, feedback, skill, 9, 20.0, learner, options, None)
             .expect("trial")
             .0
     };
@@ -139,7 +139,7 @@ fn every_study_task_is_completed_with_every_technique() {
     for task in ["positioning", "sorting", "steering"] {
         let scene = scene::load(task).expect("task");
         let limit = f64::from(scene.time_limit_s);
-        for kind in [TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle] {
+        for kind in [TechniqueKind::JOINT, TechniqueKind::PROXY, TechniqueKind::PARTICLE] {
             let done = (1..=3).find_map(|seed| {
                 let skill = Skill::draw(seed);
                 let trial = |learner, options, s| {

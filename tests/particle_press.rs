@@ -1,8 +1,7 @@
-//! How hard a particle presses, measured in rapier: the figures behind the
+//! How hard a particle presses, measured in rapier: the behaviour behind the
 //! comment in `src/pipeline/technique/particle.rs` (where it places particles).
 //!
-//! Sixteen particles (0.2 kg, pressing 0.08 N each: the defaults until
-//! session 13, which made them 0.4 kg) rest on a
+//! Sixteen particles (0.2 kg, pressing 0.08 N each) rest on a
 //! 10 cm box; the normal impulse they get from the box in each step,
 //! divided by what their weight calls for (16 × 0.08 N × dt), is their
 //! *press fraction*.

@@ -30,7 +30,7 @@ fn gpu() -> GpuContext {
 
 fn session_at(task: &str, gesture: Option<&str>, at: f64) -> Session {
     let scene = scene::load(&root(task)).expect("scene");
-    let mut s = Session::new(&scene, TechniqueKind::Particle, SessionOptions::default()).expect("session");
+    let mut s = Session::new(&scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
     let g = gesture.map(|g| Gesture::load(root(g)).expect("gesture")).unwrap_or_default();
     s.replay_until(&g, at).expect("replay");
     s

@@ -178,7 +178,7 @@ max = [-0.28, 0.375]
 "##;
     let s = scene::parse(text, "hex_sorting.toml").expect("loads");
     assert_eq!(s.objects[0].color, Color::parse("#FF0000").expect("hex"));
-    let mut session = Session::new(&s, TechniqueKind::Joint, SessionOptions::default()).expect("session");
+    let mut session = Session::new(&s, TechniqueKind::JOINT, SessionOptions::default()).expect("session");
     assert_eq!(session.tracker().progress().total, 1, "only the red box has a zone");
     while session.time() < 1.0 && !session.progress().complete {
         session.step(&[]).expect("steps");

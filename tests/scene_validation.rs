@@ -361,7 +361,7 @@ fn a_number_past_its_documented_bound_is_named_with_the_bound() {
     let e = error(&format!("{OBJECTS}[physics]\nccd_substeps = 1000000\n"));
     assert_names(&e, Some(25), "physics.ccd_substeps", "1000000 is out of range (0..=16)");
 
-    // Cylinders and capsules of 1e30 used to reach parry and panic in epa3.rs.
+    // Cylinders and capsules of 1e30 would reach parry and panic in its EPA.
     let e = error(&with(STEER, "height = 0.02", "height = 1e30"));
     assert_names(&e, Some(9), "objects[0].height", "1e30 is out of range (0.001..=10)");
     let e = error(&with(STEER, "radius = 0.025", "radius = 1e30"));

@@ -1,4 +1,4 @@
-//! Issue 21: `surfacelab study --slurm N` through the real binary, and on a
+//! `surfacelab study --slurm N` through the real binary, and on a
 //! real Slurm: `scripts/local-slurm.sh` starts a single-node cluster on
 //! localhost (installing Debian's `slurm-wlm`, `munge`, `slurmdbd` and
 //! `mariadb-server-core` if missing), the tests submit job arrays to it, wait,
@@ -14,7 +14,7 @@ use std::time::{Duration, Instant};
 
 /// The small study every test here runs: 3 participants (one per shard of
 /// 3), one task, two repetitions, no practice, a 40 s limit (some trials
-/// finish, some fail at it): 36 trials, about 10 s of CPU.
+/// finish, some fail at it): 36 trials, seconds of CPU.
 const STUDY: [&str; 11] = [
     "--participants",
     "3",
@@ -100,7 +100,7 @@ fn slurm_ok(program: &str, args: &[&str]) -> String {
 }
 
 /// `JobID|State` of every job or array task of these jobs, from `sacct`
-/// (the command the README gives for finding failed tasks).
+/// (the command docs/cluster.md gives for finding failed tasks).
 fn sacct_states(jobs: &str) -> Vec<(String, String)> {
     slurm_ok("sacct", &["-X", "-n", "-P", "-j", jobs, "--format=JobID,State"])
         .lines()
@@ -282,7 +282,7 @@ fn a_task_cancelled_while_running_resubmitted_alone_continues_its_shard() {
     let shard_csv = dir.join("shard-1/trials.csv");
     let rows_written = || std::fs::read_to_string(&shard_csv).map_or(0, |t| t.matches('\n').count().saturating_sub(1));
 
-    // Submitted as the README's two sbatch lines do it; task 1 is cancelled
+    // Submitted as docs/cluster.md's two sbatch lines do it; task 1 is cancelled
     // once it has written two of its 12 rows.
     let array = slurm_ok("sbatch", &["--parsable", array_sh]);
     let merge = slurm_ok("sbatch", &["--parsable", &format!("--dependency=afterok:{array}"), merge_sh]);
@@ -303,7 +303,7 @@ fn a_task_cancelled_while_running_resubmitted_alone_continues_its_shard() {
     });
     let done = rows_written();
     assert!((2..12).contains(&done), "task 1 was cancelled mid-shard ({done} of 12 rows)");
-    // The merge can no longer start (afterok); the README says to cancel it.
+    // The merge can no longer start (afterok); docs/cluster.md says to cancel it.
     let start = Instant::now();
     loop {
         let reason = slurm_ok("squeue", &["-h", "-j", &merge, "-o", "%r"]);

@@ -1,4 +1,4 @@
-//! The study's command line for issue 15: failures counted at the time limit
+//! The study's command line: failures counted at the time limit
 //! (scripted and replayed), and `--seeds N`, through the real binary.
 
 use std::path::Path;
@@ -118,7 +118,7 @@ fn seeds_run_independent_studies_and_count_findings() {
     assert_eq!(again.status.code(), Some(2), "{}", text(&again));
 }
 
-/// Issue 17: a resume started while the run is still writing is refused
+/// A resume started while the run is still writing is refused
 /// (exit 2, naming the process), and after the run is killed with SIGKILL
 /// the lock it left is taken over and the run completes with one row per
 /// trial.

@@ -52,11 +52,12 @@ impl TrialRunner for FakeRunner {
             _ => 80.0,
         };
         let factor = match spec.technique {
-            TechniqueKind::Direct => 2.0,
-            TechniqueKind::Joint => 0.8,
-            TechniqueKind::Proxy => 1.1,
-            TechniqueKind::Particle => 1.0,
-            TechniqueKind::Hybrid => 0.95,
+            TechniqueKind::DIRECT => 2.0,
+            TechniqueKind::JOINT => 0.8,
+            TechniqueKind::PROXY => 1.1,
+            TechniqueKind::HYBRID => 0.95,
+            // Particle, and any registered technique.
+            _ => 1.0,
         };
         let feedback = if spec.feedback { 0.9 } else { 1.0 };
         let noise = (spec.seed % 10_000) as f64 / 997.0;
@@ -208,19 +209,21 @@ fn positions_per_group(design: &StudyDesign) -> BTreeMap<(bool, usize, Technique
 
 #[test]
 fn paper_design_counterbalances_six_participants() {
-    use TechniqueKind::{Joint as J, Particle as Pa, Proxy as P};
+    const J: TechniqueKind = TechniqueKind::JOINT;
+    const P: TechniqueKind = TechniqueKind::PROXY;
+    const PA: TechniqueKind = TechniqueKind::PARTICLE;
     let design = StudyDesign::default();
     assert_eq!(design.balance_note(), None);
-    // By hand from the Williams rows [J,P,Pa] [P,Pa,J] [Pa,J,P] and their
-    // mirrors [Pa,P,J] [J,Pa,P] [P,J,Pa]: odd IDs (feedback on first) take
+    // By hand from the Williams rows [J,P,PA] [P,PA,J] [PA,J,P] and their
+    // mirrors [PA,P,J] [J,PA,P] [P,J,PA]: odd IDs (feedback on first) take
     // the square, even IDs (off first) the mirrored square.
     let expected = [
-        (true, [J, P, Pa]),
-        (false, [Pa, P, J]),
-        (true, [P, Pa, J]),
-        (false, [J, Pa, P]),
-        (true, [Pa, J, P]),
-        (false, [P, J, Pa]),
+        (true, [J, P, PA]),
+        (false, [PA, P, J]),
+        (true, [P, PA, J]),
+        (false, [J, PA, P]),
+        (true, [PA, J, P]),
+        (false, [P, J, PA]),
     ];
     for (p, (first, order)) in (1..=6).zip(expected) {
         assert_eq!(design.feedback_order(p), vec![first, !first], "P{p}");
@@ -230,7 +233,7 @@ fn paper_design_counterbalances_six_participants() {
     let counts = positions_per_group(&design);
     for first in [true, false] {
         for pos in 0..3 {
-            for t in [J, P, Pa] {
+            for t in [J, P, PA] {
                 assert_eq!(counts.get(&(first, pos, t)), Some(&1), "group on-first={first}: {t} at position {pos}");
             }
         }
@@ -239,7 +242,7 @@ fn paper_design_counterbalances_six_participants() {
     let plan = design.plan();
     assert_eq!(plan.len(), 6);
     assert_eq!((plan[3].participant, plan[3].feedback_order.clone()), (4, vec![false, true]));
-    assert_eq!(plan[3].technique_order, vec![J, Pa, P]);
+    assert_eq!(plan[3].technique_order, vec![J, PA, P]);
 }
 
 #[test]
@@ -251,7 +254,7 @@ fn other_participant_counts_balance_only_in_whole_units() {
     // 4 techniques with on/off: a unit is 8 (a 4-row square per group).
     let four = StudyDesign {
         participants: 8,
-        techniques: vec![TechniqueKind::Direct, TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle],
+        techniques: vec![TechniqueKind::DIRECT, TechniqueKind::JOINT, TechniqueKind::PROXY, TechniqueKind::PARTICLE],
         ..StudyDesign::default()
     };
     assert_eq!(four.balance_unit(), 8);
@@ -269,7 +272,7 @@ fn other_participant_counts_balance_only_in_whole_units() {
     let note = five.balance_note().expect("5 participants are unbalanced");
     assert!(note.contains("multiple of 6"), "{note}");
     let counts = positions_per_group(&five);
-    let first_off: usize = [TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle]
+    let first_off: usize = [TechniqueKind::JOINT, TechniqueKind::PROXY, TechniqueKind::PARTICLE]
         .iter()
         .filter(|t| !counts.contains_key(&(false, 0, **t)))
         .count();
@@ -335,7 +338,7 @@ fn invalid_designs_are_rejected() {
         StudyDesign { participants: 0, ..ok.clone() },
         StudyDesign { tasks: vec![], ..ok.clone() },
         StudyDesign { tasks: vec!["sorting".into(), "sorting".into()], ..ok.clone() },
-        StudyDesign { techniques: vec![TechniqueKind::Joint, TechniqueKind::Joint], ..ok.clone() },
+        StudyDesign { techniques: vec![TechniqueKind::JOINT, TechniqueKind::JOINT], ..ok.clone() },
         StudyDesign { feedback: vec![], ..ok.clone() },
         StudyDesign { repetitions: 0, ..ok.clone() },
         StudyDesign { seed: u64::MAX, ..ok.clone() },
@@ -349,12 +352,12 @@ fn invalid_designs_are_rejected() {
 #[test]
 fn technique_and_shard_parse_and_print() {
     // The names are file contracts: trials.csv and run.toml spell them so.
-    let names: Vec<String> = TechniqueKind::ALL.iter().map(ToString::to_string).collect();
+    let names: Vec<String> = TechniqueKind::BUILT_IN.iter().map(ToString::to_string).collect();
     assert_eq!(names, ["direct", "joint", "proxy", "particle", "hybrid"]);
-    for t in TechniqueKind::ALL {
+    for t in TechniqueKind::BUILT_IN {
         assert_eq!(t.to_string().parse::<TechniqueKind>().ok(), Some(t));
     }
-    assert_eq!(" Particle ".parse::<TechniqueKind>().ok(), Some(TechniqueKind::Particle));
+    assert_eq!(" Particle ".parse::<TechniqueKind>().ok(), Some(TechniqueKind::PARTICLE));
     assert!("spring".parse::<TechniqueKind>().is_err());
     let s: Shard = "1/4".parse().expect("shard");
     assert_eq!(s, Shard { index: 1, count: 4 });
@@ -606,7 +609,7 @@ fn summary_of_hand_made_rows() {
     let design = StudyDesign {
         participants: 3,
         tasks: vec!["sorting".into()],
-        techniques: vec![TechniqueKind::Proxy],
+        techniques: vec![TechniqueKind::PROXY],
         feedback: vec![true],
         ..StudyDesign::default()
     };
@@ -614,7 +617,7 @@ fn summary_of_hand_made_rows() {
         participant,
         order_index: repetition,
         task: "sorting".into(),
-        technique: TechniqueKind::Proxy,
+        technique: TechniqueKind::PROXY,
         feedback: true,
         repetition,
         practice,
@@ -790,7 +793,7 @@ fn a_shard_resumes_as_itself() {
 #[test]
 fn run_toml_settings_keep_their_on_disk_format() {
     // `[design.settings]` as earlier versions wrote it (`--frames`,
-    // `--replay`) and as the README tells people to write it (an integer
+    // `--replay`) and as docs/file-formats.md tells people to write it (an integer
     // delay is a number of seconds too).
     let dir = scratch("run_toml_settings");
     let head = "format = \"surfacelab-study/2\"\nversion = \"0\"\n[design]\nparticipants = 2\n[design.settings]\n";
@@ -831,7 +834,7 @@ fn run_toml_round_trips() {
     let design = StudyDesign {
         participants: 4,
         tasks: vec!["steering".into(), "positioning".into()],
-        techniques: vec![TechniqueKind::Direct, TechniqueKind::Particle],
+        techniques: vec![TechniqueKind::DIRECT, TechniqueKind::PARTICLE],
         feedback: vec![false, true],
         repetitions: 3,
         practice: false,
@@ -856,7 +859,7 @@ fn run_toml_round_trips() {
     .expect("write");
     let mine = RunFile::load(&dir.join("mine.toml")).expect("load partial");
     assert_eq!(mine.design.participants, 12);
-    assert_eq!(mine.design.techniques, vec![TechniqueKind::Joint, TechniqueKind::Particle]);
+    assert_eq!(mine.design.techniques, vec![TechniqueKind::JOINT, TechniqueKind::PARTICLE]);
     assert_eq!(mine.design.tasks, StudyDesign::default().tasks);
 
     // The design table is written, and a table that contradicts the design is refused.
@@ -896,7 +899,7 @@ struct NoDirect(FakeRunner);
 
 impl TrialRunner for NoDirect {
     fn run(&self, spec: &TrialSpec) -> anyhow::Result<TrialResult> {
-        anyhow::ensure!(spec.technique != TechniqueKind::Direct, "direct force is not scripted");
+        anyhow::ensure!(spec.technique != TechniqueKind::DIRECT, "direct force is not scripted");
         self.0.run(spec)
     }
 }
@@ -908,7 +911,7 @@ fn figure_copes_with_sparse_data() {
     let design = StudyDesign {
         participants: 1,
         tasks: vec!["sorting".into(), "steering".into()],
-        techniques: TechniqueKind::ALL.to_vec(),
+        techniques: TechniqueKind::BUILT_IN.to_vec(),
         feedback: vec![false],
         ..StudyDesign::default()
     };
@@ -923,7 +926,7 @@ fn figure_copes_with_sparse_data() {
     // Two tasks, every technique.
     assert_eq!(summary.len(), 2 * 5);
     assert!(
-        summary.iter().filter(|s| s.technique == TechniqueKind::Direct).all(|s| s.mean_s.is_none() && s.failed == 2)
+        summary.iter().filter(|s| s.technique == TechniqueKind::DIRECT).all(|s| s.mean_s.is_none() && s.failed == 2)
     );
     assert!(summary.iter().all(|s| s.sd_s.is_none()));
 }

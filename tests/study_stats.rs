@@ -163,8 +163,8 @@ struct MdRunner;
 impl TrialRunner for MdRunner {
     fn run(&self, spec: &TrialSpec) -> anyhow::Result<TrialResult> {
         let angle = match spec.technique {
-            TechniqueKind::Joint => 0,
-            TechniqueKind::Proxy => 1,
+            TechniqueKind::JOINT => 0,
+            TechniqueKind::PROXY => 1,
             _ => 2,
         };
         let noise = usize::from(!spec.feedback);
@@ -266,8 +266,8 @@ fn findings_are_decided_by_their_tests() {
         .iter()
         .map(|r| {
             let technique = match r.technique {
-                TechniqueKind::Joint => TechniqueKind::Particle,
-                TechniqueKind::Particle => TechniqueKind::Joint,
+                TechniqueKind::JOINT => TechniqueKind::PARTICLE,
+                TechniqueKind::PARTICLE => TechniqueKind::JOINT,
                 t => t,
             };
             TrialRow { technique, ..r.clone() }
@@ -291,13 +291,13 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
     };
     let mut rows = Vec::new();
     for p in 1..=3u32 {
-        for technique in [TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle] {
+        for technique in [TechniqueKind::JOINT, TechniqueKind::PROXY, TechniqueKind::PARTICLE] {
             for feedback in [true, false] {
                 for rep in 1..=2 {
                     let s = spec(p, technique, feedback, rep);
                     let time = 10.0 * f64::from(p) + f64::from(rep);
                     // P2's Proxy/on rep 2 hits a 50 s limit; P3's Joint/off has no time at all.
-                    let row = if p == 2 && technique == TechniqueKind::Proxy && feedback && rep == 2 {
+                    let row = if p == 2 && technique == TechniqueKind::PROXY && feedback && rep == 2 {
                         TrialRow::new(
                             &s,
                             &TrialResult {
@@ -309,7 +309,7 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
                                 ..TrialResult::default()
                             },
                         )
-                    } else if p == 3 && technique == TechniqueKind::Joint && !feedback {
+                    } else if p == 3 && technique == TechniqueKind::JOINT && !feedback {
                         TrialRow::failed(&s)
                     } else {
                         TrialRow::new(
@@ -336,9 +336,9 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
     // P2's Proxy/on cell: (21 + 50) / 2, the timed-out trial at its limit.
     assert!((cells.values[1][cells.cell(1, 0)] - 35.5).abs() < 1e-12);
     let summary = summarize(&design, &rows);
-    let proxy_on = summary.iter().find(|s| s.technique == TechniqueKind::Proxy && s.feedback).expect("row");
+    let proxy_on = summary.iter().find(|s| s.technique == TechniqueKind::PROXY && s.feedback).expect("row");
     assert_eq!((proxy_on.completed, proxy_on.failed, proxy_on.errors), (5, 1, 0));
-    let joint_off = summary.iter().find(|s| s.technique == TechniqueKind::Joint && !s.feedback).expect("row");
+    let joint_off = summary.iter().find(|s| s.technique == TechniqueKind::JOINT && !s.feedback).expect("row");
     assert_eq!((joint_off.completed, joint_off.failed, joint_off.errors), (4, 2, 2));
 
     let dir = scratch("files");
@@ -384,4 +384,19 @@ fn the_report_reads_strategy_shares_when_trials_csv_has_them() {
     std::fs::write(&path, "participant,technique,practice,strategy\n1,joint,false,\n1,joint,true,pinch\n")
         .expect("write");
     assert_eq!(strategy_counts(&path).expect("read"), None);
+}
+
+#[test]
+fn an_untested_finding_names_the_technique_the_design_lacks() {
+    // Joint and Particle on sorting: the sorting finding needs Proxy too.
+    let design = StudyDesign {
+        tasks: vec!["sorting".into()],
+        techniques: vec![TechniqueKind::JOINT, TechniqueKind::PARTICLE],
+        ..md_design()
+    };
+    let rows: Vec<TrialRow> =
+        design.trials().iter().map(|spec| TrialRow::new(spec, &MdRunner.run(spec).expect("trial"))).collect();
+    let sorting = FINDINGS.iter().find(|f| f.task == "sorting").expect("a sorting finding");
+    let judged = sorting.judge(&analyze(&design, &rows));
+    assert_eq!(judged.verdict, FindingVerdict::NotTested("the design lacks proxy".into()));
 }

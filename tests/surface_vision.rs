@@ -202,8 +202,8 @@ fn flow_recovers_a_known_rotation_of_a_flat_hand() {
 /// px a frame. A fingertip patch is nearly round, so its outline barely
 /// changes as it turns; the turn must come from the tracked axis, smoothed
 /// over frames, and reach the flow along the outline. Without both, each
-/// fingertip's flow was a pure translation (mean turn about its centroid
-/// 0.000 rad a frame) and particles braked the box they twisted.
+/// fingertip's flow is a pure translation (no turn about its centroid) and
+/// particles brake the box they twist.
 #[test]
 fn flow_carries_the_turn_of_a_twisting_fingertip() {
     let frames = 90;

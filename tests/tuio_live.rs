@@ -121,7 +121,7 @@ fn flat_hand(centre: [f32; 2]) -> Vec<[f32; 2]> {
     outline.iter().map(|p| [p[0] + centre[0], p[1] + centre[1]]).collect()
 }
 
-/// One TUIO 2.0 frame: the hand's outer contour (session 12) with its
+/// One TUIO 2.0 frame: the hand's outer contour with its
 /// pointer for pressure, or an empty alive list when `hand` is `None`.
 fn tuio2_frame(frame: i32, hand: Option<[f32; 2]>) -> Vec<u8> {
     let mut content = vec![msg(

@@ -142,9 +142,9 @@ fn touching_where_an_object_appears_hits_its_top() {
 
 /// Two of the `gather` task's 2.2 cm discs, one driven into the other at
 /// 0.2 m/s (a hand's sweep) for half a second: they push, not pass
-/// through each other. parry's GJK/EPA gave up at this size (absolute
-/// tolerances; `pipeline/world/magnified.rs`) and let them sink up to
-/// 10 mm into each other in `surfacelab behaviours --case gather`.
+/// through each other. parry's GJK/EPA gives up at this size (absolute
+/// tolerances; `pipeline/world/magnified.rs`) and, unmagnified, lets them
+/// sink millimetres into each other in `surfacelab behaviours --case gather`.
 #[test]
 fn small_discs_pushed_together_do_not_interpenetrate() {
     let s = scene::parse(
@@ -190,10 +190,10 @@ color = "blue"
 /// table's centre, so its near wall is in view), upright and tilted a
 /// little as it is while dragged: each hit lies on the surface its normal
 /// says, top or wall. parry casts rays at cylinders by GJK, whose hits
-/// from the eye landed up to a millimetre off the surface with normals
-/// between the two; a hit under the top near the rim was taken for the
-/// wall, and a particle placed there slid down "the wall" into the top
-/// and tipped the cylinder over under a dragging fingertip. The world now
+/// from the eye can land a millimetre off the surface with normals
+/// between the two; a hit under the top near the rim is then taken for the
+/// wall, and a particle placed there slides down "the wall" into the top
+/// and tips the cylinder over under a dragging fingertip. The world
 /// solves the ray and the cylinder exactly (`ray::cylinder_hit`).
 #[test]
 fn cap_and_wall_hits_get_their_own_normals() {
@@ -293,10 +293,10 @@ fn row_length(w: &World) -> f32 {
 /// scene `physics.give_way`): two walls closing on a row of five discs
 /// (11 cm of them) from 18 cm apart to 6 cm in 0.5 s cannot fit them.
 /// Pressing with whatever impulse it takes (`give_way = false`), they
-/// pressed the discs 10.2 mm into each other and left the row 5.1 cm long
-/// after crushing it; giving way, they stop pressing once they close on the
-/// row: 0.05 mm, 8.9 cm. One wall alone still pushes the row along (7.2 cm,
-/// 0.6 mm deepest): a push from one side is no squeeze.
+/// press the discs millimetres into each other and crush the row; giving
+/// way, they stop pressing once they close on the row, which keeps its
+/// length. One wall alone still pushes the row along: a push from one side
+/// is no squeeze.
 #[test]
 fn a_row_squeezed_between_two_hands_gives_way_instead_of_interpenetrating() {
     let (deepest, _, w) = squeeze_row(&[-0.09, 0.09], false);
@@ -340,10 +340,9 @@ fn overlap_after_one_step(hand: bool) -> f32 {
 /// Objects a step leaves inside each other while a hand touches one are
 /// moved apart by position (`pipeline/world/pile_projection.rs`): the
 /// solver alone takes a 4 mm overlap out over several steps, at speeds its
-/// soft contacts bound, while a sweep goes on pressing. Measured: left to
-/// the solver, 4.0 mm after the step (3.4, 2.9, ... 0.9 mm over the next
-/// ten); with a hand's wall touching the first disc, 0.5 mm (the
-/// projection's slop).
+/// soft contacts bound, while a sweep goes on pressing: left to the
+/// solver, most of the overlap remains after the step; with a hand's wall
+/// touching the first disc, only the projection's slop (0.5 mm) does.
 #[test]
 fn objects_a_hand_pushes_into_each_other_are_moved_apart_within_the_step() {
     let alone = overlap_after_one_step(false);

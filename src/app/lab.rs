@@ -428,7 +428,7 @@ mod tests {
     fn a_recording_replays_the_live_run_bit_for_bit() {
         let dir = std::env::temp_dir().join(format!("surfacelab-lab-{}", std::process::id()));
         let path = dir.join("sort.toml");
-        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle), None).expect("opens");
+        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::PARTICLE), None).expect("opens");
         lab.start_recording(Some(path.clone())).expect("starts");
         let mut events = Events::new();
         let shift = |on: bool| MouseEvent::Modifiers(Modifiers { shift: on, ..Modifiers::default() });
@@ -465,7 +465,7 @@ mod tests {
     /// 8 and at 60 frames per second.
     #[test]
     fn a_drag_at_8_fps_moves_the_box_as_far_as_at_60() {
-        for technique in [TechniqueKind::Particle, TechniqueKind::Proxy] {
+        for technique in [TechniqueKind::PARTICLE, TechniqueKind::PROXY] {
             let moved = |fps: f64| {
                 let mut lab = Lab::new(&DemoOptions::new("tasks/cases/one_box.toml", technique), None).expect("opens");
                 let mut events = Events::new();
@@ -484,7 +484,7 @@ mod tests {
     /// lag of a stall before it is forgotten.
     #[test]
     fn reset_shows_the_hint_again_and_forgets_the_lag() {
-        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle), None).expect("opens");
+        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::PARTICLE), None).expect("opens");
         assert!(lab.hint().is_some(), "a new task shows its hint");
         lab.wall = 20.0;
         lab.advance(2.0); // a two-second stall: most of it dropped
@@ -499,7 +499,7 @@ mod tests {
 
     #[test]
     fn the_view_always_fits_the_whole_table() {
-        let lab = Lab::new(&DemoOptions::new("positioning", TechniqueKind::Joint), None).expect("opens");
+        let lab = Lab::new(&DemoOptions::new("positioning", TechniqueKind::JOINT), None).expect("opens");
         for size in [[960, 800], [1280, 800], [400, 900], [1600, 400]] {
             let list = lab.draw_list(size);
             let camera = crate::render::CameraMatrices::for_draw_list(&list, size);

@@ -183,7 +183,7 @@ fn task_section(ui: &mut egui::Ui, lab: &Lab, state: &mut PanelState, actions: &
         ui.label("Technique");
         let mut kind = lab.technique();
         ui.horizontal_wrapped(|ui| {
-            for k in TechniqueKind::ALL {
+            for k in TechniqueKind::registered() {
                 ui.radio_value(&mut kind, k, k.name());
             }
         });
@@ -234,18 +234,18 @@ fn parameters(ui: &mut egui::Ui, lab: &mut Lab, actions: &mut Vec<Action>) {
             Slider::new(&mut c.proxy_mass, 0.05..=5.0)
                 .logarithmic(true)
                 .suffix(" kg")
-                .text(strong(kind == TechniqueKind::Proxy, "proxy mass")),
+                .text(strong(kind == TechniqueKind::PROXY, "proxy mass")),
         );
         ui.add(
             Slider::new(&mut c.proxy_weight, 0.1..=10.0)
                 .logarithmic(true)
                 .suffix(" N")
-                .text(strong(kind == TechniqueKind::Proxy, "proxy weight")),
+                .text(strong(kind == TechniqueKind::PROXY, "proxy weight")),
         );
         ui.add(Slider::new(&mut c.friction, 0.0..=3.0).text(strong(
             matches!(
                 kind,
-                TechniqueKind::Proxy | TechniqueKind::Particle | TechniqueKind::Hybrid | TechniqueKind::Joint
+                TechniqueKind::PROXY | TechniqueKind::PARTICLE | TechniqueKind::HYBRID | TechniqueKind::JOINT
             ),
             "finger friction",
         )));
@@ -253,12 +253,12 @@ fn parameters(ui: &mut egui::Ui, lab: &mut Lab, actions: &mut Vec<Action>) {
             Slider::new(&mut c.joint_stiffness, 5.0..=1000.0)
                 .logarithmic(true)
                 .suffix(" N/m")
-                .text(strong(kind == TechniqueKind::Joint, "joint stiffness")),
+                .text(strong(kind == TechniqueKind::JOINT, "joint stiffness")),
         );
         ui.add(
             Slider::new(&mut c.particle_stride, 1..=8)
                 .suffix(" px")
-                .text(strong(matches!(kind, TechniqueKind::Particle | TechniqueKind::Hybrid), "particle stride")),
+                .text(strong(matches!(kind, TechniqueKind::PARTICLE | TechniqueKind::HYBRID), "particle stride")),
         );
         let stride_changed = c.particle_stride != stride;
         ui.label(
@@ -326,14 +326,14 @@ fn stat_rows(lab: &Lab) -> Vec<Row> {
     row("contacts", counts.contacts.to_string());
     row(
         match lab.technique() {
-            TechniqueKind::Particle | TechniqueKind::Hybrid => "particles",
-            TechniqueKind::Proxy => "proxies",
-            TechniqueKind::Joint => "anchors",
-            TechniqueKind::Direct => "bodies",
+            TechniqueKind::PARTICLE | TechniqueKind::HYBRID => "particles",
+            TechniqueKind::PROXY => "proxies",
+            TechniqueKind::JOINT => "anchors",
+            _ => "bodies",
         },
         counts.bodies.to_string(),
     );
-    if counts.joints > 0 || lab.technique() == TechniqueKind::Joint {
+    if counts.joints > 0 || lab.technique() == TechniqueKind::JOINT {
         row("joints", counts.joints.to_string());
     }
     let limit = lab.scene().time_limit_s;
@@ -414,7 +414,7 @@ mod tests {
     /// The TUIO counters are on screen at 1280x800 without scrolling.
     #[test]
     fn tuio_counters_show_without_scrolling() {
-        let mut options = DemoOptions::new("sorting", TechniqueKind::Particle);
+        let mut options = DemoOptions::new("sorting", TechniqueKind::PARTICLE);
         options.tuio = Some("127.0.0.1:0".parse().expect("an address"));
         let mut lab = Lab::new(&options, None).expect("opens with a TUIO listener");
         let texts = visible_texts(&egui::Context::default(), &mut lab, &mut PanelState::new());
@@ -427,7 +427,7 @@ mod tests {
     /// [`NUMBERS_REFRESH_S`], so the panel's pixels stay the same between.
     #[test]
     fn numbers_refresh_twice_a_second() {
-        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::Particle), None).expect("opens");
+        let mut lab = Lab::new(&DemoOptions::new("sorting", TechniqueKind::PARTICLE), None).expect("opens");
         let (ctx, mut state) = (egui::Context::default(), PanelState::new());
         let frame_line = |texts: &[(String, f32)]| {
             texts.iter().find(|(t, _)| t.ends_with("fps")).map(|(t, _)| t.clone()).expect("the frame line")

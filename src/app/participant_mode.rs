@@ -145,7 +145,7 @@ mod tests {
         let _ = std::fs::remove_dir_all(&dir);
         let options = ParticipantOptions {
             id: 3,
-            technique: TechniqueKind::Proxy,
+            technique: TechniqueKind::PROXY,
             feedback: true,
             repetitions: 2,
             trials_csv: dir.join("trials.csv"),

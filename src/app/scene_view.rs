@@ -85,8 +85,8 @@ const VIEW_MARGIN: f32 = 1.03;
 /// field of view is widened (letterboxed) until the whole table and every
 /// object on it show at the view's aspect ratio. Tall objects near an edge
 /// appear pushed outward in perspective, so each object counts by the top
-/// of its bounding sphere: an 800x800 view no longer cuts off the sides of
-/// the table, nor a cylinder pushed against a wall.
+/// of its bounding sphere: even an 800x800 view cuts off neither the sides
+/// of the table nor a cylinder pushed against a wall.
 pub fn fitted_draw_list(session: &Session, options: ViewOptions, size: [u32; 2]) -> DrawList {
     let mut list = draw_list(session, options);
     let scene = session.scene();
@@ -269,7 +269,7 @@ position = [0.46, 0.33]
 body = "fixed"
 "#;
         let scene = crate::scene::parse(text, "test").expect("scene");
-        let session = Session::new(&scene, TechniqueKind::Joint, SessionOptions::default()).expect("session");
+        let session = Session::new(&scene, TechniqueKind::JOINT, SessionOptions::default()).expect("session");
         for size in [[800, 800], [960, 800], [1280, 800], [400, 900], [1600, 400]] {
             let list = fitted_draw_list(&session, ViewOptions::default(), size);
             let camera = CameraMatrices::for_draw_list(&list, size);

@@ -1,9 +1,9 @@
 //! The side panel drawn once and reused while it does not change.
 //!
 //! On a software rasteriser egui's own drawing is a large part of a frame:
-//! at 1280x800 on lavapipe the panel's ~7,600 triangles (text is two per
-//! glyph, plus anti-aliasing feathers) took 20-36 ms of the frame's GPU
-//! time, about as much as the 3D table (measured with `scripts/demo-fps.sh`).
+//! at 1280x800 on lavapipe the panel's thousands of triangles (text is two
+//! per glyph, plus anti-aliasing feathers) take about as much of the
+//! frame's GPU time as the 3D table (measured with `scripts/demo-fps.sh`).
 //! Yet from one frame to the next the panel is usually pixel for pixel the
 //! same. So egui's output is cut in two: the leading primitives that lie
 //! wholly outside the table view (the panel) are drawn into a texture of

@@ -90,7 +90,8 @@ struct Gfx {
     renderer: Renderer,
     target: ViewTarget,
     /// The view is copied into the window (fast) rather than drawn by egui
-    /// as a textured rectangle (on lavapipe ~40 ms more per frame).
+    /// as a textured rectangle (on lavapipe that costs a large share of the
+    /// frame, `scripts/demo-fps.sh`).
     direct: bool,
     egui: egui::Context,
     egui_state: egui_winit::State,

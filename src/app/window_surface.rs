@@ -15,7 +15,8 @@ pub struct WindowSurface {
     pub caps: wgpu::SurfaceCapabilities,
     /// A plain 8-bit format where offered: egui draws sRGB-encoded values,
     /// so such a surface shows them as they are (on lavapipe the per-pixel
-    /// conversion of an sRGB surface cost ~40 ms a frame).
+    /// conversion of an sRGB surface costs a large share of the frame,
+    /// `scripts/demo-fps.sh`).
     pub format: wgpu::TextureFormat,
 }
 

@@ -147,7 +147,7 @@ mod tests {
     fn defaults_are_the_flags_defaults() {
         let d = DemoArgs::default();
         assert_eq!(d.task, "positioning");
-        assert_eq!(d.technique, TechniqueKind::Particle);
+        assert_eq!(d.technique, TechniqueKind::PARTICLE);
         assert!(d.tuio.is_none() && d.participant.is_none());
     }
 
@@ -173,13 +173,13 @@ mod tests {
     fn participant_mode_takes_its_condition() {
         let o = parse(&["--participant", "4", "--condition", "joint:off", "--task", "steering"]).expect("valid");
         let p = o.participant.expect("participant mode");
-        assert_eq!((p.id, p.technique, p.feedback, p.repetitions), (4, TechniqueKind::Joint, false, REPETITIONS));
+        assert_eq!((p.id, p.technique, p.feedback, p.repetitions), (4, TechniqueKind::JOINT, false, REPETITIONS));
         assert_eq!(p.trials_csv, PathBuf::from(TRIALS_CSV));
         assert!(!o.contact_overlay);
         assert!(parse(&["--participant", "4"]).is_err());
         assert!(parse(&["--participant", "0", "--condition", "joint:on"]).is_err());
         assert!(parse(&["--reps", "3"]).is_err());
-        assert_eq!(parse_condition("particle:on"), Ok((TechniqueKind::Particle, true)));
+        assert_eq!(parse_condition("particle:on"), Ok((TechniqueKind::PARTICLE, true)));
         assert!(
             parse_condition("particle").is_err()
                 && parse_condition("rope:on").is_err()

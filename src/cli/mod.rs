@@ -17,8 +17,8 @@ mod synth_images;
 mod tradeoff;
 
 use crate::harness::study::Shard;
-use crate::pipeline::technique::TechniqueKind;
-use clap::{Args, Parser, Subcommand};
+use crate::pipeline::technique::{TechniqueKind, TechniqueRegistry};
+use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -61,7 +61,7 @@ pub struct DemoArgs {
     /// Scene name under tasks/ or a path to a scene file.
     #[arg(long, default_value = "positioning")]
     pub task: String,
-    #[arg(long, value_enum, default_value_t = TechniqueKind::Particle)]
+    #[arg(long, value_parser = parse_technique, default_value_t = TechniqueKind::PARTICLE)]
     pub technique: TechniqueKind,
     /// Show the technique's feedback (joint lines, proxy cubes, particles).
     #[arg(long)]
@@ -116,19 +116,23 @@ pub struct DemoArgs {
 /// Exactly one source of hands: a gesture file, a live TUIO stream or
 /// recorded camera frames.
 #[derive(Debug, Args)]
-#[command(group(clap::ArgGroup::new("input").required(true).args(["gesture", "tuio", "images"])))]
+#[command(group(clap::ArgGroup::new("input").required(true).args(["gesture", "tuio", "images", "list"])))]
 pub struct RunArgs {
     /// Scene name under tasks/ or a path to a scene file.
-    #[arg(long)]
-    pub task: String,
-    #[arg(long, value_enum)]
-    pub technique: TechniqueKind,
+    #[arg(long, required_unless_present = "list")]
+    pub task: Option<String>,
+    #[arg(long, value_parser = parse_technique, required_unless_present = "list")]
+    pub technique: Option<TechniqueKind>,
+    /// List the built-in scenes and gestures (usable by name from any
+    /// folder) and the registered techniques, then exit.
+    #[arg(long, conflicts_with_all = ["task", "technique", "feedback", "report"])]
+    pub list: bool,
     /// Record the run as one with the technique's feedback shown (the report's
     /// `feedback` field); the simulation is the same either way.
     #[arg(long)]
     pub feedback: bool,
-    /// Gesture file to replay.
-    #[arg(long, value_name = "FILE")]
+    /// Gesture to replay: a built-in name (`fingertip_drag`) or a gesture file.
+    #[arg(long, value_name = "NAME|FILE")]
     pub gesture: Option<PathBuf>,
     /// Run in real time from TUIO 1.1 or 2.0 over UDP on PORT (default 3333; 0 picks a free port, printed).
     #[arg(long, value_name = "PORT", num_args = 0..=1, default_missing_value = "3333", requires = "seconds")]
@@ -332,7 +336,7 @@ pub struct ScreenshotArgs {
     /// Scene name under tasks/ or a path to a scene file.
     #[arg(long, default_value = "positioning")]
     pub task: String,
-    #[arg(long, value_enum, default_value_t = TechniqueKind::Particle)]
+    #[arg(long, value_parser = parse_technique, default_value_t = TechniqueKind::PARTICLE)]
     pub technique: TechniqueKind,
     /// Draw the technique's feedback (red joint lines, proxy cubes, particles).
     #[arg(long)]
@@ -438,7 +442,7 @@ pub struct TradeoffArgs {
 #[derive(Debug, Args)]
 pub struct BehavioursArgs {
     /// Comma-separated techniques (default: every technique but direct).
-    #[arg(long, value_delimiter = ',', value_enum)]
+    #[arg(long, value_delimiter = ',', value_parser = parse_technique)]
     pub techniques: Option<Vec<TechniqueKind>>,
     /// Only the cases whose name contains this text.
     #[arg(long, value_name = "TEXT")]
@@ -451,16 +455,110 @@ pub struct BehavioursArgs {
     pub check: bool,
 }
 
-/// Parses the command line and runs it.
+/// Parses the command line and runs it, with the built-in techniques.
 pub fn main() -> ExitCode {
+    main_with(TechniqueRegistry::new())
+}
+
+/// Parses the command line and runs it with `registry`'s techniques added
+/// to the built-in ones: every subcommand (demo, run, study, screenshot,
+/// behaviours) takes them by name. This is the whole `main` of a
+/// researcher's own binary:
+///
+/// ```no_run
+/// use surfacelab::pipeline::technique::{TechniqueRegistry, TechniqueSpec, JointTechnique};
+///
+/// fn main() -> std::process::ExitCode {
+///     let mut registry = TechniqueRegistry::new();
+///     registry.with(TechniqueSpec::new("soft_joint", |mut config| {
+///         config.joint_stiffness *= 0.25;
+///         Box::new(JointTechnique::new(config))
+///     }).needs(surfacelab::scene::Effect::Joints));
+///     surfacelab::cli::main_with(registry)
+/// }
+/// ```
+pub fn main_with(registry: TechniqueRegistry) -> ExitCode {
+    ensure_runtime_dir();
     init_tracing();
-    let cli = Cli::parse();
+    if let Err(e) = registry.install() {
+        eprintln!("surfacelab: error: {e}");
+        return ExitCode::FAILURE;
+    }
+    let cli = match command().try_get_matches().and_then(|m| Cli::from_arg_matches(&m)) {
+        Ok(cli) => cli,
+        Err(e) => e.exit(),
+    };
     let command = cli.command.unwrap_or_else(|| Command::Demo(DemoArgs::default()));
     match run(command) {
         Ok(code) => code,
         Err(e) => {
             eprintln!("surfacelab: error: {e}");
             e.exit_code()
+        }
+    }
+}
+
+/// The command line's definition, with the techniques registered in this
+/// program named in the help of every flag that takes one and at the foot
+/// of `--help`.
+pub fn command() -> clap::Command {
+    let names: Vec<&str> = TechniqueKind::registered().iter().map(|k| k.name()).collect();
+    let names = names.join(", ");
+    let one = format!("Interaction technique: {names}");
+    let many = format!("Comma-separated interaction techniques, from: {names}");
+    let name_them = |cmd: clap::Command| -> clap::Command {
+        let has = |id: &str| cmd.get_arguments().any(|a| a.get_id() == id);
+        let (technique, techniques) = (has("technique"), has("techniques"));
+        let mut cmd = cmd;
+        if technique {
+            cmd = cmd.mut_arg("technique", |a| a.help(one.clone()));
+        }
+        if techniques {
+            let default = if cmd.get_name() == "study" {
+                "default joint,proxy,particle"
+            } else {
+                "default: every technique the suite covers"
+            };
+            cmd = cmd.mut_arg("techniques", |a| a.help(format!("{many} ({default})")));
+        }
+        cmd
+    };
+    Cli::command().after_help(format!("Techniques: {names}")).mut_subcommands(name_them)
+}
+
+/// Gives the process a private `XDG_RUNTIME_DIR` when it has none (a
+/// server, a container, CI), by running itself again with one set.
+///
+/// Mesa's Vulkan device-select layer connects to Wayland whenever the
+/// instance has the Wayland surface extension, which wgpu always enables,
+/// and libwayland prints `error: XDG_RUNTIME_DIR is invalid or not set` for
+/// each instance: twice in a successful headless `screenshot`. The variable
+/// has to be set before the first GPU call and the crate forbids `unsafe`,
+/// which setting it in-process now needs, so the process replaces itself
+/// (`exec`: same pid, same arguments, same standard streams). Nothing
+/// happens where the variable names a folder, or when the folder cannot be
+/// made (the message then shows, harmlessly).
+fn ensure_runtime_dir() {
+    const GUARD: &str = "SURFACELAB_RUNTIME_DIR_SET";
+    let usable = std::env::var_os("XDG_RUNTIME_DIR").is_some_and(|d| std::path::Path::new(&d).is_dir());
+    if usable || std::env::var_os(GUARD).is_some() {
+        return;
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::{DirBuilderExt, MetadataExt};
+        use std::os::unix::process::CommandExt;
+        let uid = std::fs::metadata("/proc/self").map_or(0, |m| m.uid());
+        let dir = std::env::temp_dir().join(format!("surfacelab-xdg-{uid}"));
+        let made = std::fs::DirBuilder::new().recursive(true).mode(0o700).create(&dir).is_ok();
+        let Ok(exe) = std::env::current_exe() else { return };
+        if made {
+            // Returns only if the exec failed; then carry on as we are.
+            let _ = std::process::Command::new(exe)
+                .args(std::env::args_os().skip(1))
+                .env("XDG_RUNTIME_DIR", &dir)
+                .env(GUARD, "1")
+                .exec();
         }
     }
 }
@@ -487,7 +585,7 @@ fn run(command: Command) -> CommandResult {
 }
 
 /// What `surfacelab` does with no display: the headless job, so the
-/// README's main command is useful on a server or in CI — a one-participant
+/// README's first command is useful on a server or in CI — a one-participant
 /// scripted study (18 measured trials) with its CSVs and figure.
 pub(crate) fn headless_main() -> CommandResult {
     eprintln!("surfacelab: no display, so no demo window; running a small scripted study headless instead");

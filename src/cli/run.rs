@@ -14,13 +14,22 @@ use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 pub fn run(args: &RunArgs) -> super::CommandResult {
+    if args.list {
+        print!("{}", listing());
+        return Ok(std::process::ExitCode::SUCCESS);
+    }
+    // clap requires both unless --list is given.
+    let (Some(task), Some(technique)) = (args.task.as_deref(), args.technique) else {
+        eprintln!("surfacelab run: --task and --technique are required");
+        return Ok(std::process::ExitCode::from(super::EXIT_USAGE));
+    };
     if let (Some(dir), Some(calibration)) = (&args.images, &args.calibration) {
-        let report = super::run_images::play(args, dir, calibration)?;
+        let report = super::run_images::play(args, task, technique, dir, calibration)?;
         return write_report(&report, args.report.as_deref());
     }
-    let scene = scene::load(&args.task)?;
+    let scene = scene::load(task)?;
     let options = SessionOptions { measure_penetration: true, ..SessionOptions::default() };
-    let mut session = Session::new(&scene, args.technique, options)?;
+    let mut session = Session::new(&scene, technique, options)?;
     let t0 = Instant::now();
     let source = match (&args.gesture, args.tuio) {
         (Some(path), _) => {
@@ -52,8 +61,9 @@ fn write_report(report: &RunReport, path: Option<&std::path::Path>) -> super::Co
             // Atomic: a full disk leaves the earlier report whole, not truncated.
             crate::files::write_atomic(path, (json + "\n").as_bytes())
                 .with_context(|| format!("writing report {}", path.display()))?;
+            let why = report.completion.incomplete.as_deref().map_or_else(String::new, |w| format!(" ({w})"));
             eprintln!(
-                "surfacelab run: {} steps, complete: {}, max speed {:.2} m/s, NaN {}; report in {}",
+                "surfacelab run: {} steps, complete: {}{why}, max speed {:.2} m/s, NaN {}; report in {}",
                 report.steps,
                 report.completion.complete,
                 report.max_speed,
@@ -113,4 +123,28 @@ fn live(session: &mut Session, addr: SocketAddr, args: &RunArgs) -> anyhow::Resu
         eprintln!("surfacelab run: recorded {} hand entries in {}", gesture.tracks().len(), path.display());
     }
     Ok(listened)
+}
+
+/// What `run --list` prints: every name `--task`, `--gesture` and
+/// `--technique` take without a path.
+fn listing() -> String {
+    use crate::pipeline::technique::TechniqueKind;
+    use crate::scene::builtin;
+    let scenes: Vec<&str> = builtin::scene_names().collect();
+    let cases: Vec<&str> = builtin::FILES
+        .iter()
+        .filter_map(|(rel, _)| rel.strip_prefix("tasks/")?.strip_suffix(".toml"))
+        .filter(|n| n.contains('/'))
+        .collect();
+    let gestures: Vec<&str> = builtin::gesture_names().filter(|n| !n.contains('/')).collect();
+    let techniques: Vec<&str> = TechniqueKind::registered().iter().map(|k| k.name()).collect();
+    format!(
+        "scenes (--task): {}\nscenes for tests and behaviours (--task): {}\ngestures (--gesture): {}\n\
+         behaviour gestures (--gesture): behaviours/NAME, {} of them\ntechniques (--technique): {}\n",
+        scenes.join(", "),
+        cases.join(", "),
+        gestures.join(", "),
+        builtin::gesture_names().filter(|n| n.contains('/')).count(),
+        techniques.join(", "),
+    )
 }

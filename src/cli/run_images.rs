@@ -4,18 +4,25 @@
 
 use super::RunArgs;
 use crate::input::images::ImageSequence;
+use crate::pipeline::technique::TechniqueKind;
 use crate::scene;
 use crate::session::{RunReport, Session, SessionOptions};
 use std::path::Path;
 use std::time::Instant;
 
 /// Plays the frames in `dir` through the `--task` scene and reports.
-pub fn play(args: &RunArgs, dir: &Path, calibration: &Path) -> Result<RunReport, super::Failure> {
-    let scene = scene::load(&args.task)?;
+pub fn play(
+    args: &RunArgs,
+    task: &str,
+    technique: TechniqueKind,
+    dir: &Path,
+    calibration: &Path,
+) -> Result<RunReport, super::Failure> {
+    let scene = scene::load(task)?;
     // Every frame's header is checked here, before the first step.
     let mut frames = ImageSequence::open(dir, calibration)?;
     let options = SessionOptions { measure_penetration: true, ..SessionOptions::default() };
-    let mut session = Session::new(&scene, args.technique, options)?;
+    let mut session = Session::new(&scene, technique, options)?;
     let dt = f64::from(session.world().dt());
     let sensor = *session.sensor();
     let t0 = Instant::now();

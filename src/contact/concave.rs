@@ -47,10 +47,9 @@ use super::vec2::Vec2;
 
 /// The most vertices (after cleaning) a non-convex ring may have. The
 /// simplicity check and the ear clipping grow at least quadratically:
-/// measured through `surfacelab contact --concave` on an alternating-radius
-/// star against a small square, 1,000 vertices took 0.09 s, 2,000 took
-/// 0.37 s, 4,000 took 1.5 s and 8,000 take 4–12 s (issue #20). 2,000 keeps
-/// one query well under half a second on the shared build machine.
+/// through `surfacelab contact --concave`, an alternating-radius star of
+/// 2,000 vertices against a small square answers within a fraction of a
+/// second, and one four times as large takes seconds.
 pub const MAX_CONCAVE_VERTICES: usize = 2_000;
 
 /// A simple polygon (convex or not), cleaned, with its convex pieces.

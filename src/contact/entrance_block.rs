@@ -322,8 +322,8 @@ pub(crate) fn contact_edge(a: &ConvexPolygon, b: &ConvexPolygon, c: Cover) -> Co
 /// nearest cover facing A's position for the outside case: the paper's
 /// "only the part of the boundary near p". Written as its own plain loop
 /// rather than by sharing an iterator or callback with
-/// [`EntranceBlock::new`]: both were tried, and at 64 vertices their
-/// bookkeeping cost as much as the geometry.
+/// [`EntranceBlock::new`]: at 64 vertices that bookkeeping would cost as
+/// much as the geometry.
 pub(crate) fn walk_report(a: &ConvexPolygon, b: &ConvexPolygon, tolerance: f64) -> ContactReport {
     let (av, bv, na, nb) = (a.vertices(), b.vertices(), a.normals(), b.normals());
     let (n, m) = (av.len(), bv.len());

@@ -5,7 +5,8 @@
 //!
 //! **Why.** On random overlapping pairs the full walk visits all `m + n`
 //! covers to find the one farthest out, and at n = 256…1024 parry2d's
-//! GJK/EPA was only 1.1–1.5 times slower than that (issue 20 asks 1.5×).
+//! GJK/EPA is barely slower than that, short of the 1.5× margin that
+//! `cargo bench --bench contact` targets on random pairs.
 //! The answer is the cover whose line passes nearest A's position (the
 //! origin of translation space), and for a point inside a convex set that
 //! is the face an EPA converges on.
@@ -35,6 +36,8 @@
 //! Every check that fails (a degenerate face, a support point that would
 //! dent the polygon, more faces or covers than valid input needs) hands the
 //! pair to the full walk, which is always right.
+//!
+//! Design: docs/design/contact-theory.md.
 
 use super::entrance_block::{Cover, Step, contact_edge, cover_report};
 use super::local_walk::{order_back, order_from, support, unsplit};
@@ -45,8 +48,8 @@ use super::vec2::Vec2;
 /// Below this many vertices in all, the full walk is faster than the
 /// search. Measured on the benchmark's random overlapping pairs
 /// (`cargo bench --bench contact -- contact/random_overlap`, the constant
-/// set to 0 and to `usize::MAX` in turn), walk against search: 0.72 against
-/// 0.86 µs at n = 32 a side, 1.23 against 0.98 µs at n = 64.
+/// set to 0 and to `usize::MAX` in turn): the walk is faster at n = 32 a
+/// side, the search at n = 64.
 pub(crate) const MIN_VERTICES: usize = 96;
 
 /// The most support points the inscribed polygon may gather. On the

@@ -4,8 +4,9 @@
 //! O(m + n) boundary.
 //!
 //! **Why.** On random separated pairs parry's GJK, which only ever visits
-//! a few support points, was 2 to 2.5 times faster than the full walk (issue
-//! 20: 0.50× at n = 64, 0.43× at 1024). The nearest point of the block
+//! a few support points, is faster than the full walk, short of the
+//! target (at least as fast as parry, 1×) that `cargo bench --bench
+//! contact` reports on random pairs. The nearest point of the block
 //! `B ⊕ (−A)` to A's position (the origin of translation space) lies on
 //! the chain of block edges facing the origin, and along that chain the
 //! distance falls then rises (a convex set seen from outside), so a walk
@@ -33,6 +34,8 @@
 //! The report is built from the nearest cover just as the full walk builds
 //! it, so the distance agrees with [`contact_report`]'s full walk to
 //! rounding (a proptest checks 1e-12 of the size, and the features).
+//!
+//! Design: docs/design/contact-theory.md.
 //!
 //! [`contact_report`]: super::query::contact_report
 
@@ -94,8 +97,9 @@ pub(crate) fn separated_report(a: &ConvexPolygon, b: &ConvexPolygon, tolerance: 
             separated = true;
         } else if encloses_origin(last, w, u) {
             // Three block points round the origin: the pair overlaps, and
-            // the refinements left would only fail to separate it (about
-            // 150 ns of an overlapping query at every n, measured).
+            // the refinements left would only fail to separate it (a large
+            // share of an overlapping query's time at every n; `cargo bench
+            // --bench contact`).
             return None;
         }
     }

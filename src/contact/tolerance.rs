@@ -22,6 +22,8 @@
 //!
 //! Rejected alternative: a fixed absolute slop as in `Box2D` (0.005 m). Our
 //! inputs range from 1e-6 to 1e6, so no single length can serve.
+//!
+//! Design: docs/design/contact-theory.md.
 
 /// Relative part of every tolerance.
 pub const RELATIVE: f64 = 1e-9;

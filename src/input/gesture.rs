@@ -105,6 +105,9 @@ pub enum GestureError {
         #[source]
         source: std::io::Error,
     },
+    /// Neither a file nor a built-in gesture by that path or name.
+    #[error("no gesture `{origin}`: looked for {tried}; give a gesture's name or the path to a gesture file")]
+    NotFound { origin: String, tried: String },
     /// Saving a recording failed: the program's fault or the disk's, not the user's.
     #[error("{origin}: cannot write the gesture file")]
     Write {
@@ -123,7 +126,7 @@ impl crate::error::Kind for GestureError {
         match self {
             GestureError::Io { source, .. } => crate::error::io_kind(source),
             GestureError::Write { .. } => crate::error::ErrorKind::Runtime,
-            GestureError::Field(_) => crate::error::ErrorKind::BadInput,
+            GestureError::Field(_) | GestureError::NotFound { .. } => crate::error::ErrorKind::BadInput,
         }
     }
 }
@@ -275,11 +278,11 @@ impl Key {
 /// A hand exactly as a recording of it replays: live input that goes
 /// through this steps the physics with the very numbers a gesture file
 /// holds, so a replay reproduces the live run bit for bit (rounding only
-/// the file, as before, let a 25 s sorting recording drift: one sphere
-/// ended 30 cm from where the live run left it). Idempotent for tables
+/// the file would let a 25 s sorting recording drift: objects end far
+/// from where the live run left them). Idempotent for tables
 /// smaller than a few metres (f32 keeps 1 µm there).
 /// A contour hand without a usable outline touches nothing and comes back
-/// as it was.
+/// unchanged.
 pub fn quantized(hand: &Hand) -> Hand {
     let kind = match hand.kind {
         HandKind::Fingertips(n) => HandKind::Fingertips(n.clamp(1, 5)),
@@ -328,20 +331,35 @@ impl Gesture {
         parse(text, origin)
     }
 
-    /// Reads and parses a gesture file; a repository path that is not on
-    /// disk (`assets/gestures/flick.toml` outside a checkout) falls back to
-    /// the built-in copy.
+    /// Reads and parses a gesture by path or by name, the way scenes are
+    /// found: the path on disk, else `assets/gestures/NAME.toml` on disk
+    /// (`flick`, `behaviours/flick_fast`), else the built-in copy of
+    /// either, so a repository path or name works outside a checkout too.
     pub fn load(path: impl AsRef<Path>) -> Result<Self, GestureError> {
         let path = path.as_ref();
         let origin = path.display().to_string();
-        match crate::files::read_capped(path) {
-            Ok(text) => parse(&text, &origin),
-            Err(source) if source.kind() == std::io::ErrorKind::NotFound => match crate::scene::builtin::file(path) {
-                Some(text) => parse(text, &format!("{origin} (built in)")),
-                None => Err(GestureError::Io { origin, source }),
-            },
-            Err(source) => Err(GestureError::Io { origin, source }),
+        let by_name = (!path.is_absolute() && path.extension().is_none())
+            .then(|| Path::new("assets/gestures").join(format!("{origin}.toml")));
+        for candidate in std::iter::once(path).chain(by_name.as_deref()) {
+            match crate::files::read_capped(candidate) {
+                Ok(text) => return parse(&text, &candidate.display().to_string()),
+                Err(source) if source.kind() == std::io::ErrorKind::NotFound => {}
+                Err(source) => return Err(GestureError::Io { origin: candidate.display().to_string(), source }),
+            }
         }
+        for candidate in std::iter::once(path).chain(by_name.as_deref()) {
+            if let Some(text) = crate::scene::builtin::file(candidate) {
+                return parse(text, &format!("{} (built in)", candidate.display()));
+            }
+        }
+        let tried = by_name.map_or_else(String::new, |p| format!(", {}", p.display()));
+        Err(GestureError::NotFound {
+            tried: format!(
+                "{origin}{tried}, the built-in gestures ({}, and behaviours/NAME: `surfacelab run --list`)",
+                crate::scene::builtin::gesture_names().filter(|n| !n.contains('/')).collect::<Vec<_>>().join(", ")
+            ),
+            origin,
+        })
     }
 
     /// Writes the gesture: version 1 without contours, 2 with (module doc).
@@ -982,7 +1000,7 @@ keys = [
         let back = Gesture::from_str(&text, "written").expect("reads back");
         assert_eq!(g, back);
         assert_eq!(text, back.to_string());
-        // Without a contour, version 1 as before, and a version-2 file of templates reads.
+        // Without a contour the file is written as version 1, and a version-2 file of templates reads.
         let plain = Gesture::from_str(TWO, "two.toml").expect("parses");
         assert!(plain.to_string().contains("version = 1"));
         let v2 = TWO.replace("version = 1", "version = 2");

@@ -43,10 +43,10 @@ pub enum SourceEvent {
 /// ([`Input::push`]) and applied when a physics step's own time reaches
 /// them ([`Input::hands_at`]). A frame that runs several catch-up steps
 /// therefore sees continuous motion, and a press or a release lands on its
-/// own step. Sampling once per frame instead moved the hand in 53 of 296
-/// steps at this machine's 7-18 fps, jumping up to 2.4 cm at once, and a
-/// Particle drag moved its box 0.2 cm where the same drag, smoothed, moved
-/// it 13.7 cm.
+/// own step. Sampling once per frame instead, at a slow frame rate, would
+/// move the hand in only some steps, jumping centimetres at once, and a
+/// Particle drag would barely move the box that the same drag, smoothed,
+/// carries (`app::lab::tests::a_drag_at_8_fps_moves_the_box_as_far_as_at_60`).
 #[derive(Debug, Default)]
 pub struct Input {
     pub mouse: Mouse,

@@ -22,8 +22,8 @@ pub fn padded_bytes_per_row(width: u32) -> u32 {
 }
 
 /// A renderer with its own off-screen target and readback buffer, reused
-/// from frame to frame (creating one costs pipeline compilation, ~0.1 s on
-/// lavapipe; a captured frame costs milliseconds).
+/// from frame to frame (creating one costs pipeline compilation, far more
+/// than a captured frame; `cargo bench --bench render`).
 #[derive(Debug)]
 pub struct Capture {
     renderer: Renderer,

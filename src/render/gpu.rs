@@ -79,7 +79,7 @@ pub struct GpuContext {
 
 impl GpuContext {
     /// A context without any window: for capture, tests and benchmarks.
-    /// Blocks until the device is ready (~0.3 s on lavapipe).
+    /// Blocks until the device is ready (a fraction of a second on lavapipe).
     pub fn new_headless() -> Result<Self, GpuError> {
         let instance = wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
         let adapter = pollster::block_on(request_adapter(&instance, None))?;

@@ -41,7 +41,7 @@ pub struct MeshData {
 
 /// Segments around the axis of round shapes: smooth silhouettes for objects
 /// up to ~150 px across. Small triangles are not free on lavapipe (it shades
-/// whole 4x4 blocks); 32 costs ~1 ms per frame more than 16 for 4 spheres.
+/// whole 4x4 blocks), so 32 costs a little more per frame than 16.
 const ROUND_SEGMENTS: u32 = 32;
 /// Latitude bands of a sphere (and of the two halves of a capsule together).
 const SPHERE_RINGS: u32 = 16;

@@ -38,13 +38,13 @@ const DECAL_VERTICES: u32 = 24;
 /// Choices fixed for a renderer's lifetime.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RendererOptions {
-    /// 1 (no MSAA) or 4. Measured on lavapipe at 1024x768, 4x MSAA almost
-    /// triples the frame time (~12 -> ~35 ms CPU), so [`Default`] is 1 and
+    /// 1 (no MSAA) or 4. On lavapipe at 1024x768, 4x MSAA almost triples
+    /// the frame time (`cargo bench --bench render`), so [`Default`] is 1 and
     /// [`RendererOptions::for_adapter`] enables it on real GPUs only.
     pub sample_count: u32,
     /// Side of the square shadow map in texels. 1024 over a 0.6 m table is
-    /// ~0.7 mm per texel; 2048 looks the same with PCF and costs ~4 ms more
-    /// per frame on lavapipe.
+    /// ~0.7 mm per texel; 2048 looks the same with PCF and costs noticeably
+    /// more per frame on lavapipe.
     pub shadow_map_size: u32,
     /// Width of feedback lines in pixels (scale with the window's DPI).
     pub feedback_line_px: f32,

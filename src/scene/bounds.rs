@@ -2,8 +2,8 @@
 //! with why. A value outside its bound is bad input (exit 2) and the error
 //! names the file, line and field (or the flag) and the bound; nothing
 //! outside these ranges reaches rapier or parry (a 1e30 cylinder panics
-//! inside parry's EPA) or a loop whose length a file decides. README's
-//! "Bounds" section lists the same values.
+//! inside parry's EPA) or a loop whose length a file decides. docs/scenes.md
+//! ("Bounds") lists the same values.
 //!
 //! The ranges are far wider than any task needs (the built-in scenes use
 //! tables of 1 m, objects of 1-30 cm and masses of 8 g-10 kg); they are
@@ -29,10 +29,9 @@ pub const MASS_KG: (f32, f32) = (0.001, 1000.0);
 pub const POSITION_M: f32 = 100.0;
 
 /// Objects in one scene, `count` repeats included. The gather scene has 40;
-/// 1000 boxes take about 1.3 ms a step, vision included
-/// (`tests/stability.rs`, `the_most_objects_a_scene_may_have_stay_finite`:
-/// 10,000 steps in 12.7 s on the 2-core build machine). 10,000 boxes at one
-/// spot took 4.4 GB and did not finish in 240 s.
+/// 1000 boxes stay within a real-time step, vision included
+/// (`tests/stability.rs`, `the_most_objects_a_scene_may_have_stay_finite`),
+/// while ten times as many at one spot take gigabytes and minutes.
 pub const MAX_OBJECTS: usize = 1000;
 
 /// Soft-body density (kg/m² for cloth, kg/m³ for volumes): paper is

@@ -29,6 +29,12 @@ pub fn scene_names() -> impl Iterator<Item = &'static str> {
     FILES.iter().filter_map(|(rel, _)| rel.strip_prefix("tasks/")?.strip_suffix(".toml")).filter(|n| !n.contains('/'))
 }
 
+/// Names of the built-in gestures under `assets/gestures/`, without the
+/// extension (`flick`, `behaviours/flick_fast`, ...).
+pub fn gesture_names() -> impl Iterator<Item = &'static str> {
+    FILES.iter().filter_map(|(rel, _)| rel.strip_prefix("assets/gestures/")?.strip_suffix(".toml"))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -42,6 +48,9 @@ mod tests {
         assert!(text.contains("name = \"one_box\""));
         assert!(file(Path::new("assets/gestures/flick.toml")).is_some_and(|t| t.contains("surfacelab-gesture")));
         assert!(file(Path::new("tasks/nothing.toml")).is_none());
+        assert!(
+            gesture_names().any(|n| n == "fingertip_drag") && gesture_names().any(|n| n == "behaviours/flick_fast")
+        );
         assert!(file(Path::new("/tasks/positioning.toml")).is_none(), "absolute paths are files only");
     }
 }

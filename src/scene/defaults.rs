@@ -1,6 +1,6 @@
 //! What a scene file's optional fields default to, each with why. The
-//! validator (`validate.rs`) is the only reader; README's scene format
-//! section lists the same values.
+//! validator (`validate.rs`) is the only reader; docs/scenes.md lists the
+//! same values.
 
 /// Table colour: a light grey display surface (sRGB 0.78, 0.80, 0.82).
 pub const TABLE_COLOR: [f32; 4] = [0.78, 0.80, 0.82, 1.0];

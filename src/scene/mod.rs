@@ -5,6 +5,7 @@
 //! benchmarks and the tests all share — one scene definition, many uses.
 
 pub mod bounds;
+mod builder;
 pub mod builtin;
 mod defaults;
 mod effects;
@@ -15,6 +16,7 @@ mod id;
 mod model;
 mod validate;
 
+pub use builder::{SceneBuilder, ShapeSpec};
 pub use effects::{Effect, EffectSet};
 pub use error::SceneError;
 pub use fields::{FieldError, FieldReader};

@@ -92,7 +92,8 @@ pub struct PhysicsSpec {
     pub max_speed: f32,
     /// Natural frequency of rapier's soft contacts (Hz). Contact stiffness
     /// is the pair's effective mass × (2π·hz)², so a heavy object on a
-    /// light one sinks unless this is raised (a 100:1 stack at 30 Hz: 2.5 cm).
+    /// light one sinks unless this is raised (at 30 Hz, into a block a
+    /// hundredth its mass, by centimetres).
     pub contact_hz: f32,
     /// Whether hands give way where they close on a pile of objects
     /// (`pipeline/world/give_way.rs`); off reproduces the paper's bodies
@@ -106,7 +107,8 @@ impl Default for PhysicsSpec {
             dt: 1.0 / 60.0,
             solver_iterations: 4,
             pgs_iterations: 1,
-            // Centimetre objects on a metre table (PLATFORM.md: 0.1 cut particle cost 1.5-3x).
+            // Centimetre objects on a metre table: 0.1 scales rapier's tolerances to them, which
+            // also makes particles several times cheaper to simulate.
             length_unit: 0.1,
             ccd_substeps: 1,
             max_speed: 50.0,

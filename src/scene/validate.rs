@@ -261,7 +261,7 @@ impl Checker<'_> {
             self.objects(i, o, table, &mut objects)?;
             written.resize(objects.len(), (i, span));
         }
-        // O(n log n): 40,000 names took 4 s with the pairwise check.
+        // O(n log n): a pairwise check takes seconds for tens of thousands of names.
         let mut seen = std::collections::HashSet::with_capacity(objects.len());
         for (a, (i, span)) in objects.iter().zip(&written) {
             if !seen.insert(a.name.clone()) {
@@ -450,7 +450,7 @@ impl Checker<'_> {
         let row_step = vector("row_step", o.row_step)?;
         let per_row = o.per_row.unwrap_or(count).clamp(1, count);
         // Copies at one spot are one solid overlap the solver cannot
-        // separate (10,000 boxes at one spot: 4.4 GB, no end in sight).
+        // separate (thousands of boxes at one spot take gigabytes and never settle).
         if per_row > 1 && step == Vec2::ZERO {
             return Err(self.err(&span, f("step"), format!("{count} copies need a `step` that is not [0, 0]")));
         }

@@ -1,8 +1,7 @@
 //! The JSON report of one headless run (`surfacelab run --report`).
 
 use super::Session;
-use crate::scene::SoftKind;
-use crate::session::goal::Progress;
+use crate::scene::{Goal, SoftKind};
 use serde::Serialize;
 
 /// Mean time per stage, µs.
@@ -22,7 +21,7 @@ pub struct ObjectReport {
     /// Quaternion x, y, z, w.
     pub rotation: [f32; 4],
     pub linvel: [f32; 3],
-    /// Where it was when the run started (session 13): the displacement is
+    /// Where it was when the run started: the displacement is
     /// `position - start_position` without reading the scene file.
     pub start_position: [f32; 3],
     /// Quaternion x, y, z, w at the start.
@@ -72,10 +71,39 @@ pub struct Completion {
     pub total: usize,
     pub waypoints_passed: usize,
     pub restarts: u32,
+    /// Why the goal is not met when the run ends (absent when complete):
+    /// the scene has no goal, the time limit passed, objects were still
+    /// moving when the settle time ran out, or the goal is simply unmet.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub incomplete: Option<String>,
 }
 
-impl From<Progress> for Completion {
-    fn from(p: Progress) -> Self {
+/// Speed above which an object still counts as moving at the end of a run
+/// (m/s): above a resting body's jitter, below a slow deliberate push.
+const STILL_MOVING: f32 = 0.02;
+
+impl Completion {
+    fn of(session: &Session) -> Completion {
+        let p = session.progress();
+        let scene = session.scene();
+        let moving =
+            session.world().object_poses().iter().filter(|o| o.active && o.linvel.length() > STILL_MOVING).count();
+        let incomplete = (!p.complete).then(|| {
+            if matches!(scene.goal, Goal::None) {
+                "the scene has no goal (free play)".to_owned()
+            } else if session.time() >= f64::from(scene.time_limit_s) {
+                format!("time out: the scene's time limit of {} s passed", scene.time_limit_s)
+            } else if moving > 0 {
+                format!(
+                    "{moving} object(s) still moving when the settle time ran out; the goal counts objects at rest, \
+                     so a longer --settle may let it complete"
+                )
+            } else if p.total > 0 {
+                format!("goal not met: {} of {} placed", p.placed, p.total)
+            } else {
+                "goal not met".to_owned()
+            }
+        });
         Completion {
             complete: p.complete,
             completed_at_s: p.completed_at,
@@ -83,11 +111,12 @@ impl From<Progress> for Completion {
             total: p.total,
             waypoints_passed: p.waypoints_passed,
             restarts: p.restarts,
+            incomplete,
         }
     }
 }
 
-/// Everything `run` reports. Field names are a contract (README, "Report JSON").
+/// Everything `run` reports. Field names are a contract (docs/file-formats.md, "Run report").
 #[derive(Debug, Clone, Serialize, PartialEq)]
 pub struct RunReport {
     pub format: &'static str,
@@ -177,7 +206,7 @@ impl RunReport {
             max_penetration: stats.max_penetration_seen,
             nan_count: stats.nan_count,
             speed_caps: stats.speed_caps,
-            completion: session.progress().into(),
+            completion: Completion::of(session),
             stage_means_us: StageMeans {
                 rasterize_us: m.rasterize_us,
                 vision_us: m.vision_us,

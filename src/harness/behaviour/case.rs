@@ -154,9 +154,14 @@ pub struct Case {
 }
 
 impl Case {
-    /// The expectation for `kind`.
+    /// The expectation for `kind`: the case's own for the techniques it
+    /// names, else shown unasserted where the technique declares a limit
+    /// for this case, else the manipulation works.
     pub fn expectation(&self, kind: TechniqueKind) -> Expectation {
-        self.others.iter().find(|(n, _)| *n == kind.name()).map_or(Expectation::Works, |(_, e)| e.clone())
+        if let Some((_, e)) = self.others.iter().find(|(n, _)| *n == kind.name()) {
+            return e.clone();
+        }
+        kind.declared_limit(self.name).map_or(Expectation::Works, |why| Expectation::Shown { why })
     }
 
     /// The checks asserted for `kind` (none when only shown).

@@ -10,12 +10,12 @@ use crate::pipeline::technique::TechniqueKind;
 /// task's own goal circle (tasks/gather.toml, `goal.radius`).
 pub const GATHER_RADIUS: f32 = 0.13;
 
-/// The techniques the suite asserts: every one the technique module
-/// exposes but Direct Force, which the paper dropped after its pilot
-/// ("performance with this technique was so poor that we felt it needed no
-/// further evaluation"). A technique added to [`TechniqueKind::ALL`] joins.
+/// The techniques the suite asserts: every registered one but those that
+/// declare themselves outside it (Direct Force, which the paper dropped
+/// after its pilot). A registered technique joins, and is expected to work
+/// in every case but those it declares a limit for.
 pub fn suite_kinds() -> Vec<TechniqueKind> {
-    TechniqueKind::ALL.into_iter().filter(|k| *k != TechniqueKind::Direct).collect()
+    TechniqueKind::registered().into_iter().filter(|k| k.outside_suite().is_none()).collect()
 }
 
 const DIRECT: (&str, Expectation) =
@@ -88,7 +88,7 @@ const PLATFORM: [(&str, &str); 8] = [
 /// start − 2.5 cm radius − 0.75 cm fingertip). Half of that (5 cm) pushed, no
 /// tipping past 20° and no fall (1 cm) — the same for every technique.
 fn side_pushes(out: &mut Vec<Case>) {
-    let paper = "pushing a tall object from its side, from every direction (issue 14; the study's steering task)";
+    let paper = "pushing a tall object from its side, from every direction (the study's steering task)";
     for (pushes, scene) in
         [(FLOOR, "tasks/behaviours/cylinder_floor.toml"), (PLATFORM, "tasks/behaviours/cylinder_platform.toml")]
     {
@@ -260,14 +260,15 @@ pub fn cases() -> Vec<Case> {
                 "tasks/cases/ball.toml",
                 "assets/gestures/behaviours/ball_under_hand.toml",
                 "ball",
-                "the flat of the hand on a ball (issue 14): a real ball rolls forward about half the hand's travel",
+                "the flat of the hand on a ball: a real ball rolls forward about half the hand's travel",
                 vec![Check::between(Metric::Carry, 0.3, 0.75)],
                 vec![limit("joint", JOINT_MAGNET, vec![Check::at_least(Metric::Carry, 0.75)])],
             )
         },
         // The same slide with the palm landed 2 cm off the ball's centre: the
-        // hand still rests on the ball (session 15: Hybrid's grips decided
-        // this by the centroid's ray, which misses the ball here).
+        // hand still rests on the ball (Hybrid's grips are decided by what
+        // the hand landed on, not by the centroid's ray, which misses the
+        // ball here).
         Case {
             settle_s: 0.0,
             ..case(
@@ -392,7 +393,7 @@ pub fn cases() -> Vec<Case> {
                 ("joint", Expectation::Shown { why: GRASP_HARD }),
             ],
         ),
-        // Item 4: nothing lifts a resting ball (Joint's prism once did, 3 cm).
+        // Nothing lifts a resting ball (a prism reaching under it would).
         case(
             "flat_hand_beside_ball",
             "tasks/cases/ball.toml",

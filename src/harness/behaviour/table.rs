@@ -17,7 +17,7 @@ pub enum CellVerdict {
     LimitHolds,
     /// Misses the check of the paper's stated limit.
     LimitBroken,
-    /// Misses it, as listed in [`super::GAPS`] (issue 14's open work).
+    /// Misses it, as listed in [`super::GAPS`].
     KnownGap,
     /// Not asserted.
     Shown,
@@ -139,6 +139,14 @@ pub fn markdown(cases: &[Case], kinds: &[TechniqueKind], outcomes: &[Measurement
                     limits.push(format!("- {} / {technique}: not asserted: {why}", case.name));
                 }
                 Expectation::Works => {}
+            }
+        }
+        // Limits a registered technique declares for itself.
+        for k in kinds {
+            if let Some(why) = k.declared_limit(case.name)
+                && !case.others.iter().any(|(n, _)| *n == k.name())
+            {
+                limits.push(format!("- {} / {k}: not asserted: {why}", case.name));
             }
         }
     }

@@ -125,7 +125,7 @@ impl Default for StudyDesign {
         StudyDesign {
             participants: 6,
             tasks: DEFAULT_TASKS.iter().map(|t| (*t).to_owned()).collect(),
-            techniques: vec![TechniqueKind::Joint, TechniqueKind::Proxy, TechniqueKind::Particle],
+            techniques: vec![TechniqueKind::JOINT, TechniqueKind::PROXY, TechniqueKind::PARTICLE],
             feedback: vec![true, false],
             repetitions: 2,
             practice: true,

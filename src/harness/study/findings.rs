@@ -47,7 +47,9 @@ pub struct Finding {
     pub rule: Rule,
 }
 
-use TechniqueKind::{Joint, Particle, Proxy};
+const JOINT: TechniqueKind = TechniqueKind::JOINT;
+const PROXY: TechniqueKind = TechniqueKind::PROXY;
+const PARTICLE: TechniqueKind = TechniqueKind::PARTICLE;
 
 /// The paper's findings, in the paper's order.
 pub const FINDINGS: [Finding; 5] = [
@@ -55,31 +57,31 @@ pub const FINDINGS: [Finding; 5] = [
         id: "joint_fastest_positioning",
         claim: "Joint is fastest for positioning",
         task: "positioning",
-        rule: Rule::Faster { faster: &[Joint], than: &[Proxy, Particle] },
+        rule: Rule::Faster { faster: &[JOINT], than: &[PROXY, PARTICLE] },
     },
     Finding {
         id: "feedback_little_for_joint",
         claim: "feedback matters little for Joint (positioning)",
         task: "positioning",
-        rule: Rule::FeedbackSmall { technique: Joint },
+        rule: Rule::FeedbackSmall { technique: JOINT },
     },
     Finding {
         id: "feedback_more_for_particle",
         claim: "feedback matters more for Particle than for Joint in positioning",
         task: "positioning",
-        rule: Rule::FeedbackLarger { more: Particle, less: Joint },
+        rule: Rule::FeedbackLarger { more: PARTICLE, less: JOINT },
     },
     Finding {
         id: "proxy_particle_faster_sorting",
         claim: "Proxy and Particle are faster than Joint for sorting",
         task: "sorting",
-        rule: Rule::Faster { faster: &[Proxy, Particle], than: &[Joint] },
+        rule: Rule::Faster { faster: &[PROXY, PARTICLE], than: &[JOINT] },
     },
     Finding {
         id: "particle_faster_steering",
         claim: "Particle is faster than Proxy for steering",
         task: "steering",
-        rule: Rule::Faster { faster: &[Particle], than: &[Proxy] },
+        rule: Rule::Faster { faster: &[PARTICLE], than: &[PROXY] },
     },
 ];
 
@@ -130,7 +132,17 @@ impl Finding {
                 for &a in faster {
                     for &b in than {
                         let Some((diff, row)) = analysis.pair(self.task, a, b) else {
-                            return not_tested(self.test(), format!("the design lacks {a} or {b}"));
+                            let missing: Vec<&str> = [a, b]
+                                .into_iter()
+                                .filter(|&t| cells.technique_index(t).is_none())
+                                .map(TechniqueKind::name)
+                                .collect();
+                            let why = if missing.is_empty() {
+                                format!("no paired test of {a} and {b}")
+                            } else {
+                                format!("the design lacks {}", missing.join(" and "))
+                            };
+                            return not_tested(self.test(), why);
                         };
                         let (Some(diff), Some(p)) = (diff, row.p_holm) else {
                             return not_tested(self.test(), format!("{a} vs {b}: too few complete participants"));

@@ -1,5 +1,5 @@
 //! The names of the files in a study run folder (`study --out DIR`), which
-//! the README's "Study run folder" documents: the writers, the readers and
+//! docs/file-formats.md ("Study run folder") documents: the writers, the readers and
 //! the error messages that name them all take them from here.
 
 pub const RUN_TOML: &str = "run.toml";

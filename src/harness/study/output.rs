@@ -32,7 +32,7 @@ pub use super::folder::{ERRORS_LOG, FIGURE_PNG, FIGURE_SVG, RUN_TOML, STRATEGIES
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 
 /// `format` of `run.toml`; bump when the file or the trial order changes meaning.
-/// 2: technique orders crossed with feedback-order groups (issue 15), and
+/// 2: technique orders crossed with feedback-order groups, and
 /// the design table (`[[plan]]`).
 pub const RUN_FORMAT: &str = "surfacelab-study/2";
 

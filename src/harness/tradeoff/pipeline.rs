@@ -3,12 +3,12 @@
 //! the paper's most resolution-hungry condition) and compared against a
 //! high-accuracy reference run of the same input.
 //!
-//! The input has one object on purpose. Two hands gathering the eleven
-//! sorting objects were used first, but objects colliding with each other
-//! make the outcome chaotic: moving the particle radius by 0.1 µm moved an
-//! object by 4 cm, so errors were not monotone in any knob and six
-//! defaults fell off their fronts by noise. A hand dragging and pushing one
-//! box diverges smoothly (`tests/techniques.rs`).
+//! The input has one object on purpose. With two hands gathering the
+//! eleven sorting objects, objects colliding with each other make the
+//! outcome chaotic: moving the particle radius by 0.1 µm moves an object by
+//! centimetres, so errors are not monotone in any knob and defaults fall
+//! off their fronts by noise. A hand dragging and pushing one box diverges
+//! smoothly (`tests/techniques.rs`).
 
 use super::row::Row;
 use crate::harness::participant::{Skill, run_scripted};
@@ -96,7 +96,7 @@ pub struct Knob {
 }
 
 fn base() -> anyhow::Result<Setup> {
-    Ok(Setup { scene: scene::load(FIXTURE_SCENE)?, options: SessionOptions::default(), kind: TechniqueKind::Particle })
+    Ok(Setup { scene: scene::load(FIXTURE_SCENE)?, options: SessionOptions::default(), kind: TechniqueKind::PARTICLE })
 }
 
 fn with_config(mut s: Setup, f: impl FnOnce(&mut TechniqueConfig)) -> Setup {
@@ -241,7 +241,7 @@ pub fn knobs(quick: bool) -> anyhow::Result<Vec<Knob>> {
 pub fn scripted_trial_s(setup: &Setup) -> anyhow::Result<f64> {
     let mut scene = scene::load("positioning")?;
     scene.physics = setup.scene.physics;
-    let o = run_scripted(&scene, TechniqueKind::Joint, true, Skill::draw(1), 1, 120.0)?;
+    let o = run_scripted(&scene, TechniqueKind::JOINT, true, Skill::draw(1), 1, 120.0)?;
     Ok(o.completion_time_s)
 }
 

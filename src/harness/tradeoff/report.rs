@@ -106,7 +106,7 @@ fn write_csv(path: &Path, rows: &[Row]) -> anyhow::Result<()> {
     crate::files::write_atomic(path, &bytes).with_context(|| format!("writing {}", path.display()))
 }
 
-/// The README-ready table: what each knob costs and buys.
+/// The Markdown table of docs/performance.md: what each knob costs and buys.
 pub fn summary(rows: &[Row]) -> String {
     let mut s = String::from("| knob | value | time | error | on front |\n|---|---|---|---|---|\n");
     for r in rows {

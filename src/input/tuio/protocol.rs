@@ -17,8 +17,8 @@ const LATE_WINDOW: i64 = 100;
 /// this long (seconds), is a restarted tracker counting from 1 again, not a
 /// late packet: UDP reordering happens within a steady stream (trackers
 /// send 30-60 frames a second), a restart takes a pause. Without this, a
-/// tracker that restarted within 100 frames had its new frames dropped as
-/// late while its old cursors stayed on the table as ghosts.
+/// tracker that restarted within 100 frames would have its new frames
+/// dropped as late while its old cursors stayed on the table as ghosts.
 const RESTART_GAP_S: f64 = 0.25;
 
 /// Normalized coordinates beyond this margin around 0..1 are rejected.

@@ -3,9 +3,9 @@
 //! time rather than whatever arrived last.
 //!
 //! The demo runs several catch-up steps per frame when frames are slow
-//! (7-18 fps on lavapipe under load). Sampling the tracker once per frame
-//! made all of a frame's steps see one pose and the next frame's jump:
-//! the mouse had the same problem, measured in `sources.rs`. Between two
+//! (on lavapipe under load). Sampling the tracker once per frame would
+//! make all of a frame's steps see one pose and the next frame's jump, as
+//! with the mouse (see `sources.rs`). Between two
 //! packets a hand moves on the straight line from one report to the next;
 //! a hand that appears or vanishes does so at the packet that says so, on
 //! its own step. Input is never extrapolated: past the last packet the

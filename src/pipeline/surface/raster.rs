@@ -64,8 +64,8 @@ pub fn rasterize_into(hands: &[Hand], sensor: &Sensor, params: &RasterParams, im
 ///
 /// Why: whole hands are drawn every frame of a study, and clearing,
 /// thresholding, labelling and copying the whole 640×480 image each frame
-/// took a fifth of the study's CPU (`perf record` on a 2-participant run:
-/// memset 4.7%, memmove 8.9%, `find_blobs` 11.5%, `process_with` 8.9%).
+/// would take a large share of a study's CPU (`perf record` on a
+/// 2-participant run: memset, memmove, `find_blobs`, `process_with`).
 pub fn rasterize_rows(
     hands: &[Hand],
     sensor: &Sensor,

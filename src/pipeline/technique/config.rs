@@ -84,13 +84,13 @@ pub struct TechniqueConfig {
     /// away during it, so whatever it drags settles below the hand's speed
     /// by the resisting force x dt / the contact's particle mass (0.68 N of
     /// table friction under a pressed 100 g box: 3.5 mm/s at 0.2 kg, 1.8 at
-    /// 0.4 for a 16-particle fingertip). Measured, a fingertip dragging that
-    /// box from its centre 10 cm at 5 cm/s carried it 5.9 cm at 0.05 kg,
-    /// 9.1 at 0.2, 9.5 at 0.4 and 9.8 at 1 kg. Heavier particles also push
-    /// harder than the behaviour suite lets a hand: from 0.8 kg two flat
-    /// hands carried the grasp block 0.92-0.95 of the way without gripping
-    /// it (their palms reach over its top and behind it; README, "Behaviour
-    /// suite", session 13).
+    /// 0.4 for a 16-particle fingertip), so a fingertip dragging that box
+    /// from its centre carries it nearer the hand's full travel the heavier
+    /// its particles (`fingertip_drag_moves_the_box_about_ten_cm`). Heavier
+    /// particles also push harder than the behaviour suite lets a hand: from
+    /// about 0.8 kg two flat hands carry the grasp block most of the way
+    /// without gripping it (their palms reach over its top and behind it;
+    /// `surfacelab behaviours`, `grasp_flat_hands`).
     pub particle_mass: f32,
     /// Particle weight (N): press per particle, as for proxies. Friction
     /// therefore grows with contact area (the paper's observation).
@@ -104,7 +104,7 @@ pub struct TechniqueConfig {
     /// stretches from the 3D camera near plane to the surface of the touched
     /// object"), so an outline sliding towards a tall object meets the rim
     /// the user sees instead of riding onto its top; `false` gives ball
-    /// particles. Measured in README, "Behaviour suite".
+    /// particles. Measured by `surfacelab behaviours` (the `side_push_*` cases).
     pub particle_capsules: bool,
     /// Simulate only particles that can touch something movable this step:
     /// one landing on bare table or a fixed object, out of reach of every

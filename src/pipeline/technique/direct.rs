@@ -5,7 +5,7 @@
 //! (overshoot). Kept as a baseline condition.
 
 use super::surface_point::{clamp_len, table_point, table_velocity};
-use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::Blob;
 use crate::pipeline::world::{TechniqueWorld, World, WorldError};
@@ -46,10 +46,6 @@ fn soft_particles_under(world: &World, sensor: &Sensor, blob: &Blob) -> Vec<(Sof
 }
 
 impl Technique for DirectForce {
-    fn kind(&self) -> TechniqueKind {
-        TechniqueKind::Direct
-    }
-
     fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {
         self.touched.clear();
         self.contacts = input.frame.contacts.len();

@@ -19,8 +19,8 @@
 //!   contact.
 //! - A gripping contact's particles are balls, not line-of-sight capsules:
 //!   its grips are its contact from the side, and capsules standing beside
-//!   a pinched ball pushed it out of the grip and threw it on release
-//!   (strayed 1.6 cm, 0.099 m/s after the fingers opened; `tests/hybrid.rs`).
+//!   a pinched ball push it out of the grip and throw it on release
+//!   (`tests/hybrid.rs`, `a_pinch_grasps_a_ball_with_hybrid_and_lets_it_go`).
 //! - Grips are made only where the touch landed on fixed ground. A grip
 //!   made on a movable object's top would hang in the air at that height as
 //!   soon as the object moved from under it; the per-frame particles already
@@ -34,11 +34,13 @@
 //! - A grip that falls more than [`GRIP_SLIP`] behind its target has been
 //!   stopped by something it cannot move (a wall, a platform's side): it
 //!   lets go, as a finger slides off.
+//!
+//! Design: docs/design/techniques.md.
 
 use super::particle::{ParticleTechnique, REFERENCE_SPACING};
 use super::proxy::{gravity_scale_for, pressure_weight};
 use super::surface_point::{at_height, clamp_len, table_point};
-use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{Contact, FlowInterest};
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError};
@@ -110,12 +112,13 @@ impl HybridTechnique {
         // pinning a box's corner, a flat hand on a ball): the part of its
         // outline beyond the object's silhouette is a finger hanging over the
         // edge, not flesh at table depth, so it makes no grips. Gripped
-        // there, a pinning fingertip caged the corner it overhung and the box
-        // slid along its grips instead of pivoting. Until session 15 only a
-        // contact whose centroid's ray met the object rested on it: a flat
-        // hand laid 2 cm off a ball's centre, its centroid up among the
-        // fingers, gripped with its outline on the table and pushed the ball
-        // 0.86 of its slide (Particle: 0.54).
+        // there, a pinning fingertip would cage the corner it overhung and
+        // the box would slide along its grips instead of pivoting. What it
+        // landed on decides, not its centroid's ray: a flat hand laid 2 cm
+        // off a ball's centre has its centroid up among the fingers, and
+        // gripping with its outline on the table it would push the ball
+        // nearly its whole slide, where a real ball rolls about half
+        // (`ball_under_hand_off_centre`).
         let rests_on_movable = super::rest::lands_on_movable(contact, input.sensor, world);
         if rests_on_movable {
             return Held::default();
@@ -161,10 +164,6 @@ impl HybridTechnique {
 }
 
 impl Technique for HybridTechnique {
-    fn kind(&self) -> TechniqueKind {
-        TechniqueKind::Hybrid
-    }
-
     fn flow_interest(&mut self, world: &World, sensor: &Sensor, dt: f32) -> FlowInterest {
         self.particles.flow_interest(world, sensor, dt)
     }

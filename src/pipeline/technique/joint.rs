@@ -18,10 +18,11 @@
 //! else; the 2D module remains the exact footprint test used elsewhere.
 //! A prism pushes only from the side: it is never created where it would
 //! overlap an object (rapier would push the object out, possibly upwards: a
-//! flat hand whose centroid missed a ball, its fingers over it, lifted the
-//! ball 3 cm), and it stands taller than any object, so it meets a resting
+//! flat hand whose centroid misses a ball, its fingers over it, would lift
+//! the ball), and it stands taller than any object, so it meets a resting
 //! object at its widest point, where the contact normal is horizontal (a
-//! 3 cm prism met a 6 cm ball below its equator and pushed it up and over).
+//! 3 cm prism would meet a 6 cm ball below its equator and push it up and
+//! over).
 //!
 //! On a soft body (cloth, a soft block, a torn piece) the contact grabs the
 //! particle nearest to where its ray lands: rapier attaches that particle to
@@ -29,10 +30,12 @@
 //! and the grab breaks like a joint when the attachment's force passes
 //! `joint_break_force`. Several contacts grab several particles, so two hands
 //! pulling apart stretch (and may tear) the sheet between them.
+//!
+//! Design: docs/design/techniques.md.
 
 use super::hit_test;
 use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
-use super::{Feedback, HitTest, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use super::{Feedback, HitTest, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
 use crate::pipeline::vision::Contact;
 use crate::pipeline::world::{Layer, ObjectId, TechniqueBody, TechniqueJoint, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
@@ -44,7 +47,7 @@ use std::collections::{BTreeMap, BTreeSet};
 /// platform reaches 11 cm), so its side meets convex objects at their widest.
 const PRISM_HEIGHT: f32 = 0.25;
 /// Height above the surface at which the contact's outline is placed (m):
-/// where a finger beside an object meets it, about the old 3 cm prism's middle.
+/// where a finger beside an object meets it, about a fingertip's height.
 const PRISM_TOUCH_HEIGHT: f32 = 0.015;
 
 #[derive(Debug, Clone, Copy)]
@@ -329,10 +332,6 @@ fn prism(hull: &[Vec2], pixel: f32) -> SharedShape {
 }
 
 impl Technique for JointTechnique {
-    fn kind(&self) -> TechniqueKind {
-        TechniqueKind::Joint
-    }
-
     fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {
         world.require_joints("the Joint technique")?;
         self.contacts = input.frame.contacts.len();

@@ -1,7 +1,9 @@
 //! Interaction techniques: how this frame's vision output acts on the world.
 //!
-//! The paper's four conditions, plus the grasping hybrid it suggests, (PAPERS.md, "The techniques compared") behind
-//! one trait. Every technique gets the same inputs — this frame's
+//! The paper's four conditions (Wilson et al. 2008, "The techniques
+//! compared"), plus the grasping hybrid it suggests, behind one trait, with
+//! a registry of techniques by name ([`register`]) that a program outside
+//! the crate adds its own to. Every technique gets the same inputs — this frame's
 //! [`VisionFrame`], the world and the timestep — applies its effect to the
 //! world before the step, tidies up after it, and returns feedback geometry.
 
@@ -15,6 +17,7 @@ mod kind;
 mod pad;
 mod particle;
 mod proxy;
+mod registry;
 mod rest;
 mod sight_reach;
 mod surface_point;
@@ -27,11 +30,11 @@ pub use joint::JointTechnique;
 pub use kind::{TechniqueKind, UnknownTechnique};
 pub use particle::ParticleTechnique;
 pub use proxy::ProxyTechnique;
+pub use registry::{RegistryError, TechniqueFactory, TechniqueRegistry, TechniqueSpec, register};
 
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{FlowInterest, VisionFrame};
 use crate::pipeline::world::{TechniqueWorld, World, WorldError};
-use crate::scene::{Effect, EffectSet};
 
 /// What every technique sees each frame.
 #[derive(Debug, Clone, Copy)]
@@ -52,10 +55,17 @@ pub struct TechniqueCounts {
     pub joints: usize,
 }
 
-/// The contract all four techniques honour.
+/// The contract every technique honours, built-in or registered.
+///
+/// A frame runs `flow_interest`, then the vision stage, then `apply`, the
+/// physics step, and `after_step`. A technique acts on the world only
+/// through the [`TechniqueWorld`] handle: it spawns, moves and removes its
+/// own bodies and joints and pushes scene objects, and it cannot remove,
+/// place or step them, so a new technique cannot break the session's
+/// bookkeeping. Register an implementation with [`register`] (see
+/// [`TechniqueSpec`]) to use it from the command line, the study, the
+/// behaviour suite and the demo.
 pub trait Technique: Send {
-    fn kind(&self) -> TechniqueKind;
-
     /// Where this technique will read outline flow this frame (asked once
     /// per frame, before the vision stage runs, so it measures nothing
     /// else). Only Particle reads flow.
@@ -79,27 +89,4 @@ pub trait Technique: Send {
 
     /// Live parameter changes (the demo's sliders).
     fn config_mut(&mut self) -> &mut TechniqueConfig;
-}
-
-impl TechniqueKind {
-    /// Effects this technique needs on top of the scene's declaration.
-    pub fn required_effects(self) -> EffectSet {
-        match self {
-            TechniqueKind::Joint => EffectSet::empty().with(Effect::Joints),
-            TechniqueKind::Direct | TechniqueKind::Proxy | TechniqueKind::Particle | TechniqueKind::Hybrid => {
-                EffectSet::empty()
-            }
-        }
-    }
-
-    /// Builds the technique with a configuration.
-    pub fn build(self, config: TechniqueConfig) -> Box<dyn Technique> {
-        match self {
-            TechniqueKind::Direct => Box::new(DirectForce::new(config)),
-            TechniqueKind::Joint => Box::new(JointTechnique::new(config)),
-            TechniqueKind::Proxy => Box::new(ProxyTechnique::new(config)),
-            TechniqueKind::Particle => Box::new(ParticleTechnique::new(config)),
-            TechniqueKind::Hybrid => Box::new(HybridTechnique::new(config)),
-        }
-    }
 }

@@ -11,16 +11,15 @@
 //! behind the axis, holds the cylinder upright while its base slides (the
 //! Proxy's cube does the same, its rotations locked). Independent particles
 //! each keep their own small press where they are, near the axis, and the
-//! cylinder tipped or the finger slid over its top (`surfacelab behaviours`,
-//! `cylinder_top_drag`: 6.0 cm tilting 15.0 degrees; an outside audit's nine
-//! top drags on the floor, the platform and the steering task, 1 and 2 s,
-//! moved it 0.6-7.4 cm, tipping it over in two).
+//! cylinder tips or the finger slides over its top (`surfacelab behaviours`,
+//! `cylinder_top_drag`; test
+//! `a_fingertip_pad_drags_the_steering_cylinder_upright_by_its_top`).
 //!
 //! **How.** Each frame, the particles of a contact that rests on an object
 //! (see `rest`) and land on that object become the colliders of one dynamic
 //! body. Each keeps its shape, mass and friction, so friction still acts at
 //! every particle; the body weighs what its particles weigh, so the hand
-//! presses as hard as before. The body moves by the rigid motion that fits
+//! presses as hard as its particles alone do. The body moves by the rigid motion that fits
 //! its particles' velocities (the hand's move over the object along its
 //! surface, its skin's slip included): a translation and a turn about the
 //! vertical through the particles' centroid. Vertically it follows the
@@ -32,15 +31,13 @@
 //! its far flank). Particles on anything else (the table, a second object,
 //! a soft body) are the paper's.
 //!
-//! Measured against the alternatives (`surfacelab behaviours`, an outside
-//! audit's 74 Particle runs, and the 24 light touches of
+//! The alternatives fail (`surfacelab behaviours` and the light touches of
 //! `a_light_touch_rolls_a_ball_forward_wherever_it_ends`): held level (no
-//! vertical speed), a light fingertip sliding fast past a ball's top left
-//! its surface within the step and rolled it 0.3 cm; following the surface
-//! up as well, 6-7 of the audit's 9 top drags passed instead of 9 (probed
-//! at 8 and 16 extra solver iterations); giving way in no direction, a
-//! fingertip on a ball's far flank stopped the ball rolling into it dead
-//! (0.7 cm of 4).
+//! vertical speed), a light fingertip sliding fast past a ball's top leaves
+//! its surface within the step and barely rolls it; following the surface
+//! up as well, some top drags of the steering cylinder tip it, even with
+//! more solver iterations; giving way in no direction, a fingertip on a
+//! ball's far flank stops the ball rolling into it dead.
 //!
 //! **Solver.** A pad touches its object through many contacts at once, all
 //! acting on the same two bodies, and rapier's 4 iterations do not
@@ -48,6 +45,8 @@
 //! particles do, `Pads::place`), so their contacts warm-start, and their
 //! islands get [`SOLVER_ITERATIONS`] more. Created afresh every step (the
 //! paper's create/destroy variant) they get [`FRESH_SOLVER_ITERATIONS`].
+//!
+//! Design: docs/design/resting-pad.md.
 
 use super::surface_point::least_squares_turn;
 use crate::pipeline::world::{TechniqueBody, TechniqueWorld};
@@ -55,35 +54,21 @@ use glam::Vec3;
 use rapier3d::prelude::*;
 use std::collections::BTreeMap;
 
-/// Extra solver iterations for the island of a persistent pad. Measured
-/// (Particle: `surfacelab behaviours`; an outside audit's 74 Particle runs
-/// through `surfacelab run`, 12 failures before pads, among them all nine
-/// of its top drags of the steering cylinder; `cargo bench --bench frame`,
-/// the default's frame against the paper's create/destroy, 12.7-13.0 ms):
-///
-/// | extra | suite failures | audit failures | audit top drags passed | frame |
-/// |---|---|---|---|---|
-/// | 0 | none | 7 (a pin and spin and a flat-hand turn that passed before: 24.4 and 23.6 degrees) | 7 of 9 | 2.40 ms (5.3x) |
-/// | 4 | none | 3 | 9 of 9 | 2.49 ms (5.2x) |
-/// | 8 | none | 3 | 9 of 9 | 2.68 ms (4.9x) |
-/// | 16 | none | 3 | 9 of 9 | |
-///
-/// From 4 on the audit's misses are the same three: two pin-and-spin
-/// circles that leave the box's top, and one expectation this project
-/// disputes (README, "Behaviour suite"). Its three 1 s top drags (a sudden
-/// start to 0.2 m/s, which tips the cylinder over with Joint, and which
-/// Proxy does not drag) sit at the edge: before the pad's centre of mass
-/// was weighted by its particles' (equal) masses, a change of rounding
-/// only, one of them tipped the cylinder at 4. More iterations buy nothing
-/// here and cost the frame budget (P1: at least 5x the paper's
-/// create/destroy).
+/// Extra solver iterations for the island of a persistent pad. With none,
+/// a pad's many contacts do not converge: pin-and-spin and flat-hand turns
+/// fall short and some top drags of the steering cylinder tip it. With 4,
+/// Particle passes `surfacelab behaviours` and holds the cylinder upright
+/// in top drags, though a sudden start to 0.2 m/s (which tips the cylinder
+/// over with Joint) sits at the edge. More iterations buy nothing here and
+/// cost frame time, which must stay well under the paper's create/destroy
+/// (`cargo bench --bench frame`).
 pub const SOLVER_ITERATIONS: usize = 4;
 
 /// Extra solver iterations for the island of a pad created afresh this
-/// step, with no warm start (the paper's create/destroy variant). The
-/// suite's pin and spin on the small box with fresh pads sinks the box
-/// into the table by 16.9 mm with none, 3.7 with 4, 1.6 with 8 and 0.8
-/// with 16, turning it 41.9, 54.7, 64.6 and 74.1 degrees of 90
+/// step, with no warm start (the paper's create/destroy variant). With
+/// fewer, the suite's pin and spin on the small box with fresh pads sinks
+/// the box into the table and turns it well short of 90 degrees; each
+/// doubling roughly halves the sink
 /// (`a_pad_does_not_press_what_it_rests_on_into_the_table`).
 pub const FRESH_SOLVER_ITERATIONS: usize = 16;
 

@@ -8,25 +8,24 @@
 //! which creates every particle before the step and destroys it after, and a
 //! pooled one that keeps bodies and re-places them. Pooling keeps each body on
 //! a stable point of the outline (matched by position through the flow), so
-//! rapier's broad phase keeps its pairs; PLATFORM.md measured that pooling
-//! without such coherence is *slower* than create/destroy.
+//! rapier's broad phase keeps its pairs: pooling without such coherence,
+//! bodies jumping between outline points, is *slower* than create/destroy.
 //!
 //! By default each particle is the paper's alternative proxy shape, a thin
 //! capsule along its camera ray from the touched point up towards the eye
 //! (`particle_capsules`). Seen in perspective, the top of a tall object off
 //! the table's centre hides the table beside its far wall, so a ball
-//! particle on the table there is 3 cm from the wall it appears to touch,
-//! and the outline sliding in lands on the top and needs friction there:
-//! pushes from the far side moved the steering cylinder 0.3-3.8 cm of
-//! 10.75. A line-of-sight capsule meets the rim the user sees and pushes
-//! it: 2.3-10.5 cm, 6 of those 8 pushes at least 5 cm (`surfacelab
-//! behaviours`), and 8.5-11.4 cm since particles predict their contacts
-//! and a point that climbed a step within the frame starts below it (see
-//! `placements`); its frame cost against ball particles is in README,
-//! "Measured figures" (`cargo bench --bench frame`).
+//! particle on the table there is centimetres from the wall it appears to
+//! touch, and the outline sliding in lands on the top and needs friction
+//! there: pushes from the far side barely move the steering cylinder. A
+//! line-of-sight capsule meets the rim the user sees and pushes it, all
+//! the way when particles also predict their contacts and a point that
+//! climbed a step within the frame starts below it (see `placements`;
+//! `surfacelab behaviours`, the `side_push_*` cases). Its frame cost
+//! against ball particles is the last line of `cargo bench --bench frame`.
 //!
-//! Six departures from the paper, all measured (README, "Particles: what
-//! they cost", "Behaviour suite" and the study notes): a particle that can
+//! Six departures from the paper, each measured by `surfacelab behaviours`
+//! and `cargo bench --bench frame`: a particle that can
 //! touch nothing movable during its step is drawn but not simulated
 //! (`particle_cull`), a particle never slides along a surface faster than
 //! [`MAX_SURFACE_SPEEDUP`] times the hand moves over the table, a particle
@@ -36,13 +35,15 @@
 //! its skin sticks to it (`particle_rest`, `particle_stick`, see `rest`),
 //! and the particles it lays on what it rests on move as one pad
 //! (`particle_pad`, see `pad`).
+//!
+//! Design: docs/design/particles.md.
 
 use super::pad::{PadParticle, Pads};
 use super::proxy::{gravity_scale_for, pressure_weight, soft_mass};
 use super::rest::{PAD, Resting};
 use super::sight_reach::SightReach;
 use super::surface_point::{clamp_len, project_flow, table_point};
-use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind};
+use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{EdgeSample, FlowInterest};
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError, highest_top};
@@ -59,14 +60,13 @@ use std::collections::{BTreeMap, HashMap};
 pub const REFERENCE_SPACING: f32 = 3.0 * 0.001_562_5;
 
 /// Extra distance (m) at which a particle is still simulated near a
-/// movable body, beyond what both can travel in the step. 1 cm until
-/// session 13. Since particles are created clear of movable objects, hands
-/// carry what they touch instead of shoving it out of their outline, so
-/// more bodies stay near them: the frame benchmark's default simulated 545
-/// of 1420 particles and ran 4.4x faster than the paper's create/destroy;
-/// with 5 mm, 419 and 5.3x (`cargo bench --bench frame`), while the culled
-/// and full paths of `culled_particles_change_nothing_the_objects_feel`
-/// agree within 1.4 mm of 37.4 cm.
+/// movable body, beyond what both can travel in the step. Particles are
+/// created clear of movable objects, so hands carry what they touch instead
+/// of shoving it out of their outline and many bodies stay near them; a
+/// small slack keeps the culled share, and so the frame's saving over the
+/// paper's create/destroy, large (`cargo bench --bench frame`, `simulated`
+/// against `sensed`), while the culled and full paths still agree to within
+/// the test's bound (`culled_particles_change_nothing_the_objects_feel`).
 const CULL_SLACK: f32 = 0.005;
 
 /// A particle's speed along the surface it touches, at most this many times
@@ -77,9 +77,9 @@ const MAX_SURFACE_SPEEDUP: f32 = 1.2;
 /// paper's reaches the camera's near plane; this one reaches a quarter
 /// metre up its ray, over twice the highest top a hand touches in the
 /// shipped tasks (the steering cylinder on its platform, 11 cm), because
-/// a longer one only adds broad-phase pairs: at 0.96 m (0.8 of the eye's
-/// height) 20,000 unculled capsules took minutes a step in
-/// `tests/stability.rs`. Something stacked higher is met from above only.
+/// a longer one only adds broad-phase pairs: reaching most of the way to
+/// the eye, the many unculled capsules of `tests/stability.rs` take minutes
+/// a step. Something stacked higher is met from above only.
 const SIGHT_LENGTH: f32 = 0.25;
 
 /// Flow (px) below which an outline point is not checked for a step it
@@ -261,10 +261,10 @@ impl ParticleTechnique {
             .collect();
         // A hand presses no harder for resting on something: a contact with
         // presses spreads the press its outline alone had over outline and
-        // flat alike. Added on top instead (16 more particles' weight), the
-        // extra friction tipped a 3 cm box dragged from 1 cm behind its
-        // leading edge (47 degrees; `a_fingertip_drags_a_box_from_anywhere_on_its_top`)
-        // and the steering cylinder dragged by its top (16.1 degrees).
+        // flat alike. Added on top instead, the extra friction tips a small
+        // box dragged from just behind its leading edge
+        // (`a_fingertip_drags_a_box_from_anywhere_on_its_top`) and the
+        // steering cylinder dragged by its top (`cylinder_top_drag`).
         let mut counts: HashMap<u32, (u32, u32)> = HashMap::new();
         for e in &samples {
             counts.entry(e.contact_id).or_default().0 += 1;
@@ -286,8 +286,9 @@ impl ParticleTechnique {
             // to where the point is now, so that it meets the wall in the
             // step as the hand did. Placed where the point is now, it would
             // sit on the top and only rub it: a fingertip going from rest
-            // to 1.6 m/s in one frame (2.7 cm, half a box) threw a 6 cm box
-            // 1.3 cm, and 46 cm so (`surfacelab behaviours`, flick_from_rest).
+            // to 1.6 m/s in one frame (half a box's width) would leave the
+            // box it flicks almost where it was (`surfacelab behaviours`,
+            // flick_from_rest).
             let mut start = here;
             if !interior && e.flow_px[0].hypot(e.flow_px[1]) > MIN_SWEEP_PX {
                 let before = table_point(input.sensor, [e.px[0] - e.flow_px[0], e.px[1] - e.flow_px[1]]);
@@ -321,7 +322,7 @@ impl ParticleTechnique {
             // scale-up): on a face the camera sees edge-on, like a ball's
             // far side, the projection turns a millimetre of flow into a
             // centimetre of slide down the face, and a particle driven down
-            // into the wedge under a ball shot it backwards at 1.2 m/s.
+            // into the wedge under a ball would shoot it backwards.
             v = v.clamp_length_max(hand_speed * MAX_SURFACE_SPEEDUP);
             let vt = clamp_len(Vec2::new(v.x, v.y), self.config.max_contact_speed);
             let vz = if v.z.abs() > self.config.max_contact_speed {
@@ -344,11 +345,10 @@ impl ParticleTechnique {
             // alone (one going away is not followed: gravity brings the
             // particle down after it). The tangent-plane velocity assumed a
             // still surface, so whatever moved into a particle was pressed
-            // with any impulse the solver needed: a ball rolling at 0.12 m/s
-            // into a light fingertip on its far flank was pressed by 14
-            // particles with 0.01-0.02 N s each a step, 10x their weight,
-            // and in one step went from rolling forward to rolling back
-            // (variants of `ball_light_touch` in `tests/techniques.rs`).
+            // with any impulse the solver needed: a ball rolling into a
+            // light fingertip on its far flank would be pressed by many times
+            // the particles' weight and roll back within a step (variants of
+            // `ball_light_touch` in `tests/techniques.rs`).
             let coming = if lifted {
                 0.0
             } else {
@@ -388,8 +388,9 @@ impl ParticleTechnique {
             // shove it out of, and the object with it: a fingertip's outline
             // crossing a box's edge lands on the table against the box's
             // side, so a fingertip dragging a 100 g box from 1 cm behind its
-            // leading edge braked it with the particles beside that edge and
-            // carried it 2.8 cm of 10 (9.0 cleared). What it is placed on it
+            // leading edge would brake it with the particles beside that edge
+            // and carry it a fraction of the way
+            // (`a_fingertip_drags_a_box_from_anywhere_on_its_top`). What it is placed on it
             // stays 0.1 mm into on purpose (see below), even on a slope; a
             // capsule is tested only up to the highest movable top.
             if hit.soft.is_none() {
@@ -414,13 +415,13 @@ impl ParticleTechnique {
                 px: e.px,
                 flow_px: e.flow_px,
                 // Just touching (0.1 mm in). rapier's soft contact (30 Hz) does
-                // not give a new contact its full press in one step: 16
-                // particles resting on a box get 29% of the normal impulse
+                // not give a new contact its full press in one step: particles
+                // resting on a box get well under half the normal impulse
                 // their weight calls for in their first step; pooled ones,
-                // re-placed like this, 75%, 91% and then 96-102% from the
-                // fifth step (warm-started). Created afresh every step (the
-                // paper's variant) they climb to 2-3x as the box under them
-                // sinks into its own soft contact (tests/particle_press.rs).
+                // re-placed like this, all of it within a few steps
+                // (warm-started). Created afresh every step (the paper's
+                // variant) they overshoot as the box under them sinks into
+                // its own soft contact (tests/particle_press.rs).
                 center,
                 up,
                 sight,
@@ -466,9 +467,8 @@ impl ParticleTechnique {
                 // placed beside a wall closer than it moves in the step
                 // meets it in this step rather than ending inside it. Pushes
                 // at the steering cylinder from the far side, which reach
-                // its rim only late, moved it 4.9 and 2.3 cm without, 8.1
-                // and 10.6 cm with (`surfacelab behaviours`, side_push_floor_000
-                // and _090).
+                // its rim only late, carry it most of their travel only with
+                // it (`surfacelab behaviours`, side_push_floor_000 and _090).
                 .soft_ccd_prediction(self.config.max_contact_speed * world.dt()),
         );
         let col = self.collider(world, p).build();
@@ -578,10 +578,6 @@ impl ParticleTechnique {
 }
 
 impl Technique for ParticleTechnique {
-    fn kind(&self) -> TechniqueKind {
-        TechniqueKind::Particle
-    }
-
     /// With culling, flow is needed only where a particle could reach
     /// something movable (see `SightReach::flow_interest`); the reach is
     /// kept for `apply` in the same frame (the world has not stepped since).

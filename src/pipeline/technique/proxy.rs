@@ -11,10 +11,7 @@
 
 use super::hit_test;
 use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
-use super::{
-    Feedback, HitTest, PressureMode, ProxyShape, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput,
-    TechniqueKind,
-};
+use super::{Feedback, HitTest, PressureMode, ProxyShape, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
 use crate::pipeline::vision::Contact;
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
@@ -97,10 +94,10 @@ impl ProxyTechnique {
     /// one; then over the object it overlaps most, at the overlap point
     /// nearest the centroid (`hit_test`) moved in towards the object's
     /// middle by the cube's half width, so that the cube's face still
-    /// covers that point. At the overlap point itself the cube stood on a
-    /// ball's steep flank and slid off it: a flat hand whose fingers lay
-    /// over a 6 cm ball moved it 0.8 cm sideways, 12.6 cm so
-    /// (`tests/techniques.rs`, `a_flat_hand_whose_centre_misses_a_ball`).
+    /// covers that point. At the overlap point itself the cube would stand
+    /// on a ball's steep flank and slide off it, and a flat hand whose
+    /// fingers lie over a 6 cm ball would barely move it sideways
+    /// (`tests/techniques.rs`, `a_flat_hand_whose_centre_misses_a_ball_still_moves_it`).
     fn landing(&self, world: &World, c: &Contact, input: &TechniqueInput<'_>, centroid: Vec2) -> Vec2 {
         if self.config.hit_test != HitTest::Outline
             || world
@@ -127,14 +124,15 @@ pub(super) fn pressure_weight(config: &TechniqueConfig, base: f32, grey: f32) ->
 
 /// The mass of a technique body standing on a soft body. Its weight (the
 /// press) is kept through the gravity scale; only its inertia changes.
-/// rapier's soft solver cannot hold a heavy body on light particles: in a
-/// probe, a 0.2 kg box pressing 2 N sank into a 30 g, 256-particle cloth
-/// (0.12 g particles) and a 1 kg one went through. Too light, and a
-/// per-frame particle carries too little momentum to drag the sheet under
-/// it. Four fingertips sliding 10 cm over the flat 50 g task cloth moved it
-/// 3.2 cm at 5 g a particle, 6.1 cm at 10 g, 7.3 cm at 20 g and 1.0 cm at
-/// 50 g (the particles pushed into the sheet); at 20 g two hands smoothing
-/// it outwards stretched it for good by 14% on average, at 10 g by 5%.
+/// rapier's soft solver cannot hold a heavy body on light particles: a
+/// 0.2 kg box pressing 2 N sinks into a 30 g, 256-particle cloth (0.12 g
+/// particles) and a 1 kg one goes through. Too light, and a per-frame
+/// particle carries too little momentum to drag the sheet under it. Four
+/// fingertips sliding over the flat 50 g task cloth drag it furthest at a
+/// few tens of grams a particle and hardly at all at 50 g (the particles
+/// push into the sheet); heavier particles also make two hands smoothing it
+/// outwards stretch it for good, so 10 g balances the two
+/// (`tests/soft_bodies.rs`).
 pub(super) fn soft_mass(weight: f32) -> f32 {
     SOFT_CONTACT_MASS.max(weight / (9.81 * SOFT_MAX_GRAVITY_SCALE))
 }
@@ -156,10 +154,6 @@ pub(super) fn gravity_scale_for(mass: f32, weight: f32) -> f32 {
 }
 
 impl Technique for ProxyTechnique {
-    fn kind(&self) -> TechniqueKind {
-        TechniqueKind::Proxy
-    }
-
     fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {
         self.contacts = input.frame.contacts.len();
         let dt = input.dt;

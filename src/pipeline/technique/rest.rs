@@ -8,12 +8,13 @@
 //! eye. A flat hand laid on a ball rests on the ball's top, 6 cm up: its
 //! outline beyond the ball's silhouette is that high too and cannot reach
 //! the ball's flank, and its palm presses the ball's top. Drawn from the
-//! table up, the trailing edge's capsules met the ball at its equator as
-//! soon as the hand moved and pushed it at the hand's speed (0.94 of the
-//! hand's travel), where a real ball under a sliding hand, driven at its
-//! top, rolls about half of it; and nothing touched a ball rolling on under
-//! a hand that had landed on it, so it drifted on until an edge met it
-//! (`surfacelab behaviours`: `ball_under_hand`, `ball_stop_flat_hand`).
+//! table up, the trailing edge's capsules would meet the ball at its
+//! equator as soon as the hand moved and push it at nearly the hand's
+//! speed, where a real ball under a sliding hand, driven at its top, rolls
+//! about half of the hand's travel; and nothing would touch a ball rolling
+//! on under a hand that had landed on it, so it would drift on until an
+//! edge met it (`surfacelab behaviours`: `ball_under_hand`,
+//! `ball_stop_flat_hand`).
 //!
 //! **How.** While a contact is new (its first [`LANDING_FRAMES`] frames),
 //! rays on a grid over its pixels find the movable objects it lands on.
@@ -37,21 +38,27 @@
 //! step (`particle_stick`, see the Particle technique). The solver still
 //! caps their friction at their press, so a pull the press cannot give
 //! lets the slip grow past [`STICK`], and the contact sticks anew where it
-//! is (it slipped). Measured (`surfacelab behaviours`, Particle, before →
-//! after): pin and spin 71.6° → 89.4° and 76.0° → 88.6° (Joint 86.8° and
-//! 84.9°), the pinned point moving 0.5 → 0.0 cm; two fingers twisting 90°
-//! turn the box 84.7° → 94.9°, over 3 s 74.9° → 94.8°. With 2 mm instead
-//! of [`STICK`] the steering cylinder dragged by its top tilts 17.3° (15
-//! allowed); with 4 or 5 mm that one drag passes, but none of an outside
-//! audit's nine others does, so the pad's shear decides, not that case.
+//! is (it slipped). Measured (`surfacelab behaviours`, Particle, with and
+//! without sticking): with it, pin and spin turns the box about the full
+//! 90°, as Joint does, and the pinned point stays put, where without it
+//! the turn falls short and the point drifts (test
+//! `a_sticking_fingertip_turns_the_box_with_it_in_pin_and_spin`); two
+//! fingers twisting 90°, quick or slow, turn the box the full way
+//! (`two_finger_twist`, `two_finger_twist_slow`). With a smaller [`STICK`]
+//! the steering cylinder dragged by its top tilts past the suite's 15°
+//! bound (`cylinder_top_drag`); a larger one passes that drag but not
+//! others like it, so the pad's shear decides, not that case.
 //!
 //! Landing decides, not covering: a fingertip that slid across the table up
 //! to a tall object, and that the eye sees over the object's top in
 //! perspective, still stands on the table and pushes the object's side
-//! (`tests/techniques.rs`, the steering task's cylinder pushed from behind);
-//! with "whatever the contact covers" instead, that push moved it 1.5 cm of
-//! 14 instead of 6.5. Fixed ground (the table, a platform) holds no hand
-//! up: there the paper's particles are unchanged.
+//! (`tests/techniques.rs`, the steering task's cylinder pushed from behind,
+//! `a_fingertip_slid_up_behind_a_tall_object_still_pushes_its_side`); with
+//! "whatever the contact covers" instead, that push barely moves it. Fixed
+//! ground (the table, a platform) holds no hand up: there the paper's
+//! particles are unchanged.
+//!
+//! Design: docs/design/resting-pad.md.
 
 use super::surface_point::least_squares_turn;
 use crate::pipeline::surface::Sensor;
@@ -69,19 +76,19 @@ pub const LANDING_FRAMES: u32 = 3;
 /// of what it rests on: a particle's side starts this far below the height
 /// the hand rests at. A fingertip landed on a box's top and straddling its
 /// back edge catches that edge within the pad: measured with `surfacelab
-/// behaviours` (Particle, `flick_from_rest`), the flick throws the box
-/// 45.7 cm at 5 mm (47.0 with sides from the table), 38.2 at 3 mm, 46.0 at
-/// 15 mm and 1.9 cm with no pad at all; the ball cases hardly depend on it
-/// (0.52-0.58 of the hand's travel, stopped to 0.00 m/s).
+/// behaviours` (Particle, `flick_from_rest`), the flick throws the box as
+/// far with a pad of a few millimetres as with sides from the table, less
+/// far with a thinner one, and hardly at all with none; the ball cases
+/// hardly depend on it.
 pub const PAD: f32 = 0.005;
 
 /// At most this many points of one hand press on what it rests on, taken
 /// evenly from the grid. Measured (`surfacelab behaviours`, Particle): a
-/// flat hand turning a 14 cm box in place turned it 77.5 degrees with no
-/// presses, 76.5 with 16 and 74.0 with all of them (about a hundred, each
-/// another contact for the solver to share the turn among); with none, a
-/// flat hand that landed on a rolling ball let it roll on at 0.05 m/s
-/// (0.00 with 16).
+/// flat hand turning a 14 cm box in place turns it a little less far with
+/// all of them (about a hundred, each another contact for the solver to
+/// share the turn among) than with 16 (`flat_hand_turn`); with none, a
+/// flat hand that landed on a rolling ball lets it roll on, where 16 stop
+/// it (`ball_stop_flat_hand`).
 const MAX_PRESSES: usize = 16;
 
 /// How far (m) a hand's skin stretches over what it sticks to before it

@@ -10,10 +10,10 @@
 //! start lies farther from every region than it can move (magnified by
 //! perspective) touches nothing movable this step.
 //!
-//! This replaced axis-aligned boxes around each body: a box turned 30°, a
-//! cylinder or a ball fills its footprint more tightly than its box does,
-//! and the projection is exact where the old pixel box of eight projected
-//! corners was a box around a box.
+//! Footprints rather than axis-aligned boxes around each body: a box
+//! turned 30°, a cylinder or a ball fills its footprint more tightly than
+//! its box does, and the projection is exact where a pixel box of eight
+//! projected corners would be a box around a box.
 
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{ConvexRegion, FlowInterest};

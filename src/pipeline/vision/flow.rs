@@ -160,10 +160,10 @@ impl BlockMatcher {
     /// turn). Where the outline bends within the block, the fit measures
     /// the motion along it but not that turn, so the turn is added along
     /// the outline. A fingertip patch (12 x 14 px) turning with two fingers
-    /// that twist a box a quarter turn in 1.5 s: the flow's mean turn about
-    /// each fingertip's centroid was 0.000 rad a frame against the true
-    /// 0.017, so its particles rubbed the turning box like a pad that does
-    /// not turn and braked it (`two_finger_twist`: 43.3 of 90 degrees).
+    /// that twist a box a quarter turn in 1.5 s: the flow alone sees no turn
+    /// about each fingertip's centroid against the true 0.017 rad a frame,
+    /// so its particles would rub the turning box like a pad that does not
+    /// turn and brake it (`two_finger_twist`).
     pub fn flow_at_turning(
         &self,
         prev: &ContactImage,

@@ -39,10 +39,11 @@ pub struct VisionParams {
     pub edge_threshold: f32,
     /// Report every `stride`-th column and row of the outline (a grid
     /// anchored at pixel 0, so still contacts keep their points). The soft
-    /// edge is a band about 4 px wide: at 3 a flat hand gives ~320 points,
-    /// one per ~2 mm of outline; 2 gives 2.2x as many and 1 about 9x, with
-    /// flow cost (~0.5 us per point) and particle count in proportion.
-    /// 3 is what keeps two flat hands within the 0.5 ms frame budget.
+    /// edge is a band about 4 px wide: at 3 a flat hand gives a few hundred
+    /// points, about one per 2 mm of outline; 2 gives about twice as many
+    /// and 1 about nine times, with flow cost and particle count in
+    /// proportion (`cargo bench --bench vision`). 3 is what keeps two flat
+    /// hands within the vision stage's 0.5 ms budget.
     pub stride: usize,
     /// Side of the block matched for flow, pixels (odd). 7 spans the
     /// 4 px soft edge with texture to spare on both sides.

@@ -69,32 +69,32 @@ pub struct BlobTrackerParams {
 
 impl Default for BlobTrackerParams {
     /// A fingertip's patch is 1.2 times as long as it is wide (`surface::hand`);
-    /// on the default sensor it measures 1.14-1.22 and its axis angle
-    /// jitters by 0.05-0.1 rad from frame to frame, against 0.017 rad a
-    /// frame for two fingers twisting a quarter turn in 1.5 s. Reported
-    /// only above 1.2, as it was, a twisting fingertip's turn was never
-    /// seen (`two_finger_twist`: 43.3 degrees of 90). From 1.08, smoothed
-    /// over 12 frames (0.2 s), fewer for longer blobs, the twist turns 52.0
-    /// (`surfacelab behaviours`; 49.7 over 8 frames and 54.2 over 20, which
-    /// lag more; frame by frame, the jitter took it to 29.9). A flat hand
-    /// (1.56), a forearm (3.67) or a hand's edge (6.29) is past 1.3, so its
-    /// turn is measured frame by frame as before.
+    /// on the default sensor it measures a little either side of that, and
+    /// its axis angle jitters from frame to frame by several times the
+    /// 0.017 rad a frame of two fingers twisting a quarter turn in 1.5 s.
+    /// Reported only above 1.2, a twisting fingertip's turn would never be
+    /// seen (`two_finger_twist`). From 1.08, smoothed over 12 frames
+    /// (0.2 s), fewer for longer blobs, the twist turns further: frame by
+    /// frame the jitter holds it back, and longer windows lag more
+    /// (`surfacelab behaviours`). A flat hand (1.56), a forearm (3.67) or a
+    /// hand's edge (6.29) is past 1.3, so its turn is measured frame by
+    /// frame.
     ///
     /// Block matching errs by about 0.1 px at each outline point whatever
-    /// the speed (0.104 px RMS at 0.05 and 0.1 px a frame, 0.139 at 1.6,
-    /// against the tracked centroid's 0.001), so a fingertip moving 0.1 px a
-    /// frame had particles jittering as fast as it moved. Over a baseline of
+    /// the speed, against a small fraction of that for the tracked
+    /// centroid, so a fingertip moving 0.1 px a frame would have particles
+    /// jittering as fast as it moves. Over a baseline of
     /// k frames the same error is spread over k frames of motion. Up to 16
     /// frames (0.27 s at 60 Hz) while no point of the contact moved more
     /// than 2 px: the error is then at most a twentieth of the motion
     /// measured, and a contact that stops carries at most 2 px of its last
-    /// motion into the flow. Measured with `surfacelab behaviours` (twist,
-    /// slow twist, pin and spin on the small box; default stride):
-    /// per frame 50.7, 32.4, 60.1 degrees; 8 frames and 1 px 63.1, 41.7,
-    /// 61.5, with the one box's pinned point sliding 2.1 cm (limit 2); 8
-    /// and 2 px 71.9, 44.8, 76.0; 16 and 2 px 73.3, 47.3, 71.0. Two-finger
-    /// twists of my own on the small box (fingers closer together, 0.8-3 s,
-    /// both ways) turned it 13-52 degrees per frame and 31-66 with this.
+    /// motion into the flow. With `surfacelab behaviours` (twist, slow
+    /// twist, pin and spin on the small box; default stride), baselines of
+    /// up to 16 frames and 2 px turn the box markedly further than frame by
+    /// frame; a 1 px threshold lets pin and spin on the one box slide its
+    /// pinned point past the 2 cm limit. Other two-finger twists on the
+    /// small box (fingers closer together, 0.8-3 s, both ways) turn it
+    /// further with it too.
     fn default() -> Self {
         Self {
             max_jump_px: 40.0,
@@ -123,8 +123,8 @@ impl BlobTrackerParams {
 /// turn between them). The turn reported is how far it moved, so the turns
 /// of a contact add up to how far its smoothed axis turned, whatever the
 /// share from frame to frame: they never drift from the axis itself (a
-/// pinch's fingertips, not turning, added up to 0.07 rad in 1.5 s when
-/// each frame's turn was a mean over a window whose length followed the
+/// pinch's fingertips, not turning, would add up a turn of their own if
+/// each frame's turn were a mean over a window whose length followed the
 /// blob's jittering elongation).
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 struct SmoothedAxis(Option<f32>);

@@ -5,9 +5,9 @@
 //! turning in place then meets friction at the corners' radius: for a
 //! square face `0.71 s` from its centre, where pressure spread over the face
 //! (the usual model of a flat rigid face on a flat table) rubs at a mean
-//! radius of `0.38 s`. The table resisted a box's turning 1.85 times too
-//! hard, and two fingertips twisting a 6 cm box (the paper's Figure 2,
-//! middle) turned it 21° of 90°.
+//! radius of `0.38 s`. The table then resists a box's turning 1.85 times
+//! too hard, and two fingertips twisting a 6 cm box (the paper's Figure 2,
+//! middle) turn it only a small part of their 90°.
 //!
 //! **How.** While the manifold's points lie within [`FLAT`] of one plane
 //! (a face at rest, not one that has started to tip), each point is moved
@@ -16,7 +16,7 @@
 //! grows towards [`FLAT`] they move back out to where rapier put them, with
 //! no jump from one step to the next. The normal and the friction
 //! coefficient are untouched, so sliding friction, the press and the weight
-//! are as before, and a face that has tipped by [`FLAT`] pivots about its
+//! are rapier's, and a face that has tipped by [`FLAT`] pivots about its
 //! real edge. rapier applies a point's normal and friction at the same
 //! place, so while the face lies flat the press acts at the mean radius
 //! too: a face starts to tip at about half the pull at its top that its
@@ -28,23 +28,25 @@
 //! between objects keep rapier's recycling (see the behaviour suite's
 //! `PILE_CONTACTS` gap for what recycling does there).
 //!
-//! **Measured** (`surfacelab behaviours`, before → after): two fingertips
-//! twisting a 6 cm box 90° turn it 44.1° → 57.2° with Proxy and 21.7° →
-//! 43.3° with Particle; pin and spin 72.8° → 71.2° and 73.9° → 74.1° with
-//! Proxy, 89.8° → 86.8° and 83.3° → 84.9° with Joint. The same hook
-//! changing nothing (so only recycling off on the table) moved the twist
-//! by 0.3° at most: the points' radius is the cause.
+//! **Measured** (`surfacelab behaviours`, `two_finger_twist` and the
+//! `pin_and_spin_*` cases, with the hook and without): two fingertips
+//! twisting a 6 cm box 90° turn it further with Proxy, and about twice as
+//! far with Particle; pin and spin turns it about as far either way with
+//! Proxy and Joint. The same hook changing nothing (so only recycling off
+//! on the table) barely moves the twist: the points' radius is the cause.
+//!
+//! Design: docs/design/world-and-effects.md.
 
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
 
 /// How far (m) a manifold's points may lie from one plane and still be
 /// (partly) a face at rest: half a millimetre is a 1° tilt across a 3 cm
-/// face. Measured: switching all the way at 0.2 mm without the blend,
-/// 16 particles landing on a box got 0.51 of their weight's impulse in
-/// their first step, against 0.29 without the hook (`tests/particle_press.rs`
-/// asks under half); blended over 0.2 mm, 0.51 again; over 0.5 mm, under
-/// half.
+/// face. Switching all the way at a smaller distance without the blend, or
+/// blending over a smaller one, gives particles landing on a box over half
+/// their weight's impulse in their first step, more than without the hook;
+/// blended over half a millimetre they get under half, as
+/// `tests/particle_press.rs` asks.
 const FLAT: f32 = 0.0005;
 
 /// The hook, passed to each physics step.
@@ -54,9 +56,9 @@ pub(super) struct FaceFriction;
 impl PhysicsHooks for FaceFriction {
     fn modify_solver_contacts(&self, context: &mut ContactModificationContext) {
         // A rigid object on the table. A cloth's contacts (no rigid body)
-        // are left unmodified, though, like every pair with the table, no
-        // longer recycled: the torn-paper snapshot moved by 0.5% of its
-        // pixels with that.
+        // are left unmodified, though, like every pair with the table, not
+        // recycled (the torn-paper snapshot, `tests/snapshots/soft_tear.png`,
+        // is rendered so).
         let bodies = context.bodies;
         let dynamic = |h: Option<RigidBodyHandle>| h.and_then(|h| bodies.get(h)).is_some_and(RigidBody::is_dynamic);
         if !(dynamic(context.rigid_body1) || dynamic(context.rigid_body2)) {

@@ -4,12 +4,13 @@
 //! simulation cannot change: to the solver they push with whatever impulse
 //! it takes (particles weigh 40 times a 10 g piece, Joint's prisms are
 //! kinematic). Pieces swept into a pile leave the solver no way out once
-//! two hands close on it: rigid pieces cannot shrink, so it pressed them
-//! 8-14 mm into each other (`gather_hand_edges`, `gather_forearms`), while
-//! 8 or 16 iterations, stiffer contacts or shorter steps left that at
-//! 5-24 mm (README, "Piles"). A real hand sweeping real chips feels the
-//! pile and its skin gives, or the chips ride up; either way what it
-//! presses them with is bounded by what the pile holds.
+//! two hands close on it: rigid pieces cannot shrink, so it presses them
+//! about a centimetre into each other (`surfacelab behaviours`,
+//! `gather_hand_edges`, `gather_forearms`), and more solver iterations,
+//! stiffer contacts or shorter steps do not prevent it. A real hand
+//! sweeping real chips feels the pile and its skin gives, or the chips
+//! ride up; either way what it presses them with is bounded by what the
+//! pile holds.
 //!
 //! **Model.** Before each step, movable objects that touch (or will within
 //! the step at their present speeds, see [`TOUCH`]) form piles. A pile is
@@ -21,22 +22,25 @@
 //! moves ([`PRESSING`]: a push the closing test saw a step late). A hand
 //! pushing a row of objects along moves them, and two hands holding two
 //! blocks between them do not close on them (their corners, pushing the
-//! blocks along, press on now and then: such a grasp carries 0.74 of the
-//! way, 1.01 without giving way). For that step the contacts between
-//! technique bodies and the jammed pile's objects are dropped: the hand
-//! passes into the pile instead of pressing it. A hand is not stopped (it
+//! blocks along, press on now and then, so such a grasp carries the blocks
+//! most but not all of the way it does without giving way). For that step
+//! the contacts between technique bodies and the jammed pile's objects are
+//! dropped: the hand passes into the pile instead of pressing it. A hand
+//! is not stopped (it
 //! never is on a real surface); particles, created clear of movable
 //! objects every frame, are re-placed beside the pile. One object pressed
 //! from both sides (a grasp) is no pile.
 //! What the step still leaves of pieces closing on each other faster than
 //! contacts are predicted, `pile_projection` moves apart after it.
 //!
-//! **How.** Depths are asked of the pair's shapes now (the magnified query,
+//! **How.** Depths are asked of the pair's shapes each step (the magnified query,
 //! as `max_object_overlap` does), not read from rapier's manifold, which
 //! keeps a recycled pair's separation frozen while it drifts. Only a jammed
 //! object's collider gets rapier's contact-modification flag, for the
 //! step, so everything else keeps rapier's contact recycling and every
-//! behaviour without a pile is bit for bit what it was.
+//! behaviour without a pile is bit for bit what it is without giving way.
+//!
+//! Design: docs/design/pile-projection.md.
 
 use super::face_friction::FaceFriction;
 use super::groups::{Layer, collider_layer};
@@ -49,16 +53,15 @@ use rapier3d::prelude::*;
 /// on into it give way: the net for what the closing test misses (a push
 /// seen a step late, a pile pressed against something fixed). A sixth of
 /// the behaviour suite's 3 mm limit for piles; ordinary pushes of one
-/// object into another hold them 0.5-1.5 mm into each other, but move
-/// them at the hand's speed (see [`PRESSING`]).
+/// object into another hold them a millimetre or so into each other, but
+/// move them at the hand's speed (see [`PRESSING`]).
 pub const GIVE: f32 = 0.0005;
 
 /// Speed (m/s) at which a hand moving into an object, relative to it,
 /// presses on into it rather than pushing it along: half a sweep's
-/// 0.2 m/s. Measured on a fingertip pushing a 50 g box into a 400 g one
-/// (Particle): with 0.03 the overlap net let the finger through the small
-/// box (it moved 10.4 cm of 20, 15.3 without the net); with 0.06 and
-/// 0.1, 15.3.
+/// 0.2 m/s. Much lower, and the overlap net lets a fingertip pushing a
+/// light box into a heavy one (Particle) pass through the small box
+/// instead of pushing it on (test `a_fingertip_pushes_one_box_with_another`).
 const PRESSING: f32 = 0.1;
 
 /// Gap (m) under which two objects touch, for grouping them into a pile,

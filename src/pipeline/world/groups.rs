@@ -17,9 +17,9 @@ pub enum Layer {
     Particle,
     /// Line-of-sight particles (thin capsules up a camera ray): they meet
     /// rigid scene bodies only. A soft body gives way round what presses
-    /// it, and a capsule standing beside it held its rim up by friction on
-    /// its side: a flat hand no longer pressed the jelly block down, and
-    /// flat hands no longer smoothed a crumpled cloth (`tests/soft_bodies.rs`).
+    /// it, and a capsule standing beside it would hold its rim up by
+    /// friction on its side: a flat hand could not press the jelly block
+    /// down, nor flat hands smooth a crumpled cloth (`tests/soft_bodies.rs`).
     /// Particles that land on a soft body are balls (`Particle`).
     Sight,
     /// Soft bodies' deformable surfaces (cloth, volumes, torn pieces): part

@@ -6,23 +6,26 @@
 //! its "polygonal feature map" path) with GJK and EPA, whose tolerances are
 //! absolute (`gjk::eps_tol`, EPA's `dist_tol = eps_tol * scale.max(1.0)`).
 //! At the size of the `gather` pieces (2.2 cm discs, 1 cm tall) they give
-//! up: measured with parry 0.31 on 400 overlapping disc pairs (centres 5-18
-//! mm apart, all yaws), 270 manifolds were wrong by more than 1 mm (most
-//! said "touching" or "7 mm apart" for discs 5-10 mm into each other), and
-//! the solver, never told, let swept pieces pass through each other (10-22
-//! mm deep). The same pairs magnified 10x: 0 of 400 wrong. Box–box pairs
+//! up: on overlapping disc pairs (centres 5-18 mm apart, all yaws) most
+//! manifolds are wrong by more than 1 mm (saying "touching" or "apart" for
+//! discs millimetres into each other), and the solver, never told, lets
+//! swept pieces pass through each other. The same pairs magnified are all
+//! right (test `overlapping_discs_get_their_true_depth`). Box–box pairs
 //! have their own routine, but it clips one face against the other and
 //! drops where their edges cross whenever a determinant in m^4 falls under
 //! `f32::EPSILON` (`closest_points_line2d`), which for 2 cm edges is at any
-//! angle: 288 of 1927 overlapping chip pairs came out more than 1 mm off,
-//! and a chip resting tilted on another sank 5.6 mm into it for good while
-//! its manifold said 0.2 mm; magnified, 4 of 1927. The shapes are value
+//! angle: many overlapping chip pairs come out more than 1 mm off, and a
+//! chip resting tilted on another sinks into it for good while its manifold
+//! says they barely touch; magnified, only a few steeply tilted pairs do
+//! (test `overlapping_chips_get_their_true_depth`). The shapes are value
 //! types, so the pair is rebuilt 10x larger, its contacts computed there,
 //! and the manifold scaled back: the geometry is exactly the same, only
 //! the tolerances shrink relative to it. Pairs with exact routines (balls,
 //! capsule–capsule) are left as they are, and so are the parts of
 //! composite shapes (parry's own dispatcher recurses into them; no scene
 //! or technique here builds one). Shape casts (CCD) are parry's.
+//!
+//! Design: docs/design/magnified-contacts.md.
 
 use glam::Vec3;
 use rapier3d::parry::query::details::NormalConstraints;
@@ -36,8 +39,9 @@ use rapier3d::prelude::Pose;
 
 /// How much larger the frame is in which GJK/EPA pairs are decided: 10x
 /// brings a centimetre piece to the decimetre scale at which parry's
-/// absolute tolerances are negligible (0 of 400 disc pairs wrong; see the
-/// module doc and `tests/world.rs`).
+/// absolute tolerances are negligible (no disc pair wrong in
+/// `overlapping_discs_get_their_true_depth`; see the module doc and
+/// `tests/world.rs`).
 pub const MAGNIFICATION: f32 = 10.0;
 
 /// A convex shape rebuilt `MAGNIFICATION` times larger.
@@ -355,11 +359,11 @@ mod tests {
     fn overlapping_chips_get_their_true_depth() {
         // parry's box-box manifold drops the crossings of the two faces'
         // edges wherever `closest_points_line2d`'s determinant, in m^4,
-        // falls under f32::EPSILON: for 2 cm edges at any angle. Measured:
-        // 288 of these 1927 pairs more than 1 mm off; a chip resting tilted
-        // on another sank 5.6 mm into it for good while its manifold said
-        // 0.2 mm (a probe of the gather_hand_edges case). Magnified,
-        // 4 of these 1927 pairs are still off: steeply tilted pairs whose
+        // falls under f32::EPSILON: for 2 cm edges at any angle. Unmagnified,
+        // over 200 of these pairs are more than 1 mm off, and a chip resting
+        // tilted on another (as in the gather_hand_edges case) sinks into it
+        // for good while its manifold says they barely touch. Magnified, at
+        // most 4 pairs are still off: steeply tilted pairs whose
         // faces meet obliquely, where clipping one face against the other
         // in projection is itself an approximation, at any scale.
         let (parry_wrong, compared) = wrong_chip_manifolds(&DefaultQueryDispatcher);

@@ -9,10 +9,11 @@
 //! such an overlap out only over later steps, at a speed that soft contacts
 //! bound, while the sweep goes on pressing; and the give-way tests judge a
 //! step from the last one's pushes, so they see a closing a step late.
-//! Measured with `surfacelab behaviours` (deepest overlap in mm, Joint /
-//! Particle / Hybrid): with giving way alone, hand edges 4.7 / 4.3 / 3.1
-//! and forearms 4.2 / 4.4 / 4.1; with this projection as well, 1.2 / 0.7 /
-//! 1.5 and 1.1 / 1.1 / 1.3, and no other cell of the table moved.
+//! With giving way alone, the hand-edge and forearm gathers of `surfacelab
+//! behaviours` (`gather_hand_edges`, `gather_forearms`) leave pieces deeper
+//! in each other than the suite's 3 mm limit for piles with Joint, Particle
+//! and Hybrid; with this projection as well they stay within it, and no
+//! other case changes.
 //!
 //! **Model.** `Box2D`'s position solver (nonlinear Gauss-Seidel): after the
 //! step, every pair of movable objects deeper in each other than [`SLOP`]
@@ -31,7 +32,9 @@
 //! (a press from above is no push) or a pile is jammed: free objects
 //! collide with finite momentum, which their contacts absorb within a
 //! step, while a hand's bodies drive on with whatever impulse it takes.
-//! Every other step is bit for bit what it was.
+//! Every other step is bit for bit what it would be without it.
+//!
+//! Design: docs/design/pile-projection.md.
 
 use super::magnified::MagnifiedDispatcher;
 use glam::Vec3;
@@ -49,9 +52,9 @@ const SLOP: f32 = super::give_way::GIVE;
 const SWEEPS: usize = 4;
 
 /// How far apart (m) two objects' boxes may be and still be tested in a
-/// later sweep: moves of a few millimetres (the deepest overlap the sweeps
-/// of `gather` left before this projection was 8.5 mm) can bring pieces
-/// that did not touch into each other; anything further waits a step.
+/// later sweep: moves of a few millimetres (about the deepest overlap a
+/// `gather` sweep leaves for the projection) can bring pieces that did not
+/// touch into each other; anything further waits a step.
 const REACH: f32 = 0.005;
 
 /// Moves apart the movable objects (`objects`: every object's body and

@@ -29,8 +29,8 @@ pub struct RayHit {
 ///
 /// Exact, unlike parry's, which casts rays at cylinders by GJK with
 /// absolute tolerances: from the eye 1.2 m above the table its hits on
-/// the 5 cm steering cylinder's top were up to 1.2 mm off the surface,
-/// and a hit under the top near the rim was taken for the wall (see
+/// the 5 cm steering cylinder's top can be a millimetre off the surface,
+/// and a hit under the top near the rim is taken for the wall (see
 /// [`super::World::cast_ray`]). Solved in f64 from the point of the ray
 /// nearest the axis, so that a ray from a metre away loses no precision.
 pub fn cylinder_hit(origin: Vec3, dir: Vec3, half_height: f32, radius: f32, max_toi: f32) -> Option<(f32, Vec3)> {

@@ -32,8 +32,8 @@ const CREASE_RATE: f32 = 20.0;
 /// Largest set (fraction of an edge's rest length) a crease may take. Warp
 /// and weft share the bend edges' plasticity in rapier, so two hands
 /// pulling a cloth apart also stretch it for good; this caps that at 20%
-/// (the flatten gesture leaves about 5% on average, see `tests/soft_bodies.rs`),
-/// while the bend edges of the task's rumples need at most 17% to lie flat.
+/// (the flatten gesture leaves far less on average, see `tests/soft_bodies.rs`),
+/// while the bend edges of the task's rumples need less than that to lie flat.
 const CREASE_MAX: f32 = 0.2;
 
 /// `user_data` of every soft-body surface collider (pieces copy it).
@@ -147,7 +147,8 @@ fn insert(spec: &SoftBodySpec, index: usize, config: &WorldConfig, physics: &mut
 /// Wakes every sleeping soft body that a moving rigid body touches.
 /// rapier keeps a soft body asleep under a finger sliding slowly over it
 /// (its contacts are solved outside the rigid contact graph that wakes
-/// islands): a proxy circling at 3 cm/s on a sleeping cloth never moved it.
+/// islands): a proxy circling at 3 cm/s on a sleeping cloth would never
+/// move it.
 /// Called before every step; costs nothing when nothing sleeps.
 pub(super) fn wake_touched(physics: &mut PhysicsWorld) {
     let mut wake = Vec::new();
@@ -359,9 +360,9 @@ fn soft_builder(spec: &SoftBodySpec, index: usize, friction: bool, sleeping: boo
         );
     builder.particle_settings.can_sleep = sleeping;
     // Fingers weigh far more than a cloth's particles: extra internal
-    // iterations let the soft contacts hold them (measured: with rapier's
-    // default 3 a 0.2 kg box sank through a 0.05 kg, 256-particle cloth;
-    // with 20 it rested on it).
+    // iterations let the soft contacts hold them (with rapier's default 3 a
+    // 0.2 kg box sinks through a 0.05 kg, 256-particle cloth; with 20 it
+    // rests on it).
     builder.particle_settings.additional_pgs_iterations = SOFT_PGS_ITERATIONS;
     if let Some(t) = spec.tear_strain {
         builder = builder.tear_strain(t);

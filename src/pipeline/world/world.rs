@@ -128,12 +128,12 @@ impl World {
         // centre plus a "twist" constraint whose limit (mu * sum of normal
         // impulse * distance) is independent of the sliding friction, so a box
         // sliding on the table still resists turning with its full torsional
-        // friction. Measured with `surfacelab behaviours`: a fingertip circling
-        // round a pinned one turned a 6 cm box 0.0-0.1 degrees with Proxy and
-        // Particle (their pushes translated it), 47-74 degrees per point; a flat
-        // hand sliding over a ball carried it -0.09 of its travel with Particle,
-        // 0.41 per point. It costs about a fifth more time (the suite: 1.7 s ->
-        // 2.1 s; the default study, 96 s on 2 cores).
+        // friction. With `Simplified`, `surfacelab behaviours` shows a fingertip
+        // circling round a pinned one barely turning a 6 cm box with Proxy and
+        // Particle (their pushes translate it), and a flat hand sliding over a
+        // ball with Particle not carrying it at all; per point, both do what the
+        // paper expects (`pin_and_spin_*`, `ball_under_hand`). It costs about a
+        // fifth more time (`surfacelab behaviours`, `surfacelab study`).
         ip.friction_model = rapier3d::dynamics::FrictionModel::Coulomb;
         physics
     }
