@@ -105,12 +105,12 @@ fn seeds_run_independent_studies_and_count_findings() {
     assert_ne!(seed_of(2), 7);
     let findings = std::fs::read_to_string(out.join("findings.csv")).expect("findings.csv");
     let mut lines = findings.lines();
-    assert_eq!(lines.next(), Some("finding,seeds,reproduced,share"));
+    assert_eq!(lines.next(), Some("finding,seeds,reproduced,share,wilson_low,wilson_high"));
     let rows: Vec<&str> = lines.collect();
     assert_eq!(rows.len(), 5, "{findings}");
     assert!(rows[0].starts_with("joint_fastest_positioning,"), "{findings}");
     // One participant cannot test anything: no seed counts, no share.
-    assert!(rows.iter().all(|r| r.ends_with(",0,0,")), "{findings}");
+    assert!(rows.iter().all(|r| r.ends_with(",0,0,,,")), "{findings}");
     let png = std::fs::read(out.join("seeds.png")).expect("seeds.png");
     assert!(png.starts_with(b"\x89PNG"));
     // The same folder again is refused (exit 2), not overwritten.
@@ -218,4 +218,53 @@ fn resume_refuses_a_changed_design_and_says_what_it_drops() {
     let o = tiny(&out).output().expect("runs");
     assert_eq!(o.status.code(), Some(2), "{}", text(&o));
     assert!(text(&o).contains("Its run.toml is gone") && text(&o).contains("trials.csv.orphan"), "{}", text(&o));
+}
+
+/// `--manners`: the study under the full repertoire and under the
+/// restriction, each in its own folder, and every finding under both in
+/// ablation.csv and ablation.md; the restricted participants use only the
+/// manners allowed.
+#[test]
+fn the_manners_ablation_runs_each_repertoire_and_tabulates_the_findings() {
+    let scratch = tmp("ablation");
+    let out = scratch.path().join("abl");
+    let o = bin()
+        .args(["study", "--participants", "2", "--reps", "1", "--no-practice", "--tasks", "positioning"])
+        .args(["--techniques", "joint,particle", "--manners", "single-finger", "--no-progress", "--out"])
+        .arg(&out)
+        .output()
+        .expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    for arm in ["full", "single-finger"] {
+        assert!(out.join(arm).join("seed-1/trials.csv").is_file(), "{arm}");
+        assert!(out.join(arm).join("findings.csv").is_file(), "{arm}");
+    }
+    let manners = column(&out.join("single-finger/seed-1/trials.csv"), "manners");
+    assert!(!manners.is_empty());
+    for cell in &manners {
+        assert!(cell.split(';').all(|item| item.starts_with("fingertip_1:")), "{cell}");
+    }
+    let full = column(&out.join("full/seed-1/trials.csv"), "manners");
+    assert!(full.iter().any(|c| c.split(';').any(|item| !item.starts_with("fingertip_1:"))), "{full:?}");
+    let run_toml = std::fs::read_to_string(out.join("single-finger/seed-1/run.toml")).expect("run.toml");
+    assert!(run_toml.contains("manners = \"single-finger\""), "{run_toml}");
+
+    let csv = std::fs::read_to_string(out.join("ablation.csv")).expect("ablation.csv");
+    assert!(csv.starts_with("repertoire,finding,seeds,reproduced,share,wilson_low,wilson_high\n"), "{csv}");
+    // Five findings under each of the two repertoires.
+    assert_eq!(csv.lines().count(), 1 + 2 * 5, "{csv}");
+    let md = std::fs::read_to_string(out.join("ablation.md")).expect("ablation.md");
+    assert!(md.contains("| finding | full | single-finger |"), "{md}");
+    // The sorting finding needs the sorting task: not tested here.
+    assert!(md.contains("| Proxy and Particle are faster than Joint for sorting | not tested | not tested |"), "{md}");
+
+    // A restriction that could leave a participant idle is refused.
+    let o = bin()
+        .args(["study", "--manners", "pinch", "--participants", "1", "--out"])
+        .arg(scratch.path().join("never"))
+        .output()
+        .expect("runs");
+    let t = text(&o);
+    assert_eq!(o.status.code(), Some(2), "{t}");
+    assert!(t.contains("--manners") && t.contains("`pinch` leaves no manner"), "{t}");
 }

@@ -802,7 +802,12 @@ fn run_toml_settings_keep_their_on_disk_format() {
     let settings = RunFile::load(&dir.join("old.toml")).expect("an existing run.toml loads").design.settings;
     assert_eq!(
         settings,
-        RunnerSettings { frames: true, perception_delay_s: Some(0.15), replay: Some(PathBuf::from("rec")) }
+        RunnerSettings {
+            frames: true,
+            perception_delay_s: Some(0.15),
+            replay: Some(PathBuf::from("rec")),
+            manners: None
+        }
     );
     std::fs::write(dir.join("int.toml"), format!("{head}perception_delay_s = 1\n")).expect("write");
     let settings = RunFile::load(&dir.join("int.toml")).expect("integer seconds").design.settings;
@@ -830,7 +835,12 @@ fn run_toml_settings_keep_their_on_disk_format() {
 
 #[test]
 fn run_toml_round_trips() {
-    let settings = RunnerSettings { frames: true, perception_delay_s: Some(0.15), replay: Some("gestures/p1".into()) };
+    let settings = RunnerSettings {
+        frames: true,
+        perception_delay_s: Some(0.15),
+        replay: Some("gestures/p1".into()),
+        manners: None,
+    };
     let design = StudyDesign {
         participants: 4,
         tasks: vec!["steering".into(), "positioning".into()],

@@ -367,7 +367,7 @@ fn the_report_reads_strategy_shares_when_trials_csv_has_them() {
     assert_eq!(counts["joint"]["pinch"], 1);
     assert!(!counts["joint"].contains_key("forearm_sweep"));
     let design = md_design();
-    let blocks = report_blocks(&design, &[], &analyze(&design, &[]), Some(&counts));
+    let blocks = report_blocks(&design, &[], &analyze(&design, &[]), Some(&counts), &[]);
     let table = blocks
         .iter()
         .find_map(|b| match b {

@@ -282,9 +282,9 @@ fn run_takes_exactly_one_source_of_hands() {
         (&[], "--gesture"),
         (&["--gesture", g, "--tuio", "4000", "--seconds", "1"], "cannot be used with"),
         (&["--tuio", "4000"], "--seconds"),
-        (&["--gesture", g, "--seconds", "1"], "'--gesture <FILE>' cannot be used with '--seconds <S>'"),
-        (&["--gesture", g, "--record", "r.toml"], "'--gesture <FILE>' cannot be used with '--record <FILE>'"),
-        (&["--seconds", "1", "--tuio-bind", "0.0.0.0"], "--gesture <FILE>|--tuio"),
+        (&["--gesture", g, "--seconds", "1"], "'--gesture <NAME|FILE>' cannot be used with '--seconds <S>'"),
+        (&["--gesture", g, "--record", "r.toml"], "'--gesture <NAME|FILE>' cannot be used with '--record <FILE>'"),
+        (&["--seconds", "1", "--tuio-bind", "0.0.0.0"], "--gesture <NAME|FILE>|--tuio"),
         (&["--tuio", "4000", "--seconds", "1e9"], "out of range"),
     ];
     for (extra, says) in cases {

@@ -9,6 +9,7 @@ mod demo;
 mod display;
 mod doctor;
 mod failure;
+mod participants;
 mod run;
 mod run_images;
 mod screenshot;
@@ -48,6 +49,8 @@ pub enum Command {
     Tradeoff(TradeoffArgs),
     /// Run the paper's manipulations (the behaviour suite) and print the behaviour × technique table.
     Behaviours(BehavioursArgs),
+    /// Check the simulated participants against human data (`participants fitts`).
+    Participants(ParticipantsArgs),
     /// Print the GPU adapter, the display and the version.
     Doctor,
     /// Write a camera calibration file for `--images` or `--camera` from four point pairs (clicked or given).
@@ -308,6 +311,14 @@ pub struct StudyArgs {
     /// With --slurm: each job's wall-clock limit, HH:MM:SS or D-HH:MM:SS (#SBATCH --time).
     #[arg(long, value_name = "HH:MM:SS", requires = "slurm", value_parser = clap::value_parser!(crate::harness::study::slurm::SlurmTime))]
     pub time: Option<crate::harness::study::slurm::SlurmTime>,
+    /// The participants' repertoire restricted, an ablation: a preset
+    /// (single-finger, fingertips, one-hand) or comma-separated manners
+    /// (`fingertip_1,pinch`). Repeat for several. The study then runs with
+    /// the full repertoire and with each restriction, into OUT/full,
+    /// `OUT/<restriction>`, ... (each as --seeds N, default 1), and writes
+    /// OUT/ablation.csv and OUT/ablation.md: every finding under each.
+    #[arg(long, value_name = "PRESET|MANNER,...", conflicts_with_all = ["resume", "shard", "slurm", "replay"])]
+    pub manners: Vec<String>,
     /// With --slurm: CPUs per array task (#SBATCH --cpus-per-task); the task runs that many workers.
     #[arg(long, value_name = "C", requires = "slurm", value_parser = clap::value_parser!(u32).range(1..))]
     pub cpus: Option<u32>,
@@ -437,6 +448,46 @@ pub struct TradeoffArgs {
     /// A smaller sweep that finishes in under two minutes.
     #[arg(long)]
     pub quick: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct ParticipantsArgs {
+    #[command(subcommand)]
+    pub action: ParticipantsAction,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum ParticipantsAction {
+    /// Fitts' law: one-finger drags of one puck over a grid of distances and
+    /// target widths; writes fitts.csv, fitts.json and fitts.png.
+    Fitts(FittsArgs),
+}
+
+#[derive(Debug, Args)]
+pub struct FittsArgs {
+    #[arg(long, value_parser = parse_technique, default_value_t = TechniqueKind::JOINT)]
+    pub technique: TechniqueKind,
+    /// Output folder.
+    #[arg(long, default_value = "out/fitts")]
+    pub out: PathBuf,
+    /// Simulated participants (default 6).
+    #[arg(long, default_value_t = 6)]
+    pub participants: u32,
+    /// Trials per participant and condition, alternating direction (default 4).
+    #[arg(long, default_value_t = 4)]
+    pub reps: u32,
+    /// Comma-separated distances, metres (default 0.05,0.1,0.2,0.4,0.6).
+    #[arg(long, value_delimiter = ',', value_name = "M,M,...")]
+    pub distances: Option<Vec<f64>>,
+    /// Comma-separated target widths, metres (default 0.005,0.01,0.02,0.04).
+    #[arg(long, value_delimiter = ',', value_name = "M,M,...")]
+    pub widths: Option<Vec<f64>>,
+    /// Skills and noise derive from it, as in a study.
+    #[arg(long, default_value_t = 2008)]
+    pub seed: u64,
+    /// Worker threads (0 = one per core). Results do not depend on it.
+    #[arg(long, default_value_t = 0)]
+    pub jobs: usize,
 }
 
 #[derive(Debug, Args)]
@@ -572,6 +623,7 @@ fn init_tracing() {
 fn run(command: Command) -> CommandResult {
     match command {
         Command::Doctor => Ok(doctor::run()),
+        Command::Participants(args) => participants::run(&args),
         Command::Demo(args) => demo::run(&args),
         Command::Run(args) => run::run(&args),
         Command::Study(args) => study::run(&args),
@@ -610,6 +662,7 @@ pub(crate) fn headless_main() -> CommandResult {
         no_progress: false,
         frames: false,
         seeds: None,
+        manners: Vec::new(),
         slurm: None,
         submit: false,
         partition: None,

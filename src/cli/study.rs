@@ -26,6 +26,9 @@ pub fn run(args: &StudyArgs) -> super::CommandResult {
     }
     let options =
         RunOptions { jobs: args.jobs, progress: !args.no_progress, shard: args.shard, ..RunOptions::default() };
+    if !args.manners.is_empty() {
+        return run_ablation(args, &options);
+    }
     if let Some(n) = args.seeds {
         return run_seeds(args, n, &options);
     }
@@ -129,10 +132,24 @@ fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> super::CommandRe
     if let Some(note) = base.balance_note() {
         eprintln!("note: {note}");
     }
+    seeds_into(args, &base, &args.out, n, options)?;
+    println!("  files in {}: findings.csv, seeds.png, seed-1 .. seed-{n}", args.out.display());
+    Ok(ExitCode::SUCCESS)
+}
+
+/// Runs `n` studies of `base` into `out/seed-1 ..`, writes `out/findings.csv`
+/// and prints each finding's share of seeds.
+fn seeds_into(
+    args: &StudyArgs,
+    base: &StudyDesign,
+    out: &std::path::Path,
+    n: u32,
+    options: &RunOptions,
+) -> Result<Vec<study::seeds::FindingsRow>, Failure> {
     let mut dirs = Vec::new();
     for k in 1..=n {
         let design = StudyDesign { seed: study::seeds::seed_for(base.seed, k), ..base.clone() };
-        let dir = study::seeds::seed_dir(&args.out, k);
+        let dir = study::seeds::seed_dir(out, k);
         let runner = runner_for(args, design.clone(), &dir)?;
         let cpu_before = process_cpu_s();
         let outcome = study::run_study(&design, &dir, runner.as_ref(), options)?;
@@ -140,12 +157,53 @@ fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> super::CommandRe
         print_outcome(&outcome, cpu_since(cpu_before));
         dirs.push(dir);
     }
-    let rows = study::seeds::summarize_seeds(&args.out, &dirs)?;
-    println!("findings over {n} seeds (reproduced / seeds that could test it):");
+    let rows = study::seeds::summarize_seeds(out, &dirs)?;
+    println!("findings over {n} seeds (reproduced / seeds that could test it, share, Wilson 95% interval):");
     for r in &rows {
-        println!("  {:32} {}/{}", r.finding, r.reproduced, r.seeds);
+        println!("  {:32} {}", r.finding, share_text(r));
     }
-    println!("  files in {}: findings.csv, seeds.png, seed-1 .. seed-{n}", args.out.display());
+    Ok(rows)
+}
+
+fn share_text(r: &study::seeds::FindingsRow) -> String {
+    match (r.share, r.wilson_low, r.wilson_high) {
+        (Some(p), Some(lo), Some(hi)) => {
+            format!("{}/{} ({:.0}%, 95% CI {:.0}-{:.0}%)", r.reproduced, r.seeds, p * 100.0, lo * 100.0, hi * 100.0)
+        }
+        _ => format!("{}/{} (not tested)", r.reproduced, r.seeds),
+    }
+}
+
+/// `--manners R ...`: the study under the full repertoire and under each
+/// restriction (each `--seeds N` studies, default 1), then ablation.csv/md.
+fn run_ablation(args: &StudyArgs, options: &RunOptions) -> super::CommandResult {
+    use crate::harness::participant::Repertoire;
+    let base = design_from(args)?;
+    base.validate()?;
+    let mut arms: Vec<(String, Option<String>)> = vec![("full".to_owned(), None)];
+    for spec in &args.manners {
+        let repertoire = Repertoire::parse(spec).map_err(|e| Failure::from(e).context("--manners"))?;
+        let label = repertoire.label();
+        if !repertoire.is_full() && !arms.iter().any(|(l, _)| *l == label) {
+            arms.push((label, Some(spec.trim().to_owned())));
+        }
+    }
+    let n = args.seeds.unwrap_or(1);
+    let mut done = Vec::new();
+    for (label, manners) in arms {
+        let mut design = base.clone();
+        design.settings.manners = manners;
+        let out = args.out.join(&label);
+        println!("repertoire {label}:");
+        let findings = seeds_into(args, &design, &out, n, options)?;
+        done.push(study::ablation::Arm { repertoire: label, findings });
+    }
+    study::ablation::write_ablation(&args.out, &done)?;
+    println!(
+        "  files in {}: ablation.csv, ablation.md, and a folder per repertoire ({})",
+        args.out.display(),
+        done.iter().map(|a| a.repertoire.as_str()).collect::<Vec<_>>().join(", ")
+    );
     Ok(ExitCode::SUCCESS)
 }
 
@@ -284,6 +342,10 @@ fn design_from(args: &StudyArgs) -> Result<StudyDesign, Failure> {
     }
     if args.frames {
         d.settings.frames = true;
+    }
+    if let Some(spec) = &d.settings.manners {
+        crate::harness::participant::Repertoire::parse(spec)
+            .map_err(|e| Failure::from(e).context("run.toml [design.settings] manners"))?;
     }
     Ok(d)
 }

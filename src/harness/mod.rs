@@ -3,10 +3,12 @@
 //! - [`participant`]: simulated participants who choose how to use their hands and learn.
 //! - [`study`]: the study design, its trials, CSVs, statistics, figures and report.
 //! - [`behaviour`]: the paper's manipulations as cases, measured per technique.
+//! - [`fitts`]: a Fitts' law check of the simulated participants against published drag data.
 //! - [`tradeoff`]: what contact accuracy costs in time.
 //! - [`plot_font`]: the one font the figures use.
 
 pub mod behaviour;
+pub mod fitts;
 pub mod participant;
 pub mod plot_font;
 pub mod plot_png;

@@ -46,17 +46,20 @@ pub struct SceneBuilder {
     root: Table,
     objects: Vec<Value>,
     targets: Vec<Value>,
+    dwell_s: Option<f32>,
 }
 
 impl SceneBuilder {
-    /// A scene called `name` on the default table, with no objects, no goal
-    /// and no effects declared.
+    /// A scene called `name` on a 1.0 × 0.75 m table, with no objects, no
+    /// goal and no effects declared (objects then float: declare at least
+    /// gravity and friction with [`SceneBuilder::effects`]).
     pub fn new(name: &str) -> SceneBuilder {
         let mut root = Table::new();
         root.insert("name".into(), Value::from(name));
         root.insert("description".into(), Value::from(format!("{name}, built in code")));
+        root.insert("effects".into(), Value::Array(Vec::new()));
         root.insert("table".into(), Value::Table(Table::from_iter([("size".into(), floats(&[1.0, 0.75]))])));
-        SceneBuilder { root, objects: Vec::new(), targets: Vec::new() }
+        SceneBuilder { root, objects: Vec::new(), targets: Vec::new(), dwell_s: None }
     }
 
     /// The world effects the scene declares; the world simulates only these.
@@ -68,7 +71,23 @@ impl SceneBuilder {
 
     /// The table's width (x) and depth (y), metres.
     pub fn table(mut self, width: f32, depth: f32) -> SceneBuilder {
-        self.root.insert("table".into(), Value::Table(Table::from_iter([("size".into(), floats(&[width, depth]))])));
+        if let Some(Value::Table(t)) = self.root.get_mut("table") {
+            t.insert("size".into(), floats(&[width, depth]));
+        }
+        self
+    }
+
+    /// Seconds before a study trial of this scene counts as failed.
+    pub fn time_limit(mut self, seconds: f32) -> SceneBuilder {
+        self.root.insert("time_limit_s".into(), Value::from(f64::from(seconds)));
+        self
+    }
+
+    /// The table's friction coefficient (default 0.6, a matte surface).
+    pub fn table_friction(mut self, friction: f32) -> SceneBuilder {
+        if let Some(Value::Table(t)) = self.root.get_mut("table") {
+            t.insert("friction".into(), Value::from(f64::from(friction)));
+        }
         self
     }
 
@@ -110,6 +129,13 @@ impl SceneBuilder {
         self
     }
 
+    /// How long a positioned object must rest on its target before it
+    /// counts (s; default 0.5).
+    pub fn dwell(mut self, seconds: f32) -> SceneBuilder {
+        self.dwell_s = Some(seconds);
+        self
+    }
+
     /// A `[technique]` setting (see the technique settings' reference).
     pub fn technique_setting(mut self, key: &str, value: impl Into<Value>) -> SceneBuilder {
         let table = self.root.entry("technique").or_insert_with(|| Value::Table(Table::new()));
@@ -126,10 +152,13 @@ impl SceneBuilder {
             root.insert("objects".into(), Value::Array(self.objects.clone()));
         }
         if !self.targets.is_empty() {
-            let goal = Table::from_iter([
+            let mut goal = Table::from_iter([
                 ("kind".to_owned(), Value::from("positioning")),
                 ("targets".to_owned(), Value::Array(self.targets.clone())),
             ]);
+            if let Some(d) = self.dwell_s {
+                goal.insert("dwell_s".to_owned(), Value::from(f64::from(d)));
+            }
             root.insert("goal".into(), Value::Table(goal));
         }
         root.to_string()

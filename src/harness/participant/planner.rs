@@ -25,6 +25,7 @@
 use super::goals::{Want, cluster, footprint, open_objects, settle_radius, want};
 use super::learner::{Context, Learner, net_progress, payoff};
 use super::manner::{Manner, Situation, applicable, fingers};
+use super::repertoire::Repertoire;
 use super::skill::Skill;
 use super::usage::Usage;
 use crate::pipeline::surface::{Hand, HandKind};
@@ -64,11 +65,18 @@ pub struct PlannerOptions {
     /// is off. 0 by default: the paper removed only the display of where
     /// input acts; objects stayed visible at once.
     pub perception_delay_s: f32,
+    /// The manners the participant may use (the study's ablation factor);
+    /// the full repertoire by default.
+    pub repertoire: Repertoire,
 }
 
 impl Default for PlannerOptions {
     fn default() -> Self {
-        PlannerOptions { explore: super::learner::EXPLORE_MEASURED, perception_delay_s: 0.0 }
+        PlannerOptions {
+            explore: super::learner::EXPLORE_MEASURED,
+            perception_delay_s: 0.0,
+            repertoire: Repertoire::FULL,
+        }
     }
 }
 
@@ -276,7 +284,8 @@ impl Planner {
             .as_ref()
             .is_some_and(|e| e.hands.iter().any(|h| h.phase == Phase::Down && matches!(h.role, Role::Carry { .. })));
         let feedback = (self.feedback && carrying).then(|| session.feedback());
-        let gain = DRAG_GAIN.min(0.5 / self.delay());
+        let delay = self.delay();
+        let gain = DRAG_GAIN.min(0.5 / delay);
         let speed = self.speed(scene);
         let mut regrips = 0;
         if let Some(e) = &mut self.episode {
@@ -286,7 +295,7 @@ impl Planner {
                 }
                 let lifted = match &h.role {
                     Role::Carry { object } => {
-                        carry(h, *object, scene, &open, observed, now, gain, speed, feedback.as_ref())
+                        carry(h, *object, scene, &open, observed, now, gain, speed, delay, feedback.as_ref())
                     }
                     Role::Push { .. } => push(h, scene, &open, observed, now, gain, speed),
                 };
@@ -374,7 +383,8 @@ impl Planner {
         let situation =
             Situation { cluster: members.len(), footprint: footprint(scene, seed), second_object: second.is_some() };
         let context = Context::new(&scene.goal, members.len());
-        let options = applicable(situation);
+        let mut options = applicable(situation);
+        options.retain(|&m| self.options.repertoire.allows(m));
         let Some(manner) = self.learner.choose(context, &options, self.options.explore, &mut self.rng) else {
             return;
         };
@@ -596,6 +606,7 @@ fn carry(
     now: f64,
     gain: f32,
     speed: f32,
+    delay: f32,
     feedback: Option<&Feedback>,
 ) -> Step {
     let Some((_, w)) = open.iter().find(|(i, _)| *i == object) else {
@@ -616,9 +627,13 @@ fn carry(
         let lag = pressing - acting;
         v -= lag.clamp_length_max(0.03) * 2.0;
     }
+    // The participant sees its finger as late as the object: where the
+    // finger was then, not where it is now, tells whether the object
+    // escaped it (a finger moving at 0.3 m/s is 6 cm on 0.2 s later).
+    let seen_pressing = pressing - h.velocity * delay;
     h.velocity = v.clamp_length_max(speed);
     let reach = footprint(scene, object) + 0.03;
-    if (pressing - obj).length() > reach {
+    if (seen_pressing - obj).length() > reach {
         return Step::Regrip;
     }
     if err.length() < h.best - 0.005 {

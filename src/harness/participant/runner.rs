@@ -42,6 +42,15 @@ impl ScriptedRunner {
         self.relabel.get(&t).copied().unwrap_or(t)
     }
 
+    /// The manners the design allows (`[design.settings] manners`); absent =
+    /// the full repertoire.
+    fn repertoire(&self) -> anyhow::Result<super::Repertoire> {
+        match &self.design.settings.manners {
+            None => Ok(super::Repertoire::FULL),
+            Some(spec) => Ok(super::Repertoire::parse(spec)?),
+        }
+    }
+
     /// The perception-delay setting; absent = 0, the paper's definition.
     fn perception_delay_s(&self) -> f32 {
         self.design.settings.perception_delay_s.unwrap_or(0.0) as f32
@@ -97,6 +106,7 @@ impl ScriptedParticipant<'_> {
         let options = PlannerOptions {
             explore: if spec.practice { EXPLORE_PRACTICE } else { EXPLORE_MEASURED },
             perception_delay_s: runner.perception_delay_s(),
+            repertoire: runner.repertoire()?,
         };
         let (result, learner) = super::run_scripted_with(
             &scene,

@@ -1,6 +1,6 @@
 //! `anova.csv` and `pairwise.csv`: the inferential statistics of a run.
 //!
-//! Per task, on the cell table of [`super::cells`] (subject = participant,
+//! Per task, on the cell table of the cells module (subject = participant,
 //! value = mean of the participant's measured repetitions in the cell;
 //! timed-out trials at the time limit; participants missing a cell left out):
 //! - a technique × feedback repeated-measures ANOVA ([`super::anova`]): one

@@ -109,6 +109,11 @@ pub struct RunnerSettings {
     /// this folder instead of running scripted participants.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub replay: Option<PathBuf>,
+    /// `manners = "single-finger"` (`--manners`): the scripted participants'
+    /// repertoire, a preset or comma-separated manner names. Absent = every
+    /// manner.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub manners: Option<String>,
 }
 
 impl RunnerSettings {

@@ -25,7 +25,7 @@ pub enum StudyError {
     /// A folder's contents do not belong to the design that should have made them.
     #[error("{}: {message}", path.display())]
     Mismatch { path: PathBuf, message: String },
-    /// Another process is writing to this run folder (see [`super::lock`]).
+    /// Another process is writing to this run folder (the run folder's `.lock`).
     #[error("{} is in use by another surfacelab process ({holder}); wait for it to finish or stop it, then resume", path.display())]
     Locked { path: PathBuf, holder: String },
     #[error("merge: {0}")]

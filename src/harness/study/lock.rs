@@ -15,7 +15,7 @@
 use super::StudyError;
 use std::fs::{File, OpenOptions, TryLockError};
 use std::io::{Read, Seek, SeekFrom, Write};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 /// Name of the lock file inside a run folder.
 pub const LOCK_FILE: &str = ".lock";
@@ -24,7 +24,6 @@ pub const LOCK_FILE: &str = ".lock";
 #[derive(Debug)]
 pub struct RunLock {
     file: File,
-    path: PathBuf,
 }
 
 impl RunLock {
@@ -59,11 +58,7 @@ impl RunLock {
             f.sync_data()
         };
         write(&mut file).map_err(StudyError::io(&path))?;
-        Ok(RunLock { file, path })
-    }
-
-    pub fn path(&self) -> &Path {
-        &self.path
+        Ok(RunLock { file })
     }
 }
 
@@ -86,7 +81,7 @@ fn holder(file: &mut File) -> String {
 mod tests {
     use super::*;
 
-    fn temp_dir(name: &str) -> PathBuf {
+    fn temp_dir(name: &str) -> std::path::PathBuf {
         let dir = std::env::temp_dir().join(format!("surfacelab-lock-{name}-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).expect("temp dir");
@@ -113,7 +108,7 @@ mod tests {
         // What a killed run leaves: its note, and no kernel lock.
         std::fs::write(dir.join(LOCK_FILE), "pid 4000000 (surfacelab 0.0.0)\n").expect("write");
         let lock = RunLock::acquire(&dir).expect("stale lock taken over");
-        let note = std::fs::read_to_string(lock.path()).expect("read");
+        let note = std::fs::read_to_string(dir.join(LOCK_FILE)).expect("read");
         assert_eq!(note, format!("pid {} (surfacelab {})\n", std::process::id(), env!("CARGO_PKG_VERSION")));
         drop(lock);
         assert_eq!(std::fs::read_to_string(dir.join(LOCK_FILE)).expect("read"), "", "cleared on release");

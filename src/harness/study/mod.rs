@@ -1,25 +1,36 @@
-//! The study harness: counterbalanced designs (`design`), crash-safe resumable and shardable runs (`runner`, `output`), descriptive statistics (`summary`), inferential statistics (`analysis` on `cells`, with the maths in `anova`, `pairwise`, `within_ci`) and the Figure-9 plot (`figure`).
+//! The study harness: counterbalanced designs, crash-safe resumable and
+//! shardable runs, descriptive statistics (`summary`), inferential
+//! statistics (`analysis`, with the maths in `anova`, `pairwise`,
+//! `within_ci`), the Figure-9 plot, the report, many seeds (`seeds`), the
+//! repertoire ablation (`ablation`) and Slurm sweeps (`slurm`).
+//!
+//! The public surface is what a program outside the crate needs to design,
+//! run and read a study: the re-exports below and the modules that hold a
+//! file format of the run folder. The rest (cells, figures, the lock, the
+//! runner's internals) is the harness's own.
 
+pub mod ablation;
 pub mod analysis;
 pub mod anova;
-pub mod cells;
-pub mod design;
-pub mod error;
-pub mod figure;
+mod cells;
+mod design;
+pub(crate) mod error;
+mod explain;
+mod figure;
 pub mod findings;
-pub mod folder;
-pub mod lock;
+mod folder;
+mod lock;
 pub mod output;
 pub mod pairwise;
 pub mod report;
-pub mod runner;
+mod runner;
 pub mod seeds;
-pub mod seeds_figure;
+mod seeds_figure;
 pub mod slurm;
-pub mod strategies;
+mod strategies;
 pub mod summary;
 mod t_quantile;
-pub mod trial;
+mod trial;
 pub mod within_ci;
 
 pub use design::{DEFAULT_TASKS, ParticipantPlan, RunnerSettings, Shard, StudyDesign, trial_seed, williams_square};

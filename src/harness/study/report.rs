@@ -10,8 +10,10 @@
 use super::analysis::Analysis;
 use super::design::StudyDesign;
 use super::error::StudyError;
-use super::findings::{FINDINGS, fmt_p};
-use super::output::{FIGURE_PNG, TRIALS_CSV, write_atomically};
+use super::explain::explain;
+use super::findings::{FINDINGS, FindingVerdict, fmt_p};
+use super::output::{FIGURE_PNG, STRATEGIES_CSV, TRIALS_CSV, write_atomically};
+use super::strategies::{StrategyRow, read_strategies};
 use super::summary::SummaryRow;
 use crate::pipeline::technique::TechniqueKind;
 use base64::Engine;
@@ -82,6 +84,7 @@ pub fn report_blocks(
     summary: &[SummaryRow],
     analysis: &Analysis,
     strategies: Option<&StrategyCounts>,
+    strategy_rows: &[StrategyRow],
 ) -> Vec<Block> {
     let mut b = vec![Block::Heading(s("Study report"))];
     design_blocks(&mut b, design);
@@ -90,7 +93,49 @@ pub fn report_blocks(
     pairwise_blocks(&mut b, analysis);
     strategy_blocks(&mut b, strategies);
     finding_blocks(&mut b, analysis);
+    explanation_blocks(&mut b, analysis, strategy_rows);
     b
+}
+
+/// A section per finding this run does not reproduce: the strategies and
+/// what each manner paid under each condition (`explain`).
+fn explanation_blocks(b: &mut Vec<Block>, analysis: &Analysis, rows: &[StrategyRow]) {
+    for f in FINDINGS.iter().filter(|f| f.judge(analysis).verdict == FindingVerdict::NotReproduced) {
+        let Some(e) = explain(f, rows) else { continue };
+        b.push(Block::Heading(format!("Why not reproduced: {}", f.claim)));
+        b.push(Block::Paragraph(format!(
+            "{} task, measured trials (strategies.csv). Per manner: the share of the time spent in it, and its \
+             payoff, net progress towards the goal per second of use (m/s, re-grips and drops deducted).",
+            f.task
+        )));
+        let mut head = vec![s("manner")];
+        for c in &e.conditions {
+            head.push(format!("{c}: share"));
+            head.push(format!("{c}: m/s"));
+        }
+        let mut table: Vec<Vec<String>> = e
+            .rows
+            .iter()
+            .map(|(m, cells)| {
+                let mut row = vec![m.clone()];
+                for (share, pay) in cells {
+                    row.push(format!("{:.0}%", share * 100.0));
+                    row.push(opt(*pay, 4));
+                }
+                row
+            })
+            .collect();
+        let mut all = vec![s("all manners")];
+        for r in &e.rates {
+            all.push(s("100%"));
+            all.push(opt(*r, 4));
+        }
+        table.push(all);
+        b.push(Block::Table { head, rows: table });
+        for note in &e.notes {
+            b.push(Block::Paragraph(note.clone()));
+        }
+    }
 }
 
 /// Owned text: the blocks hold `String`s.
@@ -112,6 +157,11 @@ fn design_blocks(b: &mut Vec<Block>, design: &StudyDesign) {
         design.seed,
         design.time_limit_override.map_or_else(String::new, |l| format!("; time limit {l} s"))
     )));
+    if let Some(manners) = &design.settings.manners {
+        b.push(Block::Paragraph(format!(
+            "The scripted participants' repertoire is restricted to `{manners}` (study --manners), under every technique."
+        )));
+    }
 
     b.push(Block::Heading(s("Design")));
     b.push(Block::Paragraph(match design.balance_note() {
@@ -372,7 +422,9 @@ pub fn write_run_report(
     analysis: &Analysis,
 ) -> Result<(), StudyError> {
     let strategies = strategy_counts(&dir.join(TRIALS_CSV))?;
-    let blocks = report_blocks(design, summary, analysis, strategies.as_ref());
+    let path = dir.join(STRATEGIES_CSV);
+    let rows = if path.exists() { read_strategies(&path)? } else { Vec::new() };
+    let blocks = report_blocks(design, summary, analysis, strategies.as_ref(), &rows);
     write_atomically(&dir.join(REPORT_MD), to_markdown(&blocks).as_bytes())?;
     let html = to_html(&blocks, &|file| std::fs::read(dir.join(file)).ok());
     write_atomically(&dir.join(REPORT_HTML), html.as_bytes())

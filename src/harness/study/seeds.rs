@@ -22,7 +22,7 @@ use std::path::{Path, PathBuf};
 pub const FINDINGS_CSV: &str = "findings.csv";
 pub const SEEDS_PNG: &str = "seeds.png";
 /// `findings.csv` columns.
-pub const FINDINGS_COLUMNS: [&str; 4] = ["finding", "seeds", "reproduced", "share"];
+pub const FINDINGS_COLUMNS: [&str; 6] = ["finding", "seeds", "reproduced", "share", "wilson_low", "wilson_high"];
 
 /// The study seed of study `k` (1-based) of a many-seeds run: `base` for
 /// `k = 1`, else `SplitMix64` of `base` and `k`, kept within TOML's integers.
@@ -48,6 +48,27 @@ pub struct FindingsRow {
     pub seeds: u32,
     pub reproduced: u32,
     pub share: Option<f64>,
+    /// Wilson's 95% score interval of the share (empty for 0 seeds).
+    pub wilson_low: Option<f64>,
+    pub wilson_high: Option<f64>,
+}
+
+/// Wilson's score interval for `k` successes in `n` trials at 95%
+/// (Wilson 1927; recommended over the normal interval for small `n` and
+/// shares near 0 or 1 by Brown, Cai & `DasGupta` 2001). `None` for `n = 0`.
+pub fn wilson_95(k: u32, n: u32) -> Option<(f64, f64)> {
+    // The 97.5th percentile of the standard normal.
+    const Z: f64 = 1.959_963_984_540_054;
+    if n == 0 {
+        return None;
+    }
+    let (k, n) = (f64::from(k), f64::from(n));
+    let p = k / n;
+    let z2 = Z * Z;
+    let denom = 1.0 + z2 / n;
+    let centre = (p + z2 / (2.0 * n)) / denom;
+    let half = Z * (p * (1.0 - p) / n + z2 / (4.0 * n * n)).sqrt() / denom;
+    Some(((centre - half).max(0.0), (centre + half).min(1.0)))
 }
 
 /// Reads the finished run folders, judges every finding in each, and writes
@@ -55,7 +76,14 @@ pub struct FindingsRow {
 pub fn summarize_seeds(dir: &Path, runs: &[PathBuf]) -> Result<Vec<FindingsRow>, StudyError> {
     let mut rows: Vec<FindingsRow> = FINDINGS
         .iter()
-        .map(|f| FindingsRow { finding: f.id.to_owned(), seeds: 0, reproduced: 0, share: None })
+        .map(|f| FindingsRow {
+            finding: f.id.to_owned(),
+            seeds: 0,
+            reproduced: 0,
+            share: None,
+            wilson_low: None,
+            wilson_high: None,
+        })
         .collect();
     let mut summaries: Vec<Vec<SummaryRow>> = Vec::new();
     let mut design = None;
@@ -78,6 +106,9 @@ pub fn summarize_seeds(dir: &Path, runs: &[PathBuf]) -> Result<Vec<FindingsRow>,
     }
     for row in &mut rows {
         row.share = (row.seeds > 0).then(|| f64::from(row.reproduced) / f64::from(row.seeds));
+        let interval = wilson_95(row.reproduced, row.seeds);
+        row.wilson_low = interval.map(|i| i.0);
+        row.wilson_high = interval.map(|i| i.1);
     }
     let path = dir.join(FINDINGS_CSV);
     let mut w = csv::WriterBuilder::new().has_headers(false).from_writer(Vec::new());
@@ -91,4 +122,21 @@ pub fn summarize_seeds(dir: &Path, runs: &[PathBuf]) -> Result<Vec<FindingsRow>,
         write_seeds_figure(&design, &summaries, &dir.join(SEEDS_PNG))?;
     }
     Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn wilson_intervals_match_published_values() {
+        // Brown, Cai & DasGupta (2001) and the usual tables: 5 of 10 gives
+        // 0.2366 to 0.7634; 0 of 10 gives 0 to 0.2775; 20 of 20 gives
+        // 0.8389 to 1.
+        let close = |(a, b): (f64, f64), (c, d): (f64, f64)| (a - c).abs() < 5e-5 && (b - d).abs() < 5e-5;
+        assert!(close(wilson_95(5, 10).expect("n > 0"), (0.2366, 0.7634)));
+        assert!(close(wilson_95(0, 10).expect("n > 0"), (0.0, 0.2775)));
+        assert!(close(wilson_95(20, 20).expect("n > 0"), (0.8389, 1.0)));
+        assert_eq!(wilson_95(0, 0), None);
+    }
 }
