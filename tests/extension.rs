@@ -149,6 +149,32 @@ fn a_study_runs_and_names_a_registered_technique_and_resume_without_it_exits_2()
     assert!(stderr.contains("\"tether\" is not registered"), "{stderr}");
 }
 
+/// A technique that declares an effect gets it on a scene that does not
+/// declare it; the world simulates only the effects a scene calls for.
+#[test]
+fn a_technique_that_needs_an_effect_gets_it() {
+    use surfacelab::scene::{Effect, SceneBuilder, ShapeSpec};
+    use surfacelab::session::{Session, SessionOptions};
+    static KIND: OnceLock<TechniqueKind> = OnceLock::new();
+    let jointed = *KIND.get_or_init(|| {
+        register(
+            TechniqueSpec::new("tether_jointed", |config| Box::new(Tether { config, contacts: 0 }))
+                .needs(Effect::Joints),
+        )
+        .expect("registers")
+    });
+    let scene = SceneBuilder::new("plain")
+        .effects(&[Effect::Gravity, Effect::Friction])
+        .object("puck", ShapeSpec::Sphere { radius: 0.02 }, [0.0, 0.0], 0.05, "red")
+        .build()
+        .expect("scene");
+    assert!(!scene.effects.contains(Effect::Joints));
+    let with = Session::new(&scene, jointed, SessionOptions::default()).expect("session");
+    assert!(with.world().effects().contains(Effect::Joints));
+    let without = Session::new(&scene, tether(), SessionOptions::default()).expect("session");
+    assert!(!without.world().effects().contains(Effect::Joints));
+}
+
 #[test]
 fn the_command_line_lists_registered_techniques() {
     let tether = tether();

@@ -70,7 +70,7 @@ impl Drop for RunLock {
     }
 }
 
-/// What the lock file says about its holder ("pid 1234 (surfacelab 0.1.1)").
+/// What the lock file says about its holder ("pid 1234 (surfacelab 0.2.0)").
 fn holder(file: &mut File) -> String {
     let mut text = String::new();
     let _ = file.seek(SeekFrom::Start(0)).and_then(|_| file.take(256).read_to_string(&mut text));

@@ -77,6 +77,12 @@ impl World {
         World::with_effects(scene, scene.effects)
     }
 
+    /// The effects this world simulates: the scene's declaration plus what
+    /// the session's technique needs.
+    pub fn effects(&self) -> EffectSet {
+        self.config.effects
+    }
+
     /// Builds the world with an explicit effect set: the scene's declaration
     /// plus whatever a technique requires, or [`EffectSet::all`] for the
     /// benchmark that measures what ignoring the declaration costs.
