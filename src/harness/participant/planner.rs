@@ -309,6 +309,9 @@ impl Planner {
                 }
             }
             e.regrips += regrips;
+            if e.manner == Manner::BimanualDrag {
+                couple_hands(&mut e.hands, &open, observed);
+            }
         }
         let over = self.episode.as_ref().is_some_and(|e| e.hands.iter().all(|h| h.phase == Phase::Lifted));
         if over && let Some(e) = self.episode.take() {
@@ -596,6 +599,33 @@ fn acting_point(f: &Feedback, near: Vec2) -> Option<Vec2> {
     if pts.is_empty() { None } else { Some(pts.iter().copied().sum::<Vec2>() / pts.len() as f32) }
 }
 
+/// Two hands dragging two objects at once move as one: both start together
+/// and both arrive together, the hand with the shorter way to go slowing to
+/// match the other (Kelso, Southard & Goodman 1979: in simultaneous
+/// two-handed aiming at targets of different difficulty, "the hand moving
+/// to an 'easy' target moves more slowly to accommodate its 'difficult'
+/// counterpart"). Each hand's velocity is scaled by its object's error over
+/// the larger error, so both errors shrink at the same rate. Once one hand
+/// has lifted, the other moves on its own.
+fn couple_hands(hands: &mut [HandCtl], open: &[(ObjectId, Want)], observed: &[Vec2]) {
+    let error = |h: &HandCtl| match h.role {
+        Role::Carry { object } if h.phase == Phase::Down => open
+            .iter()
+            .find(|(i, _)| *i == object)
+            .map(|(_, w)| (w.point - observed[object.index()]).length()),
+        _ => None,
+    };
+    let errors: Vec<Option<f32>> = hands.iter().map(error).collect();
+    let [Some(a), Some(b)] = errors[..] else { return };
+    let longest = a.max(b);
+    if longest <= 0.0 {
+        return;
+    }
+    for (h, e) in hands.iter_mut().zip([a, b]) {
+        h.velocity *= e / longest;
+    }
+}
+
 #[allow(clippy::too_many_arguments)]
 fn carry(
     h: &mut HandCtl,
@@ -696,4 +726,47 @@ fn push(
         return Step::Regrip;
     }
     Step::Going
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn carrying(id: u32, object: usize, velocity: Vec2) -> HandCtl {
+        HandCtl {
+            id,
+            kind: HandKind::Fingertips(1),
+            spread: 0.0,
+            angle: 0.0,
+            pos: Vec2::ZERO,
+            z: 0.0,
+            touch: Vec2::ZERO,
+            centre: Vec2::ZERO,
+            phase: Phase::Down,
+            role: Role::Carry { object: ObjectId::new(object) },
+            velocity,
+            best: f32::MAX,
+            best_at: 0.0,
+        }
+    }
+
+    #[test]
+    fn two_hands_dragging_at_once_arrive_together() {
+        // Object 0 is 10 cm from its goal, object 1 is 30 cm from its own:
+        // the first hand slows to a third, so both errors shrink at one rate.
+        let observed = [Vec2::new(0.1, 0.0), Vec2::new(-0.3, 0.0)];
+        let open = [
+            (ObjectId::new(0), Want { point: Vec2::ZERO, region: 0 }),
+            (ObjectId::new(1), Want { point: Vec2::ZERO, region: 1 }),
+        ];
+        let mut hands = [carrying(1, 0, Vec2::new(-0.3, 0.0)), carrying(2, 1, Vec2::new(0.3, 0.0))];
+        couple_hands(&mut hands, &open, &observed);
+        assert!((hands[0].velocity.x + 0.1).abs() < 1e-6, "{:?}", hands[0].velocity);
+        assert!((hands[1].velocity.x - 0.3).abs() < 1e-6, "{:?}", hands[1].velocity);
+        // One hand lifted: the other moves on its own.
+        hands[1].phase = Phase::Lifted;
+        hands[0].velocity = Vec2::new(-0.3, 0.0);
+        couple_hands(&mut hands, &open, &observed);
+        assert_eq!(hands[0].velocity, Vec2::new(-0.3, 0.0));
+    }
 }
