@@ -4,8 +4,9 @@
 //! Point hit-testing (a ray through the contact's centroid) "may fail ... if
 //! the contact is not compact, as when the user places a large part of
 //! their hand on the surface; the centre point may lie outside the target
-//! object" (Cheng et al.). A flat hand whose centroid missed a ball grabbed
-//! nothing under Joint and put Proxy's body on the table beside it.
+//! object" (Wilson et al. 2008, "Interactive Surface Input"). A flat hand
+//! whose centroid missed a ball grabbed nothing under Joint and put Proxy's
+//! body on the table beside it.
 //!
 //! Both shapes are convex polygons on the table plane as the camera sees
 //! it (the glass): the contact's convex hull, and each object's silhouette,
