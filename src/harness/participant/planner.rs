@@ -609,10 +609,9 @@ fn acting_point(f: &Feedback, near: Vec2) -> Option<Vec2> {
 /// has lifted, the other moves on its own.
 fn couple_hands(hands: &mut [HandCtl], open: &[(ObjectId, Want)], observed: &[Vec2]) {
     let error = |h: &HandCtl| match h.role {
-        Role::Carry { object } if h.phase == Phase::Down => open
-            .iter()
-            .find(|(i, _)| *i == object)
-            .map(|(_, w)| (w.point - observed[object.index()]).length()),
+        Role::Carry { object } if h.phase == Phase::Down => {
+            open.iter().find(|(i, _)| *i == object).map(|(_, w)| (w.point - observed[object.index()]).length())
+        }
         _ => None,
     };
     let errors: Vec<Option<f32>> = hands.iter().map(error).collect();
