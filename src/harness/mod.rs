@@ -12,5 +12,6 @@ pub mod fitts;
 pub mod participant;
 pub mod plot_font;
 pub mod plot_png;
+mod pool;
 pub mod study;
 pub mod tradeoff;

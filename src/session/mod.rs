@@ -10,4 +10,4 @@ mod session;
 
 pub use object_track::ObjectTrack;
 pub use report::{ObjectReport, RunReport, StageMeans};
-pub use session::{Session, SessionError, SessionOptions, StageTimes};
+pub use session::{MOVING_SPEED, Session, SessionError, SessionOptions, StageTimes};

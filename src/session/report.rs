@@ -78,16 +78,11 @@ pub struct Completion {
     pub incomplete: Option<String>,
 }
 
-/// Speed above which an object still counts as moving at the end of a run
-/// (m/s): above a resting body's jitter, below a slow deliberate push.
-const STILL_MOVING: f32 = 0.02;
-
 impl Completion {
     fn of(session: &Session) -> Completion {
         let p = session.progress();
         let scene = session.scene();
-        let moving =
-            session.world().object_poses().iter().filter(|o| o.active && o.linvel.length() > STILL_MOVING).count();
+        let moving = session.objects_moving();
         let incomplete = (!p.complete).then(|| {
             if matches!(scene.goal, Goal::None) {
                 "the scene has no goal (free play)".to_owned()

@@ -14,6 +14,10 @@ use crate::session::goal::{GoalTracker, Progress};
 use crate::session::object_track::ObjectTrack;
 use std::time::Instant;
 
+/// Speed above which an object counts as moving (m/s): well above the
+/// jitter of a resting body (< 1 mm/s), below the slowest deliberate push.
+pub const MOVING_SPEED: f32 = 0.02;
+
 #[derive(Debug, thiserror::Error)]
 pub enum SessionError {
     #[error(transparent)]
@@ -275,6 +279,12 @@ impl Session {
 
     pub fn frame(&self) -> &VisionFrame {
         &self.frame
+    }
+
+    /// Objects moving faster than [`MOVING_SPEED`] now: what a run or a
+    /// trial counts as still in motion.
+    pub fn objects_moving(&self) -> u32 {
+        self.world().object_poses().iter().filter(|p| p.active && p.linvel.length() > MOVING_SPEED).count() as u32
     }
 
     pub fn progress(&self) -> Progress {

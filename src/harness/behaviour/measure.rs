@@ -170,27 +170,6 @@ pub fn run_suite(
     root: &Path,
     jobs: usize,
 ) -> Result<Vec<Measurement>, BehaviourError> {
-    let work: Vec<(usize, &Case, TechniqueKind)> = cases
-        .iter()
-        .flat_map(|c| kinds.iter().map(move |k| (c, *k)))
-        .enumerate()
-        .map(|(i, (c, k))| (i, c, k))
-        .collect();
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let results = std::sync::Mutex::new(Vec::with_capacity(work.len()));
-    std::thread::scope(|scope| {
-        for _ in 0..jobs.clamp(1, work.len().max(1)) {
-            scope.spawn(|| {
-                loop {
-                    let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                    let Some(&(idx, case, kind)) = work.get(i) else { break };
-                    let r = run_case(case, kind, root);
-                    results.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push((idx, r));
-                }
-            });
-        }
-    });
-    let mut results = results.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
-    results.sort_by_key(|(i, _)| *i);
-    results.into_iter().map(|(_, r)| r).collect()
+    let work: Vec<(&Case, TechniqueKind)> = cases.iter().flat_map(|c| kinds.iter().map(move |k| (c, *k))).collect();
+    crate::harness::pool::map_in_order(&work, jobs, |&(case, kind)| run_case(case, kind, root)).into_iter().collect()
 }

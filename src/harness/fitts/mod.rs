@@ -16,7 +16,7 @@ mod fit;
 
 pub use fit::{FittsFit, WE_FACTOR, condition_means, fit, index_of_difficulty, linear_fit, throughput};
 
-use crate::harness::participant::{Learner, Planner, PlannerOptions, Repertoire, Skill, TrialStep, run_trial};
+use crate::harness::participant::{Learner, Manner, Planner, PlannerOptions, Repertoire, Skill, TrialStep, run_trial};
 use crate::harness::study::trial_seed;
 use crate::pipeline::technique::TechniqueKind;
 use crate::scene::{Effect, SceneBuilder, SceneError, ShapeSpec};
@@ -160,24 +160,9 @@ impl FittsDesign {
 pub fn run(design: &FittsDesign, jobs: usize) -> Result<Vec<FittsRow>, FittsError> {
     design.validate()?;
     let participants: Vec<u32> = (1..=design.participants).collect();
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let results = std::sync::Mutex::new(Vec::new());
-    std::thread::scope(|scope| {
-        for _ in 0..jobs.clamp(1, participants.len()) {
-            scope.spawn(|| {
-                loop {
-                    let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                    let Some(&p) = participants.get(i) else { break };
-                    let r = participant_trials(design, p);
-                    results.lock().unwrap_or_else(std::sync::PoisonError::into_inner).push((p, r));
-                }
-            });
-        }
-    });
-    let mut results = results.into_inner().unwrap_or_else(std::sync::PoisonError::into_inner);
-    results.sort_by_key(|(p, _)| *p);
+    let per_participant = crate::harness::pool::map_in_order(&participants, jobs, |&p| participant_trials(design, p));
     let mut rows = Vec::new();
-    for (_, r) in results {
+    for r in per_participant {
         rows.extend(r?);
     }
     Ok(rows)
@@ -229,7 +214,8 @@ fn trial(
     let puck = scene.object_id("puck").ok_or_else(|| FittsError::Design("the puck is missing".into()))?;
     let mut session = Session::new(&scene, technique, SessionOptions::default())?;
     let options = PlannerOptions {
-        repertoire: Repertoire::parse("single-finger").map_err(|e| FittsError::Design(e.to_string()))?,
+        // A drag with one finger: the movement Fitts' law is fitted to.
+        repertoire: Repertoire::only(Manner::Fingertips(1)),
         ..PlannerOptions::default()
     };
     let mut planner = Planner::new(skill, true, seed, Learner::new(skill.habit()), options);

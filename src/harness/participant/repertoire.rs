@@ -64,6 +64,11 @@ impl Repertoire {
     /// Every manner.
     pub const FULL: Repertoire = Repertoire((1 << Manner::ALL.len()) - 1);
 
+    /// Just one manner.
+    pub fn only(m: Manner) -> Repertoire {
+        Repertoire(1 << m.index())
+    }
+
     /// Whether `m` may be used.
     pub fn allows(self, m: Manner) -> bool {
         self.0 & (1 << m.index()) != 0

@@ -9,16 +9,13 @@ use crate::harness::study::TrialResult;
 use crate::pipeline::surface::Hand;
 use crate::pipeline::technique::TechniqueKind;
 use crate::scene::Scene;
+pub use crate::session::MOVING_SPEED;
 use crate::session::{Session, SessionError, SessionOptions};
 
-/// Speed above which an object counts as moving for `objects_moving_max`
-/// (m/s): well above the jitter of a resting body (< 1 mm/s), below the
-/// slowest deliberate push.
-pub const MOVING_SPEED: f32 = 0.02;
-
-/// Objects of the session moving faster than [`MOVING_SPEED`] now.
+/// Objects of the session moving faster than [`MOVING_SPEED`] now (for
+/// `objects_moving_max`).
 pub fn objects_moving(session: &Session) -> u32 {
-    session.world().object_poses().iter().filter(|p| p.active && p.linvel.length() > MOVING_SPEED).count() as u32
+    session.objects_moving()
 }
 
 /// What the input does on one step of a trial: the hands, and how many

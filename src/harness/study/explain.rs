@@ -137,10 +137,11 @@ pub fn explain(finding: &Finding, rows: &[StrategyRow]) -> Option<Explanation> {
         .collect();
     let mut notes = Vec::new();
     if let Rule::Faster { faster, than } = finding.rule {
-        for &a in faster {
-            for &b in than {
-                let (ma, mb) = (mix(rows, task, a, None), mix(rows, task, b, None));
-                notes.extend(compare(a, &ma, b, &mb));
+        // The conditions are `faster` then `than`, in order.
+        let (fast, slow) = conditions.split_at(faster.len());
+        for (&a, (_, ma)) in faster.iter().zip(fast) {
+            for (&b, (_, mb)) in than.iter().zip(slow) {
+                notes.extend(compare(a, ma, b, mb));
             }
         }
     }

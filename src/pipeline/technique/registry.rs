@@ -207,7 +207,7 @@ pub fn register(spec: TechniqueSpec) -> Result<TechniqueKind, RegistryError> {
         return Err(RegistryError::Taken(name));
     }
     let rank = u16::try_from(specs.len()).map_err(|_| RegistryError::Full)?;
-    specs.push(Arc::new(spec));
+    specs.push(Arc::new(with_label(spec)));
     Ok(TechniqueKind::new(rank, name))
 }
 
@@ -225,7 +225,19 @@ fn built_in() -> Vec<Arc<TechniqueSpec>> {
         TechniqueSpec::new("hybrid", |c| Box::new(HybridTechnique::new(c))).label("Hybrid"),
     ];
     debug_assert!(specs.iter().zip(TechniqueKind::BUILT_IN).all(|(s, k)| s.name == k.name()));
-    specs.into_iter().map(Arc::new).collect()
+    specs.into_iter().map(|s| Arc::new(with_label(s))).collect()
+}
+
+/// The spec with its label settled: the one given, else the name with its
+/// first letter upper-case. Made once per registration and kept for the
+/// life of the process, as the registry is.
+fn with_label(mut spec: TechniqueSpec) -> TechniqueSpec {
+    if spec.label.is_none() {
+        let mut chars = spec.name.chars();
+        let label: String = chars.next().map(|c| c.to_ascii_uppercase()).into_iter().chain(chars).collect();
+        spec.label = Some(Box::leak(label.into_boxed_str()));
+    }
+    spec
 }
 
 static REGISTRY: LazyLock<RwLock<Vec<Arc<TechniqueSpec>>>> = LazyLock::new(|| RwLock::new(built_in()));
@@ -246,7 +258,8 @@ pub(super) fn kinds() -> Vec<TechniqueKind> {
 impl TechniqueKind {
     /// The name used on plots and in reports (`Joint`).
     pub fn label(self) -> &'static str {
-        spec(self).label.unwrap_or_else(|| capitalised(self.name()))
+        // Every registered spec has its label settled (`with_label`).
+        spec(self).label.unwrap_or(self.name())
     }
 
     /// Effects this technique needs on top of the scene's declaration.
@@ -269,20 +282,6 @@ impl TechniqueKind {
     pub fn outside_suite(self) -> Option<&'static str> {
         spec(self).outside_suite
     }
-}
-
-/// `magnet` → `Magnet`, leaked once per registered kind (labels live as
-/// long as the registry, which is the process).
-fn capitalised(name: &'static str) -> &'static str {
-    static CACHE: LazyLock<RwLock<Vec<(&'static str, &'static str)>>> = LazyLock::new(RwLock::default);
-    if let Some(&(_, label)) = CACHE.read().unwrap_or_else(PoisonError::into_inner).iter().find(|(n, _)| *n == name) {
-        return label;
-    }
-    let mut chars = name.chars();
-    let label: String = chars.next().map(|c| c.to_ascii_uppercase()).into_iter().chain(chars).collect();
-    let label: &'static str = Box::leak(label.into_boxed_str());
-    CACHE.write().unwrap_or_else(PoisonError::into_inner).push((name, label));
-    label
 }
 
 #[cfg(test)]
