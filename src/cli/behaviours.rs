@@ -16,7 +16,7 @@ pub fn run(args: &BehavioursArgs) -> super::CommandResult {
     let jobs = if args.jobs == 0 { std::thread::available_parallelism().map_or(1, usize::from) } else { args.jobs };
     let t0 = Instant::now();
     let outcomes = run_suite(&chosen, &kinds, std::path::Path::new("."), jobs)?;
-    print!("{}", markdown(&chosen, &kinds, &outcomes));
+    out!("{}", markdown(&chosen, &kinds, &outcomes))?;
     let all_cells: Vec<_> = chosen
         .iter()
         .flat_map(|c| outcomes.iter().filter(move |o| o.case == c.name).flat_map(move |o| cells(c, o)))

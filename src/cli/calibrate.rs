@@ -63,7 +63,7 @@ pub fn run(args: &CalibrateArgs) -> super::CommandResult {
     };
     let origin = format!("{} (from the flags)", args.out.display());
     let calibration = Calibration::new(conversion, [frame.width, frame.height], image_points, table_points, &origin)?;
-    crate::files::write_atomic(&args.out, calibration.to_toml().as_bytes())
+    crate::files::write_output(&args.out, calibration.to_toml().as_bytes())
         .map_err(|source| ImagesError::Write { path: args.out.display().to_string(), source })?;
     // What was written must read back, frames and all.
     Calibration::load(&args.out)?;

@@ -5,17 +5,17 @@ use crate::contact;
 use std::io::Read;
 use std::process::ExitCode;
 
-pub fn run(args: &ContactArgs) -> ExitCode {
+pub fn run(args: &ContactArgs) -> super::CommandResult {
     let input = if args.input == "-" {
         let cap = crate::scene::bounds::MAX_INPUT_BYTES;
         let mut s = String::new();
         if let Err(e) = std::io::stdin().take(cap + 1).read_to_string(&mut s) {
             eprintln!("surfacelab contact: cannot read standard input: {e}");
-            return ExitCode::from(EXIT_USAGE);
+            return Ok(ExitCode::from(EXIT_USAGE));
         }
         if s.len() as u64 > cap {
             eprintln!("surfacelab contact: standard input is larger than the {} MiB an input may have", cap >> 20);
-            return ExitCode::from(EXIT_USAGE);
+            return Ok(ExitCode::from(EXIT_USAGE));
         }
         s
     } else {
@@ -23,18 +23,18 @@ pub fn run(args: &ContactArgs) -> ExitCode {
             Ok(s) => s,
             Err(e) => {
                 eprintln!("surfacelab contact: cannot read {}: {e}", args.input);
-                return ExitCode::from(EXIT_USAGE);
+                return Ok(ExitCode::from(EXIT_USAGE));
             }
         }
     };
     match contact::answer_json(&input, args.concave) {
         Ok(line) => {
-            println!("{line}");
-            ExitCode::SUCCESS
+            outln!("{line}")?;
+            Ok(ExitCode::SUCCESS)
         }
         Err(e) => {
             eprintln!("surfacelab contact: {e}");
-            ExitCode::from(EXIT_USAGE)
+            Ok(ExitCode::from(EXIT_USAGE))
         }
     }
 }

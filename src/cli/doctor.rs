@@ -8,8 +8,8 @@ pub fn has_display() -> bool {
     super::display::probe().is_live()
 }
 
-pub fn run() -> ExitCode {
-    println!("surfacelab {}", env!("CARGO_PKG_VERSION"));
+pub fn run() -> super::CommandResult {
+    outln!("surfacelab {}", env!("CARGO_PKG_VERSION"))?;
     let display = match super::display::probe() {
         Display::Live(what) => format!("yes ({what})"),
         Display::Dead(why) => format!("none ({why}): the demo needs one; run, study, screenshot and tradeoff do not"),
@@ -18,17 +18,17 @@ pub fn run() -> ExitCode {
                 .to_string()
         }
     };
-    println!("display: {display}");
+    outln!("display: {display}")?;
     match crate::render::gpu::probe_adapter() {
         Ok(a) => {
-            println!("adapter: {}", a.name);
-            println!("backend: {:?}", a.backend);
-            println!("device type: {:?}", a.device_type);
-            ExitCode::SUCCESS
+            outln!("adapter: {}", a.name)?;
+            outln!("backend: {:?}", a.backend)?;
+            outln!("device type: {:?}", a.device_type)?;
+            Ok(ExitCode::SUCCESS)
         }
         Err(e) => {
             eprintln!("adapter: none\nsurfacelab doctor: {e}");
-            ExitCode::FAILURE
+            Ok(ExitCode::FAILURE)
         }
     }
 }

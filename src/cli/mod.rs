@@ -2,6 +2,24 @@
 //! arguments are parsed once into a validated struct; the work lives in the
 //! library modules, this layer only wires them together.
 
+/// `print!` for a command's results: a write that fails (EPIPE once the
+/// reader of a pipe has gone, ENOSPC) is a run-time [`Failure`] naming
+/// standard output, returned with `?`, where `print!` would panic.
+macro_rules! out {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        write!(std::io::stdout().lock(), $($arg)*).map_err($crate::cli::stdout_failure)
+    }};
+}
+
+/// `println!` for a command's results; see [`out!`].
+macro_rules! outln {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        writeln!(std::io::stdout().lock(), $($arg)*).map_err($crate::cli::stdout_failure)
+    }};
+}
+
 mod behaviours;
 mod calibrate;
 mod contact;
@@ -24,6 +42,11 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 pub use failure::{CommandResult, EXIT_USAGE, Failure};
+
+/// A failed write to standard output, as the run-time failure it is.
+fn stdout_failure(e: std::io::Error) -> Failure {
+    Failure::from(anyhow::Error::new(e).context("writing standard output"))
+}
 
 /// Tabletop physics on a (synthetic) vision-based surface, with a study harness.
 #[derive(Debug, Parser)]
@@ -622,13 +645,13 @@ fn init_tracing() {
 
 fn run(command: Command) -> CommandResult {
     match command {
-        Command::Doctor => Ok(doctor::run()),
+        Command::Doctor => doctor::run(),
         Command::Participants(args) => participants::run(&args),
         Command::Demo(args) => demo::run(&args),
         Command::Run(args) => run::run(&args),
         Command::Study(args) => study::run(&args),
         Command::Screenshot(args) => screenshot::run(&args),
-        Command::Contact(args) => Ok(contact::run(&args)),
+        Command::Contact(args) => contact::run(&args),
         Command::Tradeoff(args) => tradeoff::run(&args),
         Command::Behaviours(args) => behaviours::run(&args),
         Command::Calibrate(args) => calibrate::run(&args),

@@ -33,17 +33,17 @@ fn run_fitts(args: &FittsArgs) -> super::CommandResult {
         return Ok(ExitCode::FAILURE);
     };
     fitts::write(&args.out, &rows, &fit)?;
-    println!(
+    outln!(
         "surfacelab participants fitts: {} drags under {} ({} completed) in {:.1} s",
         fit.trials,
         args.technique.label(),
         fit.completed,
         t0.elapsed().as_secs_f64()
-    );
-    println!(
+    )?;
+    outln!(
         "  MT = {:.3} + {:.3} ID s (R² = {:.3} over {} conditions); throughput {:.2} bits/s (ISO 9241-9, effective width)",
         fit.a_s, fit.b_s_per_bit, fit.r2, fit.conditions, fit.throughput_bits_s
-    );
-    println!("  files in {}: fitts.csv, fitts.json, fitts.png", args.out.display());
+    )?;
+    outln!("  files in {}: fitts.csv, fitts.json, fitts.png", args.out.display())?;
     Ok(ExitCode::SUCCESS)
 }

@@ -15,7 +15,7 @@ use std::time::{Duration, Instant};
 
 pub fn run(args: &RunArgs) -> super::CommandResult {
     if args.list {
-        print!("{}", listing());
+        out!("{}", listing())?;
         return Ok(std::process::ExitCode::SUCCESS);
     }
     // clap requires both unless --list is given.
@@ -59,7 +59,7 @@ fn write_report(report: &RunReport, path: Option<&std::path::Path>) -> super::Co
     match path {
         Some(path) => {
             // Atomic: a full disk leaves the earlier report whole, not truncated.
-            crate::files::write_atomic(path, (json + "\n").as_bytes())
+            crate::files::write_output(path, (json + "\n").as_bytes())
                 .with_context(|| format!("writing report {}", path.display()))?;
             let why = report.completion.incomplete.as_deref().map_or_else(String::new, |w| format!(" ({w})"));
             eprintln!(
@@ -71,7 +71,7 @@ fn write_report(report: &RunReport, path: Option<&std::path::Path>) -> super::Co
                 path.display()
             );
         }
-        None => println!("{json}"),
+        None => outln!("{json}")?,
     }
     Ok(ExitCode::SUCCESS)
 }

@@ -15,7 +15,7 @@ use std::process::ExitCode;
 pub fn run(args: &StudyArgs) -> super::CommandResult {
     if let Some(StudyAction::Merge { out, dirs }) = &args.action {
         let m = study::merge(out, dirs)?;
-        println!("surfacelab study merge: {m:?}");
+        outln!("surfacelab study merge: {m:?}")?;
         return Ok(ExitCode::SUCCESS);
     }
     if let Some(StudyAction::Findings { dir }) = &args.action {
@@ -70,13 +70,13 @@ pub fn run(args: &StudyArgs) -> super::CommandResult {
             outcome.dropped_bytes
         );
     }
-    print_outcome(&outcome, cpu_since(cpu_before));
+    print_outcome(&outcome, cpu_since(cpu_before))?;
     if outcome.reported {
-        println!(
+        outln!(
             "  trials.csv, summary.csv, anova.csv, pairwise.csv, strategies.csv, figure.png, figure.svg, report.md, report.html, run.toml"
-        );
+        )?;
     } else {
-        println!("  trials.csv, run.toml (the rest once every trial of an unsharded run has a row)");
+        outln!("  trials.csv, run.toml (the rest once every trial of an unsharded run has a row)")?;
     }
     Ok(ExitCode::SUCCESS)
 }
@@ -85,11 +85,11 @@ pub fn run(args: &StudyArgs) -> super::CommandResult {
 /// and over CPU time ("per core": the speed goal is >= 100x per core).
 /// `cpu_s` is the process's CPU seconds spent on the run; without it (no
 /// `/proc`), wall time × workers stands in, which under load undercounts.
-fn print_outcome(outcome: &study::RunOutcome, cpu_s: Option<f64>) {
+fn print_outcome(outcome: &study::RunOutcome, cpu_s: Option<f64>) -> Result<(), super::Failure> {
     let wall = outcome.elapsed.as_secs_f64();
     let per = |s: f64| if s > 0.0 { outcome.simulated_s / s } else { 0.0 };
     let cpu = cpu_s.unwrap_or(wall * outcome.jobs.max(1) as f64);
-    println!(
+    outln!(
         "surfacelab study: {} trials ({} already done, {} run, {} failed: {} at the time limit, {} runner errors) in {:.1} s; \
          {:.0} s simulated, {:.0}x real time, {:.0}x per core ({:.1} s CPU, {} workers); files in {}",
         outcome.trials,
@@ -105,7 +105,7 @@ fn print_outcome(outcome: &study::RunOutcome, cpu_s: Option<f64>) {
         cpu,
         outcome.jobs,
         outcome.dir.display()
-    );
+    )
 }
 
 /// CPU seconds (user + system, all threads) this process has used so far,
@@ -133,7 +133,7 @@ fn run_seeds(args: &StudyArgs, n: u32, options: &RunOptions) -> super::CommandRe
         eprintln!("note: {note}");
     }
     seeds_into(args, &base, &args.out, n, options)?;
-    println!("  files in {}: findings.csv, seeds.png, seed-1 .. seed-{n}", args.out.display());
+    outln!("  files in {}: findings.csv, seeds.png, seed-1 .. seed-{n}", args.out.display())?;
     Ok(ExitCode::SUCCESS)
 }
 
@@ -153,14 +153,14 @@ fn seeds_into(
         let runner = runner_for(args, design.clone(), &dir)?;
         let cpu_before = process_cpu_s();
         let outcome = study::run_study(&design, &dir, runner.as_ref(), options)?;
-        print!("seed {k}/{n} (study seed {}): ", design.seed);
-        print_outcome(&outcome, cpu_since(cpu_before));
+        out!("seed {k}/{n} (study seed {}): ", design.seed)?;
+        print_outcome(&outcome, cpu_since(cpu_before))?;
         dirs.push(dir);
     }
     let rows = study::seeds::summarize_seeds(out, &dirs)?;
-    println!("findings over {n} seeds (reproduced / seeds that could test it, share, Wilson 95% interval):");
+    outln!("findings over {n} seeds (reproduced / seeds that could test it, share, Wilson 95% interval):")?;
     for r in &rows {
-        println!("  {:32} {}", r.finding, share_text(r));
+        outln!("  {:32} {}", r.finding, share_text(r))?;
     }
     Ok(rows)
 }
@@ -194,16 +194,16 @@ fn run_ablation(args: &StudyArgs, options: &RunOptions) -> super::CommandResult 
         let mut design = base.clone();
         design.settings.manners = manners;
         let out = args.out.join(&label);
-        println!("repertoire {label}:");
+        outln!("repertoire {label}:")?;
         let findings = seeds_into(args, &design, &out, n, options)?;
         done.push(study::ablation::Arm { repertoire: label, findings });
     }
     study::ablation::write_ablation(&args.out, &done)?;
-    println!(
+    outln!(
         "  files in {}: ablation.csv, ablation.md, and a folder per repertoire ({})",
         args.out.display(),
         done.iter().map(|a| a.repertoire.as_str()).collect::<Vec<_>>().join(", ")
-    );
+    )?;
     Ok(ExitCode::SUCCESS)
 }
 
@@ -223,11 +223,11 @@ fn findings(dir: &std::path::Path) -> super::CommandResult {
         return Err(study::StudyError::mismatch(dir, "no seed-1/run.toml: not a `study --seeds` folder").into());
     }
     let rows = study::seeds::summarize_seeds(dir, &dirs)?;
-    println!("findings over {} seeds (reproduced / seeds that could test it):", dirs.len());
+    outln!("findings over {} seeds (reproduced / seeds that could test it):", dirs.len())?;
     for r in &rows {
-        println!("  {:32} {}/{}", r.finding, r.reproduced, r.seeds);
+        outln!("  {:32} {}/{}", r.finding, r.reproduced, r.seeds)?;
     }
-    println!("  files in {}: findings.csv, seeds.png", dir.display());
+    outln!("  files in {}: findings.csv, seeds.png", dir.display())?;
     Ok(ExitCode::SUCCESS)
 }
 
@@ -259,32 +259,32 @@ fn run_slurm(args: &StudyArgs, shards: u32) -> super::CommandResult {
     };
     slurm::prepare(&job, &design).map_err(|e| Failure::from(e).context(format!("--out {}", args.out.display())))?;
     let (array, merge) = (job.array_script_path(), job.merge_script_path());
-    println!(
+    outln!(
         "surfacelab study: {} array tasks ({} shard{} per study{}) and a merge job written:",
         job.tasks(),
         shards,
         if shards == 1 { "" } else { "s" },
         args.seeds.map_or_else(String::new, |s| format!(", {s} studies"))
-    );
-    println!("  {}\n  {}", array.display(), merge.display());
+    )?;
+    outln!("  {}\n  {}", array.display(), merge.display())?;
     if args.submit {
         let ids = slurm::submit(&job)?;
-        println!(
+        outln!(
             "submitted: array job {} ({} tasks), merge job {} (afterok:{})",
             ids.array,
             job.tasks(),
             ids.merge,
             ids.array
-        );
-        println!(
+        )?;
+        outln!(
             "  watch: squeue -j {},{}   failed tasks: sacct -X -j {} --format=JobID,State,ExitCode",
             ids.array, ids.merge, ids.array
-        );
+        )?;
     } else {
         let q = |p: &std::path::Path| slurm::shell_quote(p).unwrap_or_else(|_| p.display().to_string());
-        println!("submit with:");
-        println!("  array=$(sbatch --parsable {})", q(&array));
-        println!("  sbatch --dependency=afterok:${{array%%;*}} {}", q(&merge));
+        outln!("submit with:")?;
+        outln!("  array=$(sbatch --parsable {})", q(&array))?;
+        outln!("  sbatch --dependency=afterok:${{array%%;*}} {}", q(&merge))?;
     }
     Ok(ExitCode::SUCCESS)
 }

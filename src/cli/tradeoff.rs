@@ -14,12 +14,12 @@ pub fn run(args: &TradeoffArgs) -> super::CommandResult {
     })?;
     let off: Vec<String> =
         rows.iter().filter(|r| r.default && !r.on_front).map(|r| format!("{}={}", r.knob, r.value)).collect();
-    println!(
+    outln!(
         "surfacelab tradeoff: {} settings in {:.0} s; defaults off their Pareto front: {}; files in {} (tradeoff.csv, tradeoff.md, one PNG per knob)",
         rows.len(),
         t0.elapsed().as_secs_f64(),
         if off.is_empty() { "none".to_string() } else { off.join(", ") },
         args.out.display()
-    );
+    )?;
     Ok(ExitCode::SUCCESS)
 }

@@ -365,7 +365,7 @@ impl Gesture {
     /// Writes the gesture: version 1 without contours, 2 with (module doc).
     pub fn save(&self, path: impl AsRef<Path>) -> Result<(), GestureError> {
         let path = path.as_ref();
-        crate::files::write_atomic(path, self.to_string().as_bytes())
+        crate::files::write_output(path, self.to_string().as_bytes())
             .map_err(|source| GestureError::Write { origin: path.display().to_string(), source })
     }
 

@@ -174,7 +174,7 @@ pub fn save_png(image: &RgbaImage, path: impl AsRef<Path>) -> Result<(), RenderE
     let mut png = std::io::Cursor::new(Vec::new());
     image.write_to(&mut png, image::ImageFormat::Png).map_err(error)?;
     // Atomic: a full disk leaves no 0-byte PNG and no temporary file.
-    crate::files::write_atomic(path, png.get_ref()).map_err(|e| error(image::ImageError::IoError(e)))
+    crate::files::write_output(path, png.get_ref()).map_err(|e| error(image::ImageError::IoError(e)))
 }
 
 #[cfg(test)]

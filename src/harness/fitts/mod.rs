@@ -282,7 +282,7 @@ pub fn write(dir: &std::path::Path, rows: &[FittsRow], fit: &FittsFit) -> anyhow
     let csv = w.into_inner().map_err(|e| anyhow::anyhow!("{}", e.error()))?;
     let write = |name: &str, bytes: &[u8]| {
         let path = dir.join(name);
-        crate::files::write_atomic(&path, bytes).with_context(|| format!("writing {}", path.display()))
+        crate::files::write_output(&path, bytes).with_context(|| format!("writing {}", path.display()))
     };
     write("fitts.csv", &csv)?;
     write("fitts.json", (serde_json::to_string_pretty(fit)? + "\n").as_bytes())?;

@@ -387,9 +387,10 @@ pub fn log_error(dir: &Path, line: &str) -> Result<(), StudyError> {
     writeln!(f, "{line}").map_err(StudyError::io(&path))
 }
 
-/// Temporary file beside `path`, fsync, rename: readers see the old file or
-/// the new one, never half of one.
-/// (`files::write_atomic`; a failure leaves no temporary file.)
+/// A regular file (or a symlink's target) by temporary file beside it,
+/// fsync, rename, so readers see the old file or the new one, never half of
+/// one; a FIFO or device straight through (`files::write_output`; a
+/// failure leaves no temporary file).
 pub(crate) fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), StudyError> {
-    crate::files::write_atomic(path, bytes).map_err(StudyError::io(path))
+    crate::files::write_output(path, bytes).map_err(StudyError::io(path))
 }

@@ -55,7 +55,7 @@ pub fn run_tradeoff(options: &TradeoffOptions) -> anyhow::Result<Vec<Row>> {
         let of: Vec<&Row> = rows.iter().filter(|r| r.knob == knob).collect();
         plot(&options.out.join(format!("{knob}.png")), &knob, &of)?;
     }
-    crate::files::write_atomic(&options.out.join("tradeoff.md"), summary(&rows).as_bytes())
+    crate::files::write_output(&options.out.join("tradeoff.md"), summary(&rows).as_bytes())
         .context("writing tradeoff.md")?;
     Ok(rows)
 }
@@ -103,7 +103,7 @@ fn write_csv(path: &Path, rows: &[Row]) -> anyhow::Result<()> {
         w.serialize(r)?;
     }
     let bytes = w.into_inner().map_err(|e| anyhow::anyhow!("{}", e.error()))?;
-    crate::files::write_atomic(path, &bytes).with_context(|| format!("writing {}", path.display()))
+    crate::files::write_output(path, &bytes).with_context(|| format!("writing {}", path.display()))
 }
 
 /// The Markdown table of docs/performance.md: what each knob costs and buys.
@@ -139,7 +139,7 @@ fn plot(path: &Path, knob: &str, rows: &[&Row]) -> anyhow::Result<()> {
     anyhow::ensure!(ensure_font(), "the bundled plot font did not load");
     let png = crate::harness::plot_png::png_bytes((900, 640), |area| draw(area, knob, rows))
         .map_err(|m| anyhow::anyhow!("plotting {}: {m}", path.display()))?;
-    crate::files::write_atomic(path, &png).with_context(|| format!("writing {}", path.display()))
+    crate::files::write_output(path, &png).with_context(|| format!("writing {}", path.display()))
 }
 
 fn draw<DB: DrawingBackend>(area: &DrawingArea<DB, Shift>, knob: &str, rows: &[&Row]) -> Result<(), String> {

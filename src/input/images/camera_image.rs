@@ -113,7 +113,7 @@ impl CameraImage {
     /// Writes the PNG atomically (a reader never sees half a frame).
     pub fn write(&self, path: &Path) -> Result<(), ImagesError> {
         let bytes = self.to_png(path)?;
-        crate::files::write_atomic(path, &bytes)
+        crate::files::write_output(path, &bytes)
             .map_err(|source| ImagesError::Write { path: path.display().to_string(), source })
     }
 }

@@ -196,7 +196,7 @@ pub fn write_sequence(
     }
     // Last, so a folder with a calibration is a whole sequence.
     let path = out.join("calibration.toml");
-    crate::files::write_atomic(&path, synth.calibration.to_toml().as_bytes())
+    crate::files::write_output(&path, synth.calibration.to_toml().as_bytes())
         .map_err(|source| ImagesError::Write { path: path.display().to_string(), source })?;
     Ok(Written { frames: n as usize, duration_s: n.saturating_sub(1) as f64 * dt })
 }
