@@ -110,7 +110,7 @@ fn an_unknown_key_is_named_with_its_line() {
 #[test]
 fn a_wrong_type_is_named_with_its_line() {
     let e = error(&with(OBJECTS, "radius = 0.03", "radius = \"big\""));
-    assert!(e.starts_with("bad.toml:15: invalid type: string \"big\", expected f32"), "{e}");
+    assert!(e.starts_with("bad.toml:15: field `objects[1].radius`: invalid type: string \"big\", expected f32"), "{e}");
 }
 
 #[test]
@@ -149,12 +149,16 @@ fn a_missing_field_a_goal_needs_is_named() {
     assert_names(&e, Some(13), "goal.object", "this goal needs `goal.object`");
     let e = error(&with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", ""));
     assert_names(&e, Some(19), "goal.targets", "at least one [[goal.targets]]");
-    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"sorting\""));
+    let no_targets = with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", "");
+    let e = error(&with(&no_targets, "kind = \"positioning\"", "kind = \"sorting\""));
     assert_names(&e, Some(19), "goal.zones", "at least one [[goal.zones]]");
-    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"gather\""));
+    let e = error(&with(&no_targets, "kind = \"positioning\"", "kind = \"gather\""));
     assert_names(&e, Some(19), "goal.center", "a gather goal needs `center`");
-    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"region\""));
+    let e = error(&with(&no_targets, "kind = \"positioning\"", "kind = \"region\""));
     assert_names(&e, Some(19), "goal.min", "a region goal needs `min`");
+    // The positioning goal's targets under another kind are not dropped.
+    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"sorting\""));
+    assert_names(&e, Some(19), "goal.targets", "a sorting goal has no `targets`");
     let e = error(&with(SOFT, "body = \"paper\"\n", ""));
     assert_names(&e, Some(14), "goal.body", "this goal needs `body`");
 }
@@ -431,4 +435,51 @@ fn a_bad_value_in_a_table_is_named_at_its_own_line() {
     assert_names(&e, Some(22), "goal.targets[0].object", "no object named `nobody`");
     let e = error(&with(OBJECTS, "mass = 1.0", "mass = -1.0"));
     assert_names(&e, Some(9), "objects[0].mass", "");
+}
+
+/// The region goal the silent-acceptance checks break: a 10 cm cube `a`
+/// kept in a 20 cm square, centre at most 6 cm up (lines 19–24).
+fn region(extra: &str) -> String {
+    with(
+        OBJECTS,
+        "kind = \"positioning\"\n[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n",
+        &format!("kind = \"region\"\nobject = \"a\"\nmin = [0.1, 0.1]\nmax = [0.3, 0.3]\nmax_height = 0.06\n{extra}"),
+    )
+}
+
+/// What a reader would take and quietly drop or clamp, and goals that can
+/// never be met, are errors naming file, line and field.
+#[test]
+fn nothing_is_accepted_silently() {
+    scene::parse(&region(""), "good.toml").unwrap_or_else(|e| panic!("the region scene loads: {e}"));
+    // A fixed-length array with extra or missing numbers.
+    let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1.0, 0.75, 0.3]"));
+    assert_names(&e, Some(4), "table.size", "expected an array of 2 values, found 3");
+    let e = error(&with(OBJECTS, "size = [0.1, 0.1, 0.1]", "size = [0.1, 0.1]"));
+    assert_names(&e, Some(8), "objects[0].size", "expected an array of 3 values, found 2");
+    let e = error(&with(OBJECTS, "position = [0.2, 0.1]", "position = [0.2, 0.1, 0.0]"));
+    assert_names(&e, Some(23), "goal.targets[0].position", "found 3");
+    // Empty names, and rows of no objects.
+    let e = error(&with(OBJECTS, "name = \"a\"", "name = \"\""));
+    assert_names(&e, Some(6), "objects[0].name", "must not be empty");
+    let e = error(&with(OBJECTS, "name = \"t\"", "name = \"  \""));
+    assert_names(&e, Some(1), "name", "must not be empty");
+    let e = error(&with(OBJECTS, "position = [0.2, 0.0]", "position = [0.2, 0.0]\ncount = 3\nstep = [0.05, 0.0]\nper_row = 0"));
+    assert_names(&e, Some(21), "objects[1].per_row", "0 is out of range (1..=3)");
+    // Goals that can never be met.
+    let e = error(&region("").replace("max_height = 0.06", "max_height = 0"));
+    assert_names(&e, Some(24), "goal.max_height", "0 must be greater than 0");
+    let e = error(&region("").replace("max_height = 0.06", "max_height = 0.04"));
+    assert_names(&e, Some(24), "goal.max_height", "below the lowest the centre of `a` can rest (0.050 m)");
+    let e = error(&region("").replace("max = [0.3, 0.3]", "max = [0.18, 0.3]"));
+    assert_names(&e, Some(23), "goal.max", "the region is 0.080 m across at its narrowest");
+    let e = error(&region("").replace("max = [0.3, 0.3]", "max = [0.05, 0.3]"));
+    assert_names(&e, Some(23), "goal.max", "must be above `min` on both axes");
+    let e = error(&format!("time_limit_s = 5\n{}", region("dwell_s = 5\n")));
+    assert_names(&e, Some(26), "goal.dwell_s", "5 s of holding still is not less than the 5 s time limit");
+    // A key of another kind of goal.
+    let e = error(&region("waypoints = [[0.0, 0.0]]\n"));
+    assert_names(&e, Some(25), "goal.waypoints", "a region goal has no `waypoints`");
+    let e = error(&with(STEER, "finish = [-0.3, -0.2]", "finish = [-0.3, -0.2]\ndwell_s = 1"));
+    assert_names(&e, Some(18), "goal.dwell_s", "a steering goal has no `dwell_s`");
 }

@@ -53,12 +53,56 @@ impl<'a> FieldReader<'a> {
                 .filter(|s| !s.is_empty())
                 .map(|s| format!(" (at `{s}`)"))
                 .unwrap_or_default();
+            let field = e.span().and_then(|s| self.field_at(s.start)).map(|f| format!("field `{f}`: ")).unwrap_or_default();
             FieldError::Syntax {
                 origin: self.origin.to_owned(),
                 line,
-                message: format!("{}{quoted}", e.message().trim_end()),
+                message: format!("{field}{}{quoted}", e.message().trim_end()),
             }
         })
+    }
+
+    /// The field whose value starts at byte `offset`, as the scene checks
+    /// name fields (`table.size`, `objects[2].step`, `hands[0].keys[3].pos`):
+    /// the key written before `=` on that line, under the table headers
+    /// above it, each `[[array]]` header counted. `None` when the line has
+    /// no `KEY =` before the offset (the error is not about one value).
+    pub fn field_at(&self, offset: usize) -> Option<String> {
+        let offset = offset.min(self.text.len());
+        let line_start = self.text[..offset].rfind('\n').map_or(0, |i| i + 1);
+        let (key, _) = self.text[line_start..offset].split_once('=')?;
+        let key = key.trim();
+        if key.is_empty() || key.starts_with('[') || key.contains(['"', '\'', ' ']) {
+            return None;
+        }
+        // Each array-of-tables seen so far, with how many entries it has.
+        let mut counts: Vec<(String, usize)> = Vec::new();
+        let mut table = String::new();
+        for line in self.text[..line_start].lines() {
+            let t = line.trim();
+            if let Some(name) = t.strip_prefix("[[").and_then(|r| r.split_once("]]")).map(|(n, _)| n.trim()) {
+                // A new entry of `name` starts every array nested in it afresh.
+                counts.retain(|(n, _)| !n.starts_with(&format!("{name}.")));
+                match counts.iter_mut().find(|(n, _)| n == name) {
+                    Some((_, c)) => *c += 1,
+                    None => counts.push((name.to_owned(), 1)),
+                }
+                table = name.to_owned();
+            } else if let Some(name) = t.strip_prefix('[').and_then(|r| r.split_once(']')).map(|(n, _)| n.trim()) {
+                table = name.to_owned();
+            }
+        }
+        let mut path = Vec::new();
+        let mut prefix = String::new();
+        for part in table.split('.').filter(|p| !p.is_empty()) {
+            prefix = if prefix.is_empty() { part.to_owned() } else { format!("{prefix}.{part}") };
+            match counts.iter().find(|(n, _)| *n == prefix) {
+                Some((_, c)) => path.push(format!("{part}[{}]", c - 1)),
+                None => path.push(part.to_owned()),
+            }
+        }
+        path.push(key.to_owned());
+        Some(path.join("."))
     }
 
     /// The 1-based line of a byte offset.
@@ -176,6 +220,19 @@ mod tests {
     use super::*;
 
     const TEXT: &str = "a = 1\nb = 2.5\n";
+
+    #[test]
+    fn a_value_is_named_by_its_key_under_the_headers_above_it() {
+        let text = "name = \"x\"\n[table]\nsize = [1, 2]\n[[hands]]\nid = 1\n[[hands.keys]]\nt = 0\n\
+                    [[hands.keys]]\npos = [0, 0]\n[[hands]]\nid = 2\n[[hands.keys]]\npos = [1, 1]\n";
+        let r = FieldReader::new(text, "f.toml");
+        let at = |needle: &str, nth: usize| text.match_indices(needle).nth(nth).expect(needle).0 + needle.len();
+        assert_eq!(r.field_at(at("name = ", 0)).as_deref(), Some("name"));
+        assert_eq!(r.field_at(at("size = ", 0)).as_deref(), Some("table.size"));
+        assert_eq!(r.field_at(at("pos = ", 0)).as_deref(), Some("hands[0].keys[1].pos"));
+        assert_eq!(r.field_at(at("pos = ", 1)).as_deref(), Some("hands[1].keys[0].pos"));
+        assert_eq!(r.field_at(text.find("[table]").expect("header")), None, "no key before a header");
+    }
 
     #[test]
     fn errors_name_file_line_and_field() {

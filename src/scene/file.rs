@@ -38,6 +38,7 @@ pub struct SceneFile {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TableFile {
+    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
     pub size: [f32; 2],
     #[serde(default)]
     pub friction: Option<f32>,
@@ -100,7 +101,7 @@ pub struct ObjectFile {
     pub name: String,
     pub shape: ShapeKind,
     /// Box: full extents [x, y, z].
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
     pub size: Option<[f32; 3]>,
     /// Sphere, cylinder, capsule.
     #[serde(default)]
@@ -118,7 +119,7 @@ pub struct ObjectFile {
     /// [x, y] (resting on the table) or [x, y, z] (centre).
     pub position: Vec<f32>,
     /// Euler angles XYZ in degrees.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
     pub rotation_deg: Option<[f32; 3]>,
     #[serde(default)]
     pub body: Option<BodyKindFile>,
@@ -131,12 +132,12 @@ pub struct ObjectFile {
     /// many small objects): object i sits at position + i·step.
     #[serde(default)]
     pub count: Option<u32>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
     pub step: Option<[f32; 2]>,
     /// Wrap the row every `per_row` objects, moving by `row_step`.
     #[serde(default)]
     pub per_row: Option<u32>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
     pub row_step: Option<[f32; 2]>,
 }
 
@@ -187,6 +188,7 @@ pub struct SoftBodyFile {
 #[serde(deny_unknown_fields)]
 pub struct TargetFile {
     pub object: String,
+    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
     pub position: [f32; 2],
     #[serde(default)]
     pub tolerance: Option<f32>,
@@ -196,7 +198,9 @@ pub struct TargetFile {
 #[serde(deny_unknown_fields)]
 pub struct ZoneFile {
     pub color: String,
+    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
     pub min: [f32; 2],
+    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
     pub max: [f32; 2],
 }
 
@@ -211,6 +215,38 @@ pub enum GoalKind {
     Region,
     ClothFlat,
     Torn,
+}
+
+impl GoalKind {
+    /// The name as written in a scene file.
+    pub fn name(self) -> &'static str {
+        match self {
+            GoalKind::None => "none",
+            GoalKind::Positioning => "positioning",
+            GoalKind::Sorting => "sorting",
+            GoalKind::Steering => "steering",
+            GoalKind::Gather => "gather",
+            GoalKind::Region => "region",
+            GoalKind::ClothFlat => "cloth_flat",
+            GoalKind::Torn => "torn",
+        }
+    }
+
+    /// The keys a goal of this kind reads besides `kind`. One `[goal]`
+    /// table serves every kind, so serde alone would take a steering key in
+    /// a region goal and ignore it; the scene check refuses it by this list.
+    pub fn keys(self) -> &'static [&'static str] {
+        match self {
+            GoalKind::None => &[],
+            GoalKind::Positioning => &["dwell_s", "targets"],
+            GoalKind::Sorting => &["dwell_s", "zones"],
+            GoalKind::Steering => &["object", "platform", "waypoints", "waypoint_radius", "finish", "finish_radius"],
+            GoalKind::Gather => &["dwell_s", "center", "radius", "fraction"],
+            GoalKind::Region => &["dwell_s", "object", "min", "max", "max_height"],
+            GoalKind::ClothFlat => &["dwell_s", "body", "min_area_fraction"],
+            GoalKind::Torn => &["body", "pieces", "min_piece_fraction"],
+        }
+    }
 }
 
 #[derive(Debug, Deserialize)]
@@ -229,24 +265,24 @@ pub struct GoalFile {
     pub object: Option<String>,
     #[serde(default)]
     pub platform: Option<String>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
     pub waypoints: Vec<[f32; 2]>,
     #[serde(default)]
     pub waypoint_radius: Option<f32>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
     pub finish: Option<[f32; 2]>,
     #[serde(default)]
     pub finish_radius: Option<f32>,
     // gather / region
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
     pub center: Option<[f32; 2]>,
     #[serde(default)]
     pub radius: Option<f32>,
     #[serde(default)]
     pub fraction: Option<f32>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
     pub min: Option<[f32; 2]>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
     pub max: Option<[f32; 2]>,
     /// region: the object's centre at most this high (m), so resting on top
     /// of the cavity does not count as inside it.
@@ -261,4 +297,33 @@ pub struct GoalFile {
     pub pieces: Option<u32>,
     #[serde(default)]
     pub min_piece_fraction: Option<f32>,
+}
+
+impl GoalFile {
+    /// The keys written in this `[goal]` table besides `kind`, in the
+    /// struct's order.
+    pub fn given(&self) -> Vec<&'static str> {
+        let set = [
+            ("dwell_s", self.dwell_s.is_some()),
+            ("targets", !self.targets.is_empty()),
+            ("zones", !self.zones.is_empty()),
+            ("object", self.object.is_some()),
+            ("platform", self.platform.is_some()),
+            ("waypoints", !self.waypoints.is_empty()),
+            ("waypoint_radius", self.waypoint_radius.is_some()),
+            ("finish", self.finish.is_some()),
+            ("finish_radius", self.finish_radius.is_some()),
+            ("center", self.center.is_some()),
+            ("radius", self.radius.is_some()),
+            ("fraction", self.fraction.is_some()),
+            ("min", self.min.is_some()),
+            ("max", self.max.is_some()),
+            ("max_height", self.max_height.is_some()),
+            ("body", self.body.is_some()),
+            ("min_area_fraction", self.min_area_fraction.is_some()),
+            ("pieces", self.pieces.is_some()),
+            ("min_piece_fraction", self.min_piece_fraction.is_some()),
+        ];
+        set.into_iter().filter(|&(_, given)| given).map(|(k, _)| k).collect()
+    }
 }

@@ -120,6 +120,14 @@ impl Checker<'_> {
         self.num(span, field, v, lo, hi)
     }
 
+    /// A name other entries, goals and reports refer to: not empty or blank.
+    fn named(&self, span: &Range<usize>, field: &str, name: &str) -> Result<(), SceneError> {
+        if name.trim().is_empty() {
+            return Err(self.err(span, field, "must not be empty: goals, reports and the demo name things by it"));
+        }
+        Ok(())
+    }
+
     /// An integer in `lo..=hi`.
     fn count<T>(&self, span: &Range<usize>, field: &str, v: T, lo: T, hi: T) -> Result<T, SceneError>
     where
@@ -129,6 +137,7 @@ impl Checker<'_> {
     }
 
     fn scene(&self, raw: SceneFile) -> Result<Scene, SceneError> {
+        self.named(&(0..0), "name", &raw.name)?;
         let effects: EffectSet = raw.effects.iter().copied().collect();
         let table = self.table(raw.table)?;
         let camera = self.camera(raw.camera)?;
@@ -145,7 +154,24 @@ impl Checker<'_> {
         };
 
         let goal = match raw.goal {
-            Some(g) => self.goal(g, &table, &objects, &soft_bodies)?,
+            Some(g) => {
+                let span = g.span();
+                let goal = self.goal(g, &table, &objects, &soft_bodies)?;
+                // A goal that must hold still for longer than the trial
+                // lasts can never be met.
+                if let Some(dwell) = dwell_of(&goal).filter(|&d| d >= time_limit_s) {
+                    return Err(self.err(
+                        &span,
+                        "goal.dwell_s",
+                        format!(
+                            "{} s of holding still is not less than the {} s time limit: the goal can never be met",
+                            human(dwell),
+                            human(time_limit_s)
+                        ),
+                    ));
+                }
+                goal
+            }
             None => Goal::None,
         };
 
@@ -310,6 +336,7 @@ impl Checker<'_> {
         let span = o.span();
         let o = o.into_inner();
         let f = |field: &str| format!("objects[{i}].{field}");
+        self.named(&span, &f("name"), &o.name)?;
         let shape = self.object_shape(&span, i, &o)?;
         let body = match o.body.unwrap_or(BodyKindFile::Dynamic) {
             BodyKindFile::Dynamic => BodyKind::Dynamic,
@@ -448,7 +475,10 @@ impl Checker<'_> {
         };
         let step = vector("step", o.step)?;
         let row_step = vector("row_step", o.row_step)?;
-        let per_row = o.per_row.unwrap_or(count).clamp(1, count);
+        let per_row = match o.per_row {
+            Some(n) => self.count(&span, &f("per_row"), n, 1, count)?,
+            None => count,
+        };
         // Copies at one spot are one solid overlap the solver cannot
         // separate (thousands of boxes at one spot take gigabytes and never settle).
         if per_row > 1 && step == Vec2::ZERO {
@@ -516,6 +546,7 @@ impl Checker<'_> {
         let span = b.span();
         let b = b.into_inner();
         let f = |field: &str| format!("soft_bodies[{i}].{field}");
+        self.named(&span, &f("name"), &b.name)?;
         let kind = match b.kind {
             SoftKindFile::Cloth => SoftKind::Cloth,
             SoftKindFile::Volume => SoftKind::Volume,
@@ -722,6 +753,15 @@ impl Checker<'_> {
     ) -> Result<Goal, SceneError> {
         let span = g.span();
         let g = g.into_inner();
+        if let Some(key) = g.given().into_iter().find(|k| !g.kind.keys().contains(k)) {
+            let keys = g.kind.keys().iter().map(|k| format!("`{k}`")).collect::<Vec<_>>();
+            let keys = if keys.is_empty() { "none".to_string() } else { keys.join(", ") };
+            return Err(self.err(
+                &span,
+                format!("goal.{key}"),
+                format!("a {} goal has no `{key}` (its keys: `kind`, {keys})", g.kind.name()),
+            ));
+        }
         let dwell_s = self.num(&span, "goal.dwell_s", g.dwell_s.unwrap_or(default::DWELL_S), 0.0, 60.0)?;
         let r = GoalReader { c: self, span, table, objects, soft, dwell_s };
         match g.kind {
@@ -885,6 +925,9 @@ impl GoalReader<'_> {
     fn region(&self, g: &GoalFile) -> Result<Goal, SceneError> {
         let min = self.point(g.min, "goal.min", "region")?;
         let max = self.point(g.max, "goal.max", "region")?;
+        if min.x >= max.x || min.y >= max.y {
+            return Err(self.err("goal.max", "must be above `min` on both axes"));
+        }
         let max_height = match g.max_height {
             Some(h) => self.length("goal.max_height", h)?,
             None => f32::INFINITY,
@@ -893,11 +936,39 @@ impl GoalReader<'_> {
         // The named thing may be a soft body (a block squeezed into a cavity).
         if let Some(body) = g.object.as_ref().and_then(|n| self.soft.iter().position(|b| &b.name == n)).map(SoftId::new)
         {
-            Ok(Goal::SoftRegion { body, min, max, max_height, dwell_s })
-        } else {
-            let object = self.object_named(g.object.as_ref(), "goal.object")?;
-            Ok(Goal::Region { object, min, max, max_height, dwell_s })
+            return Ok(Goal::SoftRegion { body, min, max, max_height, dwell_s });
         }
+        let object = self.object_named(g.object.as_ref(), "goal.object")?;
+        // The region holds the object when its whole footprint is inside
+        // and its centre is at most `max_height` up; an object whose
+        // narrowest side is wider than the region, or whose centre cannot
+        // come down that low in any pose, is never held.
+        let spec = &self.objects[object.index()];
+        let (narrowest, lowest) = least_width_and_height(&spec.shape);
+        if narrowest > (max - min).min_element() {
+            return Err(self.err(
+                "goal.max",
+                format!(
+                    "the region is {:.3} m across at its narrowest, and `{}` is {:.3} m across at its narrowest: \
+                     the goal can never be met",
+                    (max - min).min_element(),
+                    spec.name,
+                    narrowest
+                ),
+            ));
+        }
+        if max_height < lowest {
+            return Err(self.err(
+                "goal.max_height",
+                format!(
+                    "{} m is below the lowest the centre of `{}` can rest ({:.3} m): the goal can never be met",
+                    human(max_height),
+                    spec.name,
+                    lowest
+                ),
+            ));
+        }
+        Ok(Goal::Region { object, min, max, max_height, dwell_s })
     }
 
     /// `cloth_flat` and `torn`: goals on a named soft body.
@@ -938,6 +1009,30 @@ impl GoalReader<'_> {
             )?;
             Ok(Goal::Torn { body, pieces: pieces as usize, min_piece_fraction })
         }
+    }
+}
+
+/// How long a goal needs its objects to rest in place, where it does.
+fn dwell_of(goal: &Goal) -> Option<f32> {
+    match *goal {
+        Goal::Positioning { dwell_s, .. }
+        | Goal::Sorting { dwell_s, .. }
+        | Goal::Gather { dwell_s, .. }
+        | Goal::Region { dwell_s, .. }
+        | Goal::SoftRegion { dwell_s, .. }
+        | Goal::ClothFlat { dwell_s, .. } => Some(dwell_s),
+        _ => None,
+    }
+}
+
+/// A shape's least width across and the lowest its centre can rest on the
+/// table, over every pose: a box lies on its largest face, so both come
+/// from its smallest extent; a cylinder lies on its side or stands.
+fn least_width_and_height(shape: &Shape) -> (f32, f32) {
+    match *shape {
+        Shape::Box { half_extents } => (2.0 * half_extents.min_element(), half_extents.min_element()),
+        Shape::Sphere { radius } | Shape::Capsule { radius, .. } => (2.0 * radius, radius),
+        Shape::Cylinder { radius, half_height } => (2.0 * radius.min(half_height), radius.min(half_height)),
     }
 }
 
