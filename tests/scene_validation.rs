@@ -483,3 +483,15 @@ fn nothing_is_accepted_silently() {
     let e = error(&with(STEER, "finish = [-0.3, -0.2]", "finish = [-0.3, -0.2]\ndwell_s = 1"));
     assert_names(&e, Some(18), "goal.dwell_s", "a steering goal has no `dwell_s`");
 }
+
+/// A scene whose numbers each lie within their bounds, but whose product is
+/// hours of simulation, is refused naming the product and its bound.
+#[test]
+fn work_beyond_reasonable_time_is_refused_with_its_product() {
+    let fast = |hz: u32| format!("{SOFT}[physics]\ntimestep_hz = {hz}\n");
+    // 176 particles × 60 Hz × 120 s (the default limit) loads.
+    scene::parse(&fast(60), "ok.toml").unwrap_or_else(|e| panic!("{e}"));
+    let e = error(&fast(10_000));
+    assert_names(&e, Some(18), "physics.timestep_hz", "176 particles × 10000 Hz × 120 s = 211,200,000 particle-steps");
+    assert!(e.contains("above the bound of 10,000,000 (about 20 minutes of work)"), "{e}");
+}

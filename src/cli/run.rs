@@ -34,11 +34,13 @@ pub fn run(args: &RunArgs) -> super::CommandResult {
     let source = match (&args.gesture, args.tuio) {
         (Some(path), _) => {
             let gesture = Gesture::load(path)?;
+            check_work(&scene, gesture.duration() + f64::from(args.settle))?;
             // The whole gesture, then a short settle so released objects come to rest.
             session.replay_until(&gesture, gesture.duration() + f64::from(args.settle))?;
             path.display().to_string()
         }
         (None, port) => {
+            check_work(&scene, f64::from(args.seconds.unwrap_or(0.0) + args.settle))?;
             let addr = SocketAddr::new(
                 args.tuio_bind.unwrap_or(IpAddr::V4(Ipv4Addr::LOCALHOST)),
                 port.unwrap_or(DEFAULT_PORT),
@@ -51,6 +53,17 @@ pub fn run(args: &RunArgs) -> super::CommandResult {
     };
     let report = RunReport::from_session(&session, args.feedback, &source, t0.elapsed().as_secs_f64());
     write_report(&report, args.report.as_deref())
+}
+
+/// Refuses a run whose simulated seconds, longer than the scene's own time
+/// limit (which loading it checked), ask for more work than this program
+/// does in reasonable time ([`scene::Work`]).
+fn check_work(scene: &scene::Scene, seconds: f64) -> Result<(), super::Failure> {
+    let seconds = seconds as f32;
+    if seconds <= scene.time_limit_s {
+        return Ok(());
+    }
+    scene::Work::of(scene, seconds).check().map_err(|m| super::Failure::bad_input(anyhow::anyhow!("{}: a run of {seconds} s (the gesture, or --seconds, and --settle): {m}", scene.origin)))
 }
 
 /// The report as JSON, to `path` (atomically) or standard output.

@@ -15,6 +15,7 @@ mod file;
 mod id;
 mod model;
 mod validate;
+mod work;
 
 pub use builder::{SceneBuilder, ShapeSpec};
 pub use effects::{Effect, EffectSet};
@@ -26,3 +27,4 @@ pub use model::{
     SteeringGoal, Table, Target,
 };
 pub use validate::{load, parse, resolve_path};
+pub use work::{MAX_OBJECT_STEPS, MAX_PARTICLE_STEPS, Work};

@@ -11,6 +11,7 @@ use super::file::{
     SoftKindFile, TableFile,
 };
 use super::id::{ObjectId, SoftId};
+use super::work::Work;
 use super::model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
     SteeringGoal, Table, Target,
@@ -141,6 +142,8 @@ impl Checker<'_> {
         let effects: EffectSet = raw.effects.iter().copied().collect();
         let table = self.table(raw.table)?;
         let camera = self.camera(raw.camera)?;
+        // Where a work error points: the physics rate when the file sets one.
+        let rate_span = raw.physics.as_ref().map(Spanned::span);
         let physics = self.physics(raw.physics)?;
         let (objects, names) = self.all_objects(raw.objects, &table)?;
         let soft_bodies = self.soft_bodies(raw.soft_bodies, &table, effects, &names)?;
@@ -175,7 +178,7 @@ impl Checker<'_> {
             None => Goal::None,
         };
 
-        Ok(Scene {
+        let scene = Scene {
             name: raw.name,
             origin: self.origin.to_string(),
             description: raw.description,
@@ -195,7 +198,14 @@ impl Checker<'_> {
                 .flatten()
                 .map(|(k, v)| (k.clone(), self.fields.line(v.span().start)))
                 .collect(),
-        })
+        };
+        if let Err(message) = Work::of(&scene, scene.time_limit_s).check() {
+            return Err(match rate_span {
+                Some(span) => self.err(&span, "physics.timestep_hz", message),
+                None => self.err(&(0..0), "time_limit_s", message),
+            });
+        }
+        Ok(scene)
     }
 
     fn table(&self, raw: Spanned<TableFile>) -> Result<Table, SceneError> {
