@@ -31,12 +31,14 @@ pub fn run(args: &RunArgs) -> super::CommandResult {
     let options = SessionOptions { measure_penetration: true, ..SessionOptions::default() };
     let mut session = Session::new(&scene, technique, options)?;
     let t0 = Instant::now();
+    let mut stopped_at = None;
     let source = match (&args.gesture, args.tuio) {
         (Some(path), _) => {
             let gesture = Gesture::load(path)?;
-            check_work(&scene, gesture.duration() + f64::from(args.settle))?;
             // The whole gesture, then a short settle so released objects come to rest.
-            session.replay_until(&gesture, gesture.duration() + f64::from(args.settle))?;
+            let until = gesture.duration() + f64::from(args.settle);
+            check_work(&scene, until)?;
+            stopped_at = replay_with_progress(&mut session, &gesture, until)?;
             path.display().to_string()
         }
         (None, port) => {
@@ -51,8 +53,57 @@ pub fn run(args: &RunArgs) -> super::CommandResult {
             format!("tuio:{listened}")
         }
     };
-    let report = RunReport::from_session(&session, args.feedback, &source, t0.elapsed().as_secs_f64());
-    write_report(&report, args.report.as_deref())
+    let mut report = RunReport::from_session(&session, args.feedback, &source, t0.elapsed().as_secs_f64());
+    let Some((at, until)) = stopped_at else {
+        return write_report(&report, args.report.as_deref());
+    };
+    if !report.completion.complete {
+        report.completion.incomplete = Some(format!("stopped by Ctrl-C at {at:.2} s of {until:.2} s"));
+    }
+    write_report(&report, args.report.as_deref())?;
+    Ok(ExitCode::from(EXIT_INTERRUPTED))
+}
+
+/// The exit status of a run stopped by Ctrl-C (128 + SIGINT, as a shell
+/// reports a process the signal ended), after its report is written.
+const EXIT_INTERRUPTED: u8 = 130;
+
+/// How often a long replay says how far it has come (wall time).
+const PROGRESS_EVERY: Duration = Duration::from_secs(2);
+
+/// Replays `gesture` up to `until` as [`Session::replay_until`] does, step
+/// for step the same, in slices of simulated time so that a long run
+/// (a dense cloth, a high physics rate) says on standard error how far it
+/// has come every [`PROGRESS_EVERY`], and stops cleanly at Ctrl-C.
+/// `Some((time reached, until))` when stopped.
+fn replay_with_progress(session: &mut Session, gesture: &Gesture, until: f64) -> anyhow::Result<Option<(f64, f64)>> {
+    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let flag = stop.clone();
+    // Without a handler (another one is installed) Ctrl-C ends the process as usual.
+    let _ = ctrlc::set_handler(move || flag.store(true, std::sync::atomic::Ordering::Relaxed));
+    // A tenth of a simulated second: a few steps at 60 Hz, a cheap check.
+    const SLICE_S: f64 = 0.1;
+    let start = Instant::now();
+    let mut next_note = start + PROGRESS_EVERY;
+    while session.time() + 0.5 * f64::from(session.world().dt()) < until {
+        session.replay_until(gesture, (session.time() + SLICE_S).min(until))?;
+        if stop.load(std::sync::atomic::Ordering::Relaxed) {
+            eprintln!("surfacelab run: stopped by Ctrl-C at {:.2} s of {until:.2} s; writing the report so far", session.time());
+            return Ok(Some((session.time(), until)));
+        }
+        let now = Instant::now();
+        if now >= next_note {
+            let done = session.time() / until;
+            let left = start.elapsed().as_secs_f64() * (1.0 - done) / done.max(1e-9);
+            eprintln!(
+                "surfacelab run: {:.1} of {until:.1} s simulated ({:.0}%), about {left:.0} s left; Ctrl-C stops and writes the report",
+                session.time(),
+                100.0 * done
+            );
+            next_note = now + PROGRESS_EVERY;
+        }
+    }
+    Ok(None)
 }
 
 /// Refuses a run whose simulated seconds, longer than the scene's own time
