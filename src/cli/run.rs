@@ -106,6 +106,27 @@ fn replay_with_progress(session: &mut Session, gesture: &Gesture, until: f64) ->
     Ok(None)
 }
 
+/// "packet to contact image: mean …, 99th percentile …, max … ms (one frame
+/// is … ms)" over the packets' waits, `None` without packets. A packet
+/// waits for the next step at or after it arrives (half a frame on
+/// average at a steady rate), and longer when steps run late.
+fn latency_line(waits: &mut [Duration], dt: f64) -> Option<String> {
+    if waits.is_empty() {
+        return None;
+    }
+    waits.sort_unstable();
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let mean = waits.iter().map(|&d| ms(d)).sum::<f64>() / waits.len() as f64;
+    let p99 = waits[(waits.len() * 99).div_ceil(100) - 1];
+    Some(format!(
+        "packet to contact image over {} packets: mean {mean:.1} ms, 99th percentile {:.1} ms, max {:.1} ms (one frame is {:.1} ms)",
+        waits.len(),
+        ms(p99),
+        ms(waits[waits.len() - 1]),
+        dt * 1e3
+    ))
+}
+
 /// Refuses a run whose simulated seconds, longer than the scene's own time
 /// limit (which loading it checked), ask for more work than this program
 /// does in reasonable time ([`scene::Work`]).
@@ -161,6 +182,8 @@ fn live(session: &mut Session, addr: SocketAddr, args: &RunArgs) -> anyhow::Resu
     let dt = f64::from(session.world().dt());
     let steps = (seconds / dt).round() as u64;
     let mut recording = args.record.clone().map(Recording::new);
+    // How long each packet waited for the step that drew its contact image.
+    let mut waits: Vec<Duration> = Vec::new();
     let start = Instant::now();
     for k in 0..steps {
         let due = start + Duration::from_secs_f64(k as f64 * dt);
@@ -168,6 +191,8 @@ fn live(session: &mut Session, addr: SocketAddr, args: &RunArgs) -> anyhow::Resu
             std::thread::sleep(wait);
         }
         let hands: Vec<_> = listener.hands_at(table, due).iter().map(quantized).collect();
+        let sampled = Instant::now();
+        waits.extend(listener.take_arrivals(due).into_iter().map(|a| sampled.saturating_duration_since(a)));
         let t = session.time();
         session.step(&hands)?;
         if let Some(r) = &mut recording {
@@ -181,6 +206,9 @@ fn live(session: &mut Session, addr: SocketAddr, args: &RunArgs) -> anyhow::Resu
     );
     if stats.packets == 0 {
         eprintln!("surfacelab run: no TUIO packet arrived on {listened}");
+    }
+    if let Some(line) = latency_line(&mut waits, dt) {
+        eprintln!("surfacelab run: {line}");
     }
     if let Some(r) = recording {
         let (path, gesture) = r.save()?;

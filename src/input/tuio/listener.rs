@@ -17,6 +17,9 @@ use std::time::{Duration, Instant};
 const POLL: Duration = Duration::from_millis(50);
 /// Largest UDP payload.
 const MAX_DATAGRAM: usize = 65_536;
+/// Arrival times kept for [`TuioListener::take_arrivals`]: a listener no
+/// one drains (the demo's) holds at most this many (512 KiB).
+const MAX_ARRIVALS: usize = 65_536;
 
 /// A bound socket and the thread reading it. Dropping it stops the thread.
 pub struct TuioListener {
@@ -71,6 +74,17 @@ impl TuioListener {
         self.lock().now.stats()
     }
 
+    /// The arrival times of the well-formed packets that arrived at or
+    /// before `until` and were not taken yet: what a step that samples the
+    /// hands at `until` sees for the first time, so its caller can measure
+    /// how long each packet waited for its contact image.
+    pub fn take_arrivals(&self, until: Instant) -> Vec<Instant> {
+        let t = until.saturating_duration_since(self.start).as_secs_f64();
+        let mut tracked = self.lock();
+        let n = tracked.arrivals.partition_point(|&a| a <= t);
+        tracked.arrivals.drain(..n).map(|a| self.start + Duration::from_secs_f64(a)).collect()
+    }
+
     /// Live (cursors, blobs) now, TUIO 2.0 pointers and shapes included
     /// (see [`TuioState::counts`]).
     pub fn live_counts(&self) -> (usize, usize) {
@@ -98,6 +112,9 @@ impl Drop for TuioListener {
 struct Tracked {
     now: TuioState,
     past: Timeline,
+    /// Seconds since the start at which each well-formed packet arrived,
+    /// oldest first, until taken.
+    arrivals: std::collections::VecDeque<f64>,
 }
 
 fn read_loop(socket: &UdpSocket, state: &Mutex<Tracked>, stop: &AtomicBool, start: Instant) {
@@ -109,8 +126,12 @@ fn read_loop(socket: &UdpSocket, state: &Mutex<Tracked>, stop: &AtomicBool, star
                 let mut tracked = state.lock().unwrap_or_else(PoisonError::into_inner);
                 match tracked.now.receive(&buf[..n], now) {
                     Ok(()) => {
-                        let Tracked { now: current, past } = &mut *tracked;
+                        let Tracked { now: current, past, arrivals } = &mut *tracked;
                         past.record(now, current);
+                        if arrivals.len() == MAX_ARRIVALS {
+                            arrivals.pop_front();
+                        }
+                        arrivals.push_back(now);
                     }
                     Err(e) => tracing::debug!("TUIO packet from {from} ignored: {e}"),
                 }
