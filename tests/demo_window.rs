@@ -51,6 +51,11 @@ static XVFB: std::sync::Mutex<()> = std::sync::Mutex::new(());
 /// Runs a shell script under a fresh Xvfb screen, with a private
 /// `XDG_RUNTIME_DIR` (Vulkan's loader complains without one) and a time limit.
 fn under_xvfb(dir: &Path, script: &str) -> Output {
+    under_xvfb_for(dir, script, 180)
+}
+
+/// [`under_xvfb`] with a time limit of `limit_s` seconds.
+fn under_xvfb_for(dir: &Path, script: &str, limit_s: u32) -> Output {
     require("xvfb-run", "xvfb");
     require("xwd", "x11-apps");
     let runtime = dir.join("xdg");
@@ -69,7 +74,8 @@ fn under_xvfb(dir: &Path, script: &str) -> Output {
     );
     let _one_at_a_time = XVFB.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
     Command::new("timeout")
-        .args(["180", "xvfb-run", "-a", "-s", &screen, "sh", "-c", &script])
+        .arg(limit_s.to_string())
+        .args(["xvfb-run", "-a", "-s", &screen, "sh", "-c", &script])
         .env("XDG_RUNTIME_DIR", &runtime)
         .env_remove("WAYLAND_DISPLAY")
         .current_dir(dir)
@@ -345,4 +351,102 @@ fn calibrate_takes_four_clicks_on_the_first_frame() {
     assert!(cal.contains(expected), "{cal}\n{report}");
     // The sorting table's corners, far-left first.
     assert!(cal.contains("table_points = [[-"), "{cal}");
+}
+
+/// A TUIO 1.1 frame (`fseq` `f`) with two hand-sized blobs sweeping the
+/// sorting table's pieces back and forth, 4 s a sweep, `t` seconds in.
+fn sweeping_blobs(f: i32, t: f64) -> Vec<u8> {
+    use rosc::{OscBundle, OscMessage, OscPacket, OscTime, OscType};
+    let m = |args: Vec<OscType>| OscPacket::Message(OscMessage { addr: "/tuio/2Dblb".into(), args });
+    let x = 0.5 + 0.3 * (std::f64::consts::TAU * t / 4.0).sin();
+    let mut content = vec![m(vec!["alive".into(), OscType::Int(1), OscType::Int(2)])];
+    for (id, y) in [(1, 0.35_f32), (2, 0.65)] {
+        let args: Vec<OscType> = vec![
+            "set".into(),
+            OscType::Int(id),
+            (x as f32).into(),
+            y.into(),
+            0.0f32.into(),
+            0.12f32.into(),
+            0.08f32.into(),
+            0.0096f32.into(),
+            0.0f32.into(),
+            0.0f32.into(),
+            0.0f32.into(),
+            0.0f32.into(),
+            0.0f32.into(),
+        ];
+        content.push(m(args));
+    }
+    content.push(m(vec!["fseq".into(), OscType::Int(f)]));
+    rosc::encoder::encode(&OscPacket::Bundle(OscBundle { timetag: OscTime { seconds: 0, fractional: 1 }, content }))
+        .expect("encodes")
+}
+
+/// `VmRSS` of process `pid` in MiB, `None` once it has gone.
+fn resident_mib(pid: u32) -> Option<f64> {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).ok()?;
+    let kib: f64 = status.lines().find_map(|l| l.strip_prefix("VmRSS:"))?.trim().trim_end_matches("kB").trim().parse().ok()?;
+    Some(kib / 1024.0)
+}
+
+/// The demo over time: sorting under Particle with feedback, two TUIO blobs
+/// sweeping its pieces at 60 packets/s for `SURFACELAB_SOAK_SECONDS`
+/// (default 30). Resident memory, read from outside at a third of the run
+/// and near its end, grows by at most 5%, and the summary names the worst
+/// frame after the warm-up. `docs/performance.md` quotes the ten-minute run.
+#[test]
+fn a_demo_soak_under_tuio_keeps_its_memory() {
+    let seconds: f64 = std::env::var("SURFACELAB_SOAK_SECONDS").ok().and_then(|v| v.parse().ok()).unwrap_or(30.0);
+    let dir = work_dir("demo_soak");
+    let port = 41_000 + (std::process::id() % 20_000) as u16;
+    let script = format!(
+        "'{BIN}' demo --task sorting --technique particle --feedback --tuio {port} --quit-after {seconds} --out out &
+        echo $! > demo.pid
+        wait $!"
+    );
+    let done = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
+    let (flag, pid_file) = (done.clone(), dir.join("demo.pid"));
+    let watcher = std::thread::spawn(move || {
+        let socket = std::net::UdpSocket::bind("127.0.0.1:0").expect("a socket");
+        let start = std::time::Instant::now();
+        let mut samples = Vec::new();
+        let mut pid = None;
+        let mut f = 0;
+        while !flag.load(std::sync::atomic::Ordering::Relaxed) {
+            f += 1;
+            let t = start.elapsed().as_secs_f64();
+            let _ = socket.send_to(&sweeping_blobs(f, t), ("127.0.0.1", port));
+            pid = pid.or_else(|| std::fs::read_to_string(&pid_file).ok().and_then(|p| p.trim().parse::<u32>().ok()));
+            // Once a second: (seconds since the demo started, resident MiB).
+            if f % 60 == 0 {
+                if let Some(rss) = pid.and_then(resident_mib) {
+                    samples.push((t, rss));
+                }
+            }
+            std::thread::sleep(std::time::Duration::from_secs_f64(1.0 / 60.0));
+        }
+        samples
+    });
+    let limit = seconds as u32 + 120;
+    let out = under_xvfb_for(&dir, &script, limit);
+    done.store(true, std::sync::atomic::Ordering::Relaxed);
+    let samples = watcher.join().expect("watcher");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let summary = stderr.lines().find(|l| l.contains("frames, mean frame")).unwrap_or_default().to_owned();
+    println!("{summary}");
+    assert!(out.status.success(), "exit {:?}\n{stderr}", out.status);
+    assert!(summary.contains("worst frame "), "no worst frame in the summary: {stderr}");
+    // The watcher's clock starts with Xvfb; the demo's window opens a few
+    // seconds later, so the samples span a little less than the run.
+    let at = |share: f64| {
+        samples.iter().find(|(t, _)| *t >= share * seconds).copied().unwrap_or_else(|| panic!("no sample at {share}: {samples:?}"))
+    };
+    // The last sample a second before the quit: at the quit the process
+    // already frees its window and its GPU memory.
+    let late = *samples.iter().rev().find(|(t, _)| *t <= seconds - 1.0).expect("samples");
+    let early = at(1.0 / 3.0);
+    println!("resident memory {:.1} MiB at {:.0} s, {:.1} MiB at {:.0} s", early.1, early.0, late.1, late.0);
+    assert!(late.0 - early.0 >= seconds / 2.0, "samples too close: {samples:?}");
+    assert!((late.1 - early.1).abs() <= 0.05 * early.1, "resident memory {early:?} -> {late:?}: {samples:?}");
 }
