@@ -65,7 +65,8 @@ impl OutputTarget {
             return Ok(OutputTarget::Stdout);
         }
         match std::fs::metadata(path) {
-            Ok(meta) if meta.is_dir() => Err(std::io::Error::new(std::io::ErrorKind::IsADirectory, "is a folder")),
+            // EISDIR (21 on Linux and macOS), worded as the OS words it.
+            Ok(meta) if meta.is_dir() => Err(std::io::Error::from_raw_os_error(21)),
             Ok(meta) if meta.is_file() => {
                 let is_link = std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink());
                 Ok(OutputTarget::File(if is_link { std::fs::canonicalize(path)? } else { path.to_path_buf() }))

@@ -91,7 +91,7 @@ mod tests {
             .expect("valid");
         assert_eq!(row.size, [1.0, 0.75]);
         let step = row.step.expect("step");
-        assert_eq!((*step.get_ref(), step.span()), ([1.0, 2.0, 3.0], 27..36));
+        assert_eq!((*step.get_ref(), step.span()), ([1.0, 2.0, 3.0], 26..35));
         assert_eq!(row.ring, [[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]]);
         let row: Row = toml::from_str("size = [1, 2]").expect("the rest is optional");
         assert!(row.step.is_none() && row.ring.is_empty());

@@ -27,6 +27,7 @@ mod demo;
 mod display;
 mod doctor;
 mod failure;
+mod long_run;
 mod participants;
 mod run;
 mod run_images;

@@ -37,12 +37,18 @@ pub fn run(args: &RunArgs) -> super::CommandResult {
             let gesture = Gesture::load(path)?;
             // The whole gesture, then a short settle so released objects come to rest.
             let until = gesture.duration() + f64::from(args.settle);
-            check_work(&scene, until)?;
-            stopped_at = replay_with_progress(&mut session, &gesture, until)?;
+            super::long_run::check_work(&scene, until)?;
+            stopped_at = super::long_run::replay_showing_progress(
+                &mut session,
+                &gesture,
+                super::long_run::Until::Gesture(until),
+                "run",
+                "writes the report",
+            )?;
             path.display().to_string()
         }
         (None, port) => {
-            check_work(&scene, f64::from(args.seconds.unwrap_or(0.0) + args.settle))?;
+            super::long_run::check_work(&scene, f64::from(args.seconds.unwrap_or(0.0) + args.settle))?;
             let addr = SocketAddr::new(
                 args.tuio_bind.unwrap_or(IpAddr::V4(Ipv4Addr::LOCALHOST)),
                 port.unwrap_or(DEFAULT_PORT),
@@ -61,49 +67,7 @@ pub fn run(args: &RunArgs) -> super::CommandResult {
         report.completion.incomplete = Some(format!("stopped by Ctrl-C at {at:.2} s of {until:.2} s"));
     }
     write_report(&report, args.report.as_deref())?;
-    Ok(ExitCode::from(EXIT_INTERRUPTED))
-}
-
-/// The exit status of a run stopped by Ctrl-C (128 + SIGINT, as a shell
-/// reports a process the signal ended), after its report is written.
-const EXIT_INTERRUPTED: u8 = 130;
-
-/// How often a long replay says how far it has come (wall time).
-const PROGRESS_EVERY: Duration = Duration::from_secs(2);
-
-/// Replays `gesture` up to `until` as [`Session::replay_until`] does, step
-/// for step the same, in slices of simulated time so that a long run
-/// (a dense cloth, a high physics rate) says on standard error how far it
-/// has come every [`PROGRESS_EVERY`], and stops cleanly at Ctrl-C.
-/// `Some((time reached, until))` when stopped.
-fn replay_with_progress(session: &mut Session, gesture: &Gesture, until: f64) -> anyhow::Result<Option<(f64, f64)>> {
-    let stop = std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false));
-    let flag = stop.clone();
-    // Without a handler (another one is installed) Ctrl-C ends the process as usual.
-    let _ = ctrlc::set_handler(move || flag.store(true, std::sync::atomic::Ordering::Relaxed));
-    // A tenth of a simulated second: a few steps at 60 Hz, a cheap check.
-    const SLICE_S: f64 = 0.1;
-    let start = Instant::now();
-    let mut next_note = start + PROGRESS_EVERY;
-    while session.time() + 0.5 * f64::from(session.world().dt()) < until {
-        session.replay_until(gesture, (session.time() + SLICE_S).min(until))?;
-        if stop.load(std::sync::atomic::Ordering::Relaxed) {
-            eprintln!("surfacelab run: stopped by Ctrl-C at {:.2} s of {until:.2} s; writing the report so far", session.time());
-            return Ok(Some((session.time(), until)));
-        }
-        let now = Instant::now();
-        if now >= next_note {
-            let done = session.time() / until;
-            let left = start.elapsed().as_secs_f64() * (1.0 - done) / done.max(1e-9);
-            eprintln!(
-                "surfacelab run: {:.1} of {until:.1} s simulated ({:.0}%), about {left:.0} s left; Ctrl-C stops and writes the report",
-                session.time(),
-                100.0 * done
-            );
-            next_note = now + PROGRESS_EVERY;
-        }
-    }
-    Ok(None)
+    Ok(ExitCode::from(super::long_run::EXIT_INTERRUPTED))
 }
 
 /// "packet to contact image: mean …, 99th percentile …, max … ms (one frame
@@ -125,17 +89,6 @@ fn latency_line(waits: &mut [Duration], dt: f64) -> Option<String> {
         ms(waits[waits.len() - 1]),
         dt * 1e3
     ))
-}
-
-/// Refuses a run whose simulated seconds, longer than the scene's own time
-/// limit (which loading it checked), ask for more work than this program
-/// does in reasonable time ([`scene::Work`]).
-fn check_work(scene: &scene::Scene, seconds: f64) -> Result<(), super::Failure> {
-    let seconds = seconds as f32;
-    if seconds <= scene.time_limit_s {
-        return Ok(());
-    }
-    scene::Work::of(scene, seconds).check().map_err(|m| super::Failure::bad_input(anyhow::anyhow!("{}: a run of {seconds} s (the gesture, or --seconds, and --settle): {m}", scene.origin)))
 }
 
 /// The report as JSON, to `path` (atomically) or standard output.

@@ -3,6 +3,7 @@
 
 use super::ScreenshotArgs;
 use crate::app::scene_view::{self, ViewOptions};
+use super::long_run::Until;
 use crate::input::Gesture;
 use crate::render::{self, GpuContext};
 use crate::scene;
@@ -18,16 +19,13 @@ pub fn run(args: &ScreenshotArgs) -> super::CommandResult {
     // Without a gesture, let the scene settle for a moment; with one, stop
     // at --at (default: its end), the hands still down.
     let at = args.at.map_or_else(|| gesture.as_ref().map_or(0.25, Gesture::duration), f64::from);
-    match &gesture {
-        Some(g) => {
-            session.replay_until(g, at)?;
-        }
-        None => {
-            while session.time() < at {
-                session.step(&[])?;
-            }
-        }
-    }
+    super::long_run::check_work(&scene, at)?;
+    let (hands, until) = match &gesture {
+        Some(g) => (g, Until::Gesture(at)),
+        // No hands: an empty gesture gives none at every step.
+        None => (&Gesture::default(), Until::Before(at)),
+    };
+    let stopped = super::long_run::replay_showing_progress(&mut session, hands, until, "screenshot", "draws the picture")?;
     let list = scene_view::fitted_draw_list(
         &session,
         ViewOptions { feedback: args.feedback, contact_overlay: !args.no_contact_overlay },
@@ -47,7 +45,7 @@ pub fn run(args: &ScreenshotArgs) -> super::CommandResult {
         gpu.summary().name,
         args.out.display()
     );
-    Ok(ExitCode::SUCCESS)
+    Ok(if stopped.is_some() { ExitCode::from(super::long_run::EXIT_INTERRUPTED) } else { ExitCode::SUCCESS })
 }
 
 /// Parses `WxH` (e.g. 1024x768).
