@@ -17,9 +17,12 @@
 //! smallest failing input. Every crasher found is kept below as a named
 //! regression test.
 
+mod common;
+
+use common::scratch;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::{Duration, Instant};
 use surfacelab::harness::study::RunFile;
 use surfacelab::harness::study::output::recover_trials;
@@ -425,12 +428,6 @@ fn fuzz_command_line() {
         let _ = surfacelab::cli::Cli::try_parse_from(std::iter::once("surfacelab").chain(args));
         Ok(())
     });
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("surfacelab-fuzz-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).expect("temp dir");
-    d
 }
 
 #[test]

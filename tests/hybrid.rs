@@ -8,16 +8,15 @@
 //! It may be possible to extend the particle approach to allow proxies to
 //! persist at a given depth".
 
+mod common;
+
+use common::asset;
 use glam::Vec2;
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
 use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
-
-fn asset(path: &str) -> String {
-    format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))
-}
 
 fn session(task: &str, kind: TechniqueKind) -> Session {
     let s = scene::load(&asset(task)).expect("scene loads");

@@ -4,6 +4,9 @@
 //! through calibration and rectification moves the box as the gesture
 //! itself does.
 
+mod common;
+
+use common::asset;
 use surfacelab::input::Gesture;
 use surfacelab::input::images::{CameraKind, ImageSequence, Synthesizer, write_sequence};
 use surfacelab::pipeline::surface::Sensor;
@@ -11,10 +14,6 @@ use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
 use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
-
-fn asset(path: &str) -> String {
-    format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))
-}
 
 const SETTLE_S: f64 = 0.5;
 

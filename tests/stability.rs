@@ -1,10 +1,14 @@
 //! Hard cases that must stay numerically stable, in the shape of rapier's
 //! `joint_stability.rs`: each runs ≥ 10,000 steps through the real pipeline
 //! and asserts no NaN, no object leaving the world, speeds below a stated
-//! limit and penetration below 1 cm. Every case's scene is a file under
-//! `tasks/cases/`, so a failure can be watched in the demo
+//! limit and penetration below a bound of `common/thresholds.rs`. Every
+//! case's scene is a file under `tasks/cases/`, so a failure can be watched
+//! in the demo
 //! (`surfacelab demo --task tasks/cases/NAME.toml`).
 
+mod common;
+
+use common::thresholds::{self, Threshold};
 use glam::{Vec2, Vec3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -16,8 +20,6 @@ use surfacelab::scene;
 use surfacelab::session::{Session, SessionOptions};
 
 const STEPS: usize = 10_000;
-/// Penetration allowed between scene bodies (m).
-const MAX_PENETRATION: f32 = 0.01;
 
 struct Case<'a> {
     task: &'a str,
@@ -27,7 +29,7 @@ struct Case<'a> {
     /// Steps before penetration is judged (overlap recovery needs a few).
     settle_steps: usize,
     /// Deepest overlap allowed between scene bodies (m).
-    max_penetration: f32,
+    max_penetration: Threshold,
     config: Option<TechniqueConfig>,
     sensor_px: (u32, u32),
 }
@@ -39,7 +41,7 @@ impl<'a> Case<'a> {
             kind,
             speed_limit,
             settle_steps: 0,
-            max_penetration: MAX_PENETRATION,
+            max_penetration: thresholds::STABILITY_PENETRATION,
             config: None,
             sensor_px: (640, 480),
         }
@@ -100,7 +102,7 @@ fn run_with(
         st.max_speed_seen,
         case.speed_limit
     );
-    assert!(worst_pen < case.max_penetration, "{} {}: penetration {worst_pen}", case.task, case.kind);
+    case.max_penetration.check(worst_pen, &format!("{} {}: penetration", case.task, case.kind));
     s
 }
 
@@ -130,9 +132,11 @@ fn four_joints_pulling_one_box_apart() {
     // the paper's own "breaking joints fling objects". Bounded, not exploding.
     // The last joint slings the box, spinning at 5 rad/s, into the rim wall:
     // its corner arrives at 0.5 m/s (8 mm a step) and rapier's soft contact
-    // lets it in by more than a step's travel for a step or two, then out.
-    // Two steps of that corner's travel bound it.
-    let case = Case { max_penetration: 0.02, ..Case::new("tasks/cases/one_box.toml", TechniqueKind::JOINT, 5.0) };
+    // lets it in for a step or two, then out (`thresholds::FLUNG_BOX_PENETRATION`).
+    let case = Case {
+        max_penetration: thresholds::FLUNG_BOX_PENETRATION,
+        ..Case::new("tasks/cases/one_box.toml", TechniqueKind::JOINT, 5.0)
+    };
     let dirs = [Vec2::X, Vec2::NEG_X, Vec2::Y, Vec2::NEG_Y];
     run(&case, STEPS, |k, _| {
         dirs.iter().enumerate().map(|(i, d)| tip(i as u32 + 1, lerp(*d * 0.045, *d * 0.3, k, 90))).collect()
@@ -151,7 +155,8 @@ fn a_joint_on_a_box_that_a_flat_hand_pins_down() {
 #[test]
 fn a_stack_of_five_boxes_under_a_pressing_flat_hand() {
     for kind in [TechniqueKind::PROXY, TechniqueKind::PARTICLE] {
-        let case = Case::new("tasks/cases/stack5.toml", kind, 2.0);
+        let case =
+            Case { max_penetration: thresholds::STACK_PENETRATION, ..Case::new("tasks/cases/stack5.toml", kind, 2.0) };
         let s = run(&case, STEPS, |_, _| vec![Hand::new(1, HandKind::FlatHand, 0.0, 0.0).with_pressure(1.0)]);
         // Still a stack: every box within 2 cm of the axis.
         for id in s.world().object_ids() {
@@ -337,7 +342,13 @@ fn contact_module_fed_degenerate_pairs_by_the_real_pipeline() {
             }
         }
     }
-    assert!(answered > 1000, "answered {answered}, rejected {rejected}");
+    // A contact hull too thin to be a convex polygon (a blob a pixel wide)
+    // is skipped, not tested: this seeded run skips 1 hull and answers
+    // 7848 pairs; more than three skips, or under 5000 answers (two thirds
+    // of those measured), fail the test.
+    println!("contact pairs answered {answered}, hulls rejected {rejected}");
+    assert!(answered > 5000, "answered {answered}, rejected {rejected}");
+    assert!(rejected <= 3, "{rejected} hulls rejected, {answered} pairs answered");
 }
 
 /// The paper's particles at their most numerous: a forearm and two flat
