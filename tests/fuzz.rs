@@ -226,17 +226,21 @@ fn fuzz_gesture_files() {
         if let Ok(g) = Gesture::from_str(&apply(t, &edits), "fuzz.toml") {
             // A gesture that loads is bounded: sampling it ends.
             prop_assert!(g.duration() <= 600.0, "duration {}", g.duration());
-            let hands = g.sample(g.duration() / 2.0);
             // What loads draws without a panic (contours included).
-            let sensor = surfacelab::pipeline::surface::Sensor::new(160, 120, 1.0, 0.75);
-            let _ = surfacelab::pipeline::surface::rasterize(
-                &hands,
-                &sensor,
-                &surfacelab::pipeline::surface::RasterParams::default(),
-            );
+            draw(&g.sample(g.duration() / 2.0));
         }
         Ok(())
     });
+}
+
+/// Rasterizes `hands` on a small sensor; a panic fails the fuzz case.
+fn draw(hands: &[surfacelab::pipeline::surface::Hand]) {
+    let sensor = surfacelab::pipeline::surface::Sensor::new(160, 120, 1.0, 0.75);
+    let _ = surfacelab::pipeline::surface::rasterize(
+        hands,
+        &sensor,
+        &surfacelab::pipeline::surface::RasterParams::default(),
+    );
 }
 
 #[test]
@@ -363,12 +367,7 @@ fn fuzz_osc_packets() {
             prop_assert!(h.pose.x.is_finite() && h.pose.y.is_finite(), "a hand from TUIO is finite: {h:?}");
         }
         // Whatever arrived draws (contours included) without a panic.
-        let sensor = surfacelab::pipeline::surface::Sensor::new(160, 120, 1.0, 0.75);
-        let _ = surfacelab::pipeline::surface::rasterize(
-            &hands,
-            &sensor,
-            &surfacelab::pipeline::surface::RasterParams::default(),
-        );
+        draw(&hands);
         Ok(())
     });
 }

@@ -8,7 +8,7 @@
 
 mod common;
 
-use common::asset;
+use common::{asset, gestures};
 use surfacelab::app::scene_view::{self, ViewOptions};
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::TechniqueKind;
@@ -35,19 +35,9 @@ fn snapshots() -> SnapshotDir {
 
 /// A fingertip landing on the sorting scene's big red box (5 cm tall, so
 /// it appears 4% further out on screen) and dragging it left.
-const DRAG_RED_BOX: &str = r#"
-format = "surfacelab-gesture"
-version = 1
-[[hands]]
-id = 1
-kind = "fingertips"
-[[hands.keys]]
-t = 0.0
-pos = [0.052, 0.167]
-[[hands.keys]]
-t = 1.0
-pos = [-0.1, 0.167]
-"#;
+fn drag_red_box() -> String {
+    gestures::text(&[gestures::fingertip(1, &[(0.0, [0.052, 0.167]), (1.0, [-0.1, 0.167])])])
+}
 
 fn session_at(task: &str, kind: TechniqueKind, gesture: Option<&str>, at: f64) -> Session {
     let scene = scene::load(&asset(task)).expect("scene");
@@ -89,7 +79,7 @@ fn feedback_on_and_off_differ_exactly_by_red_feedback_for_every_technique() {
     let gpu = gpu();
     for kind in TechniqueKind::BUILT_IN {
         // Mid-gesture: a fingertip dragging a box.
-        let s = session_at("tasks/sorting.toml", kind, Some(DRAG_RED_BOX), 0.6);
+        let s = session_at("tasks/sorting.toml", kind, Some(&drag_red_box()), 0.6);
         let off = render::render_to_image(
             &gpu,
             &scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: false }),
