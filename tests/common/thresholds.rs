@@ -175,6 +175,76 @@ pub const SQUEEZED_VOLUME: Threshold = Threshold {
              measured plus two fifths",
 };
 
+/// The stability cases where hands press, pin, wedge or drag objects
+/// slowly (stacks, a pinned box, a wedged capsule, a cambered card, the
+/// steering cylinder between two hands, overlaps recovering, a light box on
+/// a heavy one): the fastest any object moves.
+pub const SPEED_HELD: Threshold = Threshold {
+    name: "speed_held",
+    side: Side::Below,
+    bound: 0.18,
+    measured: 0.1196,
+    unit: "m/s",
+    reason: "the hands here move at a few cm/s or hold still, and a stable solve moves nothing faster than about \
+             that: 0.12 m/s measured (the top box of the pressed stack under Proxy); bound: measured plus half",
+};
+
+/// A contact beside the box that the box never meets (jumping, or lost and
+/// found every other frame): the box's fastest motion.
+pub const SPEED_AT_REST: Threshold = Threshold {
+    name: "speed_at_rest",
+    side: Side::Below,
+    bound: 0.0004,
+    measured: 0.00014,
+    unit: "m/s",
+    reason: "nothing pushes the box, so it only settles on the table: 0.14 mm/s measured; bound: under three \
+             times that, where anything touching the box moves it at centimetres a second",
+};
+
+/// Two joints pulling one box apart until they break.
+pub const SPEED_PULLED_APART: Threshold = Threshold {
+    name: "speed_pulled_apart",
+    side: Side::Below,
+    bound: 3.0,
+    measured: 1.98,
+    unit: "m/s",
+    reason: "when one stretched joint breaks, the other yanks the box (the paper's \"breaking joints fling \
+             objects\"): 1.98 m/s measured; bound: measured plus half",
+};
+
+/// Four joints pulling one box apart: the last one slings it.
+pub const SPEED_FLUNG_BOX: Threshold = Threshold {
+    name: "speed_flung_box",
+    side: Side::Below,
+    bound: 5.0,
+    measured: 3.28,
+    unit: "m/s",
+    reason: "the last of four stretched joints slings the box into the rim wall: 3.28 m/s measured; bound: \
+             measured plus half",
+};
+
+/// A ball flicked at 40 m/s at a thin wall.
+pub const SPEED_FLICKED_BALL: Threshold = Threshold {
+    name: "speed_flicked_ball",
+    side: Side::Below,
+    bound: 41.0,
+    measured: 39.94,
+    unit: "m/s",
+    reason: "the ball starts at 40 m/s and nothing adds speed to it (39.94 measured); 1 m/s above the launch \
+             speed is energy the solver made",
+};
+
+/// The 20,000-particle flood on the sorting scene.
+pub const SPEED_FLOOD: Threshold = Threshold {
+    name: "speed_flood",
+    side: Side::Below,
+    bound: 0.5,
+    measured: 0.18,
+    unit: "m/s",
+    reason: "the forearm and hands sway at up to 5 cm/s; ten times that is a solver under load flinging pieces. \
+             0.18 m/s measured over the 300-step run (the 10,000-step run is not part of the default suite)",
+};
+
 /// The whole table, for `tests/thresholds.rs`.
 pub const ALL: &[Threshold] = &[
     CULL_EDGE_PUSH,
@@ -187,4 +257,10 @@ pub const ALL: &[Threshold] = &[
     SQUISHED_VOLUME_PARTICLE,
     SQUISHED_VOLUME_PROXY,
     SQUEEZED_VOLUME,
+    SPEED_HELD,
+    SPEED_AT_REST,
+    SPEED_PULLED_APART,
+    SPEED_FLUNG_BOX,
+    SPEED_FLICKED_BALL,
+    SPEED_FLOOD,
 ];
