@@ -139,25 +139,28 @@ fn a_thrown_ball_keeps_the_hands_release_velocity() {
     }
 }
 
+/// The first object's position every step of `g` plus half a second under
+/// Particle with `config`, and the particles simulated and sensed over the run.
+fn particle_track(scene: &scene::Scene, g: &Gesture, config: TechniqueConfig) -> (Vec<Vec3>, usize, usize) {
+    let options = SessionOptions { config: Some(config), ..SessionOptions::default() };
+    let mut s = Session::new(scene, TechniqueKind::PARTICLE, options).expect("session");
+    let (mut track, mut simulated, mut sensed) = (Vec::new(), 0, 0);
+    while s.time() < g.duration() + 0.5 {
+        let hands = g.sample(s.time());
+        s.step(&hands).expect("step");
+        track.push(s.world().object_pose(ObjectId::new(0)).position);
+        simulated += s.counts().bodies;
+        sensed += s.frame().edges.len();
+    }
+    (track, simulated, sensed)
+}
+
 #[test]
 fn pooled_and_per_frame_particles_give_the_same_trajectory() {
     let g = Gesture::load(asset("assets/gestures/fingertip_drag.toml")).expect("gesture");
     let scene = scene::load(&asset("tasks/cases/one_box.toml")).expect("scene");
     let run = |pooled: bool| {
-        let config = TechniqueConfig { particle_pooled: pooled, ..TechniqueConfig::default() };
-        let mut s = Session::new(
-            &scene,
-            TechniqueKind::PARTICLE,
-            SessionOptions { config: Some(config), ..SessionOptions::default() },
-        )
-        .expect("session");
-        let mut track = Vec::new();
-        while s.time() < g.duration() + 0.5 {
-            let hands = g.sample(s.time());
-            s.step(&hands).expect("step");
-            track.push(s.world().object_pose(ObjectId::new(0)).position);
-        }
-        track
+        particle_track(&scene, &g, TechniqueConfig { particle_pooled: pooled, ..TechniqueConfig::default() }).0
     };
     let a = run(true);
     let b = run(false);
@@ -191,22 +194,7 @@ fn culled_particles_change_nothing_the_objects_feel() {
     for gesture in ["edge_push", "flat_hand_sweep"] {
         let g = Gesture::load(asset(&format!("assets/gestures/{gesture}.toml"))).expect("gesture");
         let run = |cull: bool| {
-            let config = TechniqueConfig { particle_cull: cull, ..TechniqueConfig::default() };
-            let mut s = Session::new(
-                &scene,
-                TechniqueKind::PARTICLE,
-                SessionOptions { config: Some(config), ..SessionOptions::default() },
-            )
-            .expect("session");
-            let (mut track, mut simulated, mut sensed) = (Vec::new(), 0, 0);
-            while s.time() < g.duration() + 0.5 {
-                let hands = g.sample(s.time());
-                s.step(&hands).expect("step");
-                track.push(s.world().object_pose(ObjectId::new(0)).position);
-                simulated += s.counts().bodies;
-                sensed += s.frame().edges.len();
-            }
-            (track, simulated, sensed)
+            particle_track(&scene, &g, TechniqueConfig { particle_cull: cull, ..TechniqueConfig::default() })
         };
         let (culled, simulated, sensed) = run(true);
         let (full, all, _) = run(false);
