@@ -5,6 +5,9 @@
 //! files do. What no test here can try is the device itself (these machines
 //! have no camera); `demo --camera` says so in a build without the feature.
 
+mod common;
+
+use common::asset;
 use std::process::Command;
 use std::time::{Duration, Instant};
 use surfacelab::input::Gesture;
@@ -15,10 +18,6 @@ use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
 use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
-
-fn asset(path: &str) -> String {
-    format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))
-}
 
 /// The box's final position after `gesture` filmed by a `kind` camera:
 /// read from the PNG files, and streamed through the camera path.

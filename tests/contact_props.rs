@@ -251,8 +251,15 @@ fn touching_regular_polygons_are_not_called_separated() {
 }
 
 proptest! {
+    // A rejected case (`walk_matches_parry` on a pair within 1e-6 of
+    // touching, `touching_by_construction_is_touching` on a B that rounding
+    // welds far from the origin) is not a tested case: proptest still runs
+    // 600 real ones, and fails the test past `max_global_rejects`. Both are
+    // rounding coincidences on continuous random inputs: none in 600 cases
+    // measured, so six (1% of the cases) fail the test.
     #![proptest_config(ProptestConfig {
         cases: 600,
+        max_global_rejects: 6,
         failure_persistence: None,
         ..ProptestConfig::default()
     })]
@@ -409,8 +416,12 @@ fn star() -> impl Strategy<Value = Vec<[f64; 2]>> {
 }
 
 proptest! {
+    // Random stars that are not simple polygons (too few points left after
+    // merging close angles) are rejected, not tested: 2 measured beside the
+    // 60 real cases; more than ten (a sixth of the cases) fail the test.
     #![proptest_config(ProptestConfig {
         cases: 60,
+        max_global_rejects: 10,
         failure_persistence: None,
         ..ProptestConfig::default()
     })]

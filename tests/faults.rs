@@ -3,20 +3,14 @@
 //! leaves what was written whole, and `--resume` (or the report written at
 //! the stop) carries on exactly.
 
+mod common;
+
 use std::io::BufRead as _;
 use std::path::{Path, PathBuf};
+use common::{bin, text};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
-fn bin() -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_surfacelab"));
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
-}
-
-fn text(o: &Output) -> String {
-    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
-}
 
 /// A small design whose trials end at a 5 s limit: 4 participants × 2
 /// tasks × 3 techniques × 2 feedback = 48 trials, a few seconds in all.

@@ -1,13 +1,9 @@
 //! `surfacelab participants fitts`: the simulated participants' one-finger
 //! drags against Fitts' law, through the real binary at a small size.
 
-use std::process::Command;
+mod common;
 
-fn bin() -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_surfacelab"));
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
-}
+use common::bin;
 
 /// Two participants, three distances (5-60 cm) by two widths (0.5 and 4
 /// cm), two drags each: movement time follows the index of difficulty

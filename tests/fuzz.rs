@@ -17,9 +17,12 @@
 //! smallest failing input. Every crasher found is kept below as a named
 //! regression test.
 
+mod common;
+
+use common::scratch;
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::time::{Duration, Instant};
 use surfacelab::harness::study::RunFile;
 use surfacelab::harness::study::output::recover_trials;
@@ -223,17 +226,21 @@ fn fuzz_gesture_files() {
         if let Ok(g) = Gesture::from_str(&apply(t, &edits), "fuzz.toml") {
             // A gesture that loads is bounded: sampling it ends.
             prop_assert!(g.duration() <= 600.0, "duration {}", g.duration());
-            let hands = g.sample(g.duration() / 2.0);
             // What loads draws without a panic (contours included).
-            let sensor = surfacelab::pipeline::surface::Sensor::new(160, 120, 1.0, 0.75);
-            let _ = surfacelab::pipeline::surface::rasterize(
-                &hands,
-                &sensor,
-                &surfacelab::pipeline::surface::RasterParams::default(),
-            );
+            draw(&g.sample(g.duration() / 2.0));
         }
         Ok(())
     });
+}
+
+/// Rasterizes `hands` on a small sensor; a panic fails the fuzz case.
+fn draw(hands: &[surfacelab::pipeline::surface::Hand]) {
+    let sensor = surfacelab::pipeline::surface::Sensor::new(160, 120, 1.0, 0.75);
+    let _ = surfacelab::pipeline::surface::rasterize(
+        hands,
+        &sensor,
+        &surfacelab::pipeline::surface::RasterParams::default(),
+    );
 }
 
 #[test]
@@ -360,12 +367,7 @@ fn fuzz_osc_packets() {
             prop_assert!(h.pose.x.is_finite() && h.pose.y.is_finite(), "a hand from TUIO is finite: {h:?}");
         }
         // Whatever arrived draws (contours included) without a panic.
-        let sensor = surfacelab::pipeline::surface::Sensor::new(160, 120, 1.0, 0.75);
-        let _ = surfacelab::pipeline::surface::rasterize(
-            &hands,
-            &sensor,
-            &surfacelab::pipeline::surface::RasterParams::default(),
-        );
+        draw(&hands);
         Ok(())
     });
 }
@@ -425,12 +427,6 @@ fn fuzz_command_line() {
         let _ = surfacelab::cli::Cli::try_parse_from(std::iter::once("surfacelab").chain(args));
         Ok(())
     });
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("surfacelab-fuzz-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&d).expect("temp dir");
-    d
 }
 
 #[test]

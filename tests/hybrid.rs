@@ -8,16 +8,15 @@
 //! It may be possible to extend the particle approach to allow proxies to
 //! persist at a given depth".
 
+mod common;
+
+use common::{asset, gestures};
 use glam::Vec2;
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
 use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
-
-fn asset(path: &str) -> String {
-    format!("{}/{path}", env!("CARGO_MANIFEST_DIR"))
-}
 
 fn session(task: &str, kind: TechniqueKind) -> Session {
     let s = scene::load(&asset(task)).expect("scene loads");
@@ -144,22 +143,7 @@ fn hybrid_presses_from_the_top_like_particle() {
 fn hybrid_grips_never_spawn_inside_an_object() {
     // A flat hand landing half over the box: the table part makes grips
     // beside the box, none inside it, so the box is not shoved away.
-    let g = Gesture::from_str(
-        r#"
-format = "surfacelab-gesture"
-version = 1
-[[hands]]
-id = 1
-kind = "flat_hand"
-[[hands.keys]]
-t = 0.0
-pos = [0.06, 0.0]
-[[hands.keys]]
-t = 0.5
-"#,
-        "inline",
-    )
-    .expect("gesture");
+    let g = gestures::gesture("inline", &[gestures::hand(1, "flat_hand", &[(0.0, [0.06, 0.0]), (0.5, [0.06, 0.0])])]);
     let mut s = session("tasks/cases/small_box.toml", TechniqueKind::HYBRID);
     s.replay_until(&g, 0.5).expect("replay");
     let p = s.world().object_pose(ObjectId::new(0));

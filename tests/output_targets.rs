@@ -3,14 +3,13 @@
 //! straight through, `-` to standard output; a write that fails exits 1
 //! naming the path and the OS error, and never replaces the node.
 
+mod common;
+
 use std::io::Read as _;
 use std::os::unix::fs::FileTypeExt as _;
 use std::path::{Path, PathBuf};
+use common::bin;
 use std::process::{Command, Output, Stdio};
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_surfacelab"))
-}
 
 /// A one-box drag with the report going to `report`.
 fn run_to(report: &str) -> Command {

@@ -2,20 +2,16 @@
 //! tasks, learns across trials, resumes to the same bytes, and cannot tell
 //! one technique registered under two names apart.
 
+mod common;
+
+use common::scratch;
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use surfacelab::harness::participant::{Learner, Manner, PlannerOptions, ScriptedRunner, Skill, run_scripted_with};
 use surfacelab::harness::study::output::{RUN_TOML, TRIALS_CSV};
 use surfacelab::harness::study::{RunOptions, StudyDesign, resume_study, run_study};
 use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("participants").join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create scratch dir");
-    dir
-}
 
 fn quiet() -> RunOptions {
     RunOptions { jobs: 1, progress: false, report_errors: true, shard: None, fsync: false }

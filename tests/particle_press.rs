@@ -6,27 +6,25 @@
 //! divided by what their weight calls for (16 × 0.08 N × dt), is their
 //! *press fraction*.
 
+mod common;
+
+use common::scenes;
 use glam::Vec3;
 use rapier3d::prelude::*;
 use surfacelab::pipeline::world::{Layer, TechniqueBody, World};
 use surfacelab::scene;
 use surfacelab::scene::ObjectId;
 
-const SCENE: &str = r#"
-name = "press"
-description = "A box for particles to press on."
-effects = ["gravity", "friction"]
-[table]
-size = [1.0, 0.75]
-friction = 0.3
-[[objects]]
-name = "box"
-shape = "box"
-size = [0.06, 0.06, 0.03]
-mass = 0.1
-color = "orange"
-position = [0.0, 0.0]
-"#;
+/// A box for particles to press on.
+fn press_scene() -> scene::Scene {
+    scenes::build(&scenes::table("press").table_friction(0.3).object(
+        "box",
+        scenes::cuboid(0.06, 0.06, 0.03),
+        [0.0, 0.0],
+        0.1,
+        "orange",
+    ))
+}
 
 const N: usize = 16;
 const MASS: f32 = 0.2;
@@ -43,7 +41,7 @@ fn ring(box_top: f32, k: usize) -> Vec3 {
 /// (the paper's create/destroy); else the same bodies re-placed each step
 /// (the pooled variant).
 fn press(fresh: bool, steps: usize) -> Vec<f32> {
-    let scene = scene::parse(SCENE, "press").expect("scene");
+    let scene = press_scene();
     let mut world = World::new(&scene);
     for _ in 0..30 {
         world.step();

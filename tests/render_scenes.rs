@@ -6,6 +6,9 @@
 //! refreshes them. A machine with no GPU adapter fails with the Mesa
 //! install hint (it never skips).
 
+mod common;
+
+use common::{asset, gestures};
 use surfacelab::app::scene_view::{self, ViewOptions};
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::TechniqueKind;
@@ -21,44 +24,30 @@ use surfacelab::session::{Session, SessionOptions};
 const TOLERANCE: Tolerance = Tolerance { per_pixel: 12, max_differing_share: 0.005 };
 const SIZE: (u32, u32) = (480, 360);
 
-fn root(p: &str) -> String {
-    format!("{}/{p}", env!("CARGO_MANIFEST_DIR"))
-}
-
 fn gpu() -> GpuContext {
     GpuContext::new_headless()
         .unwrap_or_else(|e| panic!("these tests need a GPU adapter: {}", surfacelab::error::chain(&e)))
 }
 
 fn snapshots() -> SnapshotDir {
-    SnapshotDir::new(root("tests/snapshots"))
+    SnapshotDir::new(asset("tests/snapshots"))
 }
 
 /// A fingertip landing on the sorting scene's big red box (5 cm tall, so
 /// it appears 4% further out on screen) and dragging it left.
-const DRAG_RED_BOX: &str = r#"
-format = "surfacelab-gesture"
-version = 1
-[[hands]]
-id = 1
-kind = "fingertips"
-[[hands.keys]]
-t = 0.0
-pos = [0.052, 0.167]
-[[hands.keys]]
-t = 1.0
-pos = [-0.1, 0.167]
-"#;
+fn drag_red_box() -> String {
+    gestures::text(&[gestures::fingertip(1, &[(0.0, [0.052, 0.167]), (1.0, [-0.1, 0.167])])])
+}
 
 fn session_at(task: &str, kind: TechniqueKind, gesture: Option<&str>, at: f64) -> Session {
-    let scene = scene::load(&root(task)).expect("scene");
+    let scene = scene::load(&asset(task)).expect("scene");
     let mut s = Session::new(&scene, kind, SessionOptions::default()).expect("session");
     match gesture {
         Some(g) => {
             let g = if g.trim_start().starts_with("format") {
                 Gesture::from_str(g, "inline")
             } else {
-                Gesture::load(root(g))
+                Gesture::load(asset(g))
             }
             .expect("gesture");
             s.replay_until(&g, at).expect("replay");
@@ -90,7 +79,7 @@ fn feedback_on_and_off_differ_exactly_by_red_feedback_for_every_technique() {
     let gpu = gpu();
     for kind in TechniqueKind::BUILT_IN {
         // Mid-gesture: a fingertip dragging a box.
-        let s = session_at("tasks/sorting.toml", kind, Some(DRAG_RED_BOX), 0.6);
+        let s = session_at("tasks/sorting.toml", kind, Some(&drag_red_box()), 0.6);
         let off = render::render_to_image(
             &gpu,
             &scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: false }),

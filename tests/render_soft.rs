@@ -6,6 +6,9 @@
 //! `NAME.new.png` and `NAME.diff.png` beside them; `UPDATE_SNAPSHOTS=1`
 //! refreshes them.
 
+mod common;
+
+use common::asset;
 use surfacelab::app::scene_view::{self, ViewOptions};
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::TechniqueKind;
@@ -19,19 +22,15 @@ use surfacelab::session::{Session, SessionOptions};
 const TOLERANCE: Tolerance = Tolerance { per_pixel: 12, max_differing_share: 0.005 };
 const SIZE: (u32, u32) = (480, 360);
 
-fn root(p: &str) -> String {
-    format!("{}/{p}", env!("CARGO_MANIFEST_DIR"))
-}
-
 fn gpu() -> GpuContext {
     GpuContext::new_headless()
         .unwrap_or_else(|e| panic!("these tests need a GPU adapter: {}", surfacelab::error::chain(&e)))
 }
 
 fn session_at(task: &str, gesture: Option<&str>, at: f64) -> Session {
-    let scene = scene::load(&root(task)).expect("scene");
+    let scene = scene::load(&asset(task)).expect("scene");
     let mut s = Session::new(&scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
-    let g = gesture.map(|g| Gesture::load(root(g)).expect("gesture")).unwrap_or_default();
+    let g = gesture.map(|g| Gesture::load(asset(g)).expect("gesture")).unwrap_or_default();
     s.replay_until(&g, at).expect("replay");
     s
 }
@@ -43,7 +42,7 @@ fn the_crumpled_cloth_matches_its_golden_image() {
     assert_eq!(list.deformables.len(), 1, "one cloth");
     assert_eq!(list.deformables[0].positions.len(), 16 * 16);
     let img = render::render_to_image(&gpu(), &list, SIZE.0, SIZE.1).expect("render");
-    SnapshotDir::new(root("tests/snapshots"))
+    SnapshotDir::new(asset("tests/snapshots"))
         .check("soft_cloth", &img, TOLERANCE)
         .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
 }
@@ -57,7 +56,7 @@ fn the_torn_paper_draws_both_pieces() {
     let list = scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true });
     assert!(list.deformables.len() >= 2, "every piece is drawn: {}", list.deformables.len());
     let img = render::render_to_image(&gpu(), &list, SIZE.0, SIZE.1).expect("render");
-    SnapshotDir::new(root("tests/snapshots"))
+    SnapshotDir::new(asset("tests/snapshots"))
         .check("soft_tear", &img, TOLERANCE)
         .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
 }

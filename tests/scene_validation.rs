@@ -85,6 +85,12 @@ fn error(text: &str) -> String {
     }
 }
 
+/// `template` with `from` replaced by `to` does not load, and the error
+/// names the file, the line (when given), the field and `what`.
+fn breaks(template: &str, from: &str, to: &str, line: Option<usize>, field: &str, what: &str) {
+    assert_names(&error(&with(template, from, to)), line, field, what);
+}
+
 /// The error names the file, the line (when given), the field and `what`.
 fn assert_names(e: &str, line: Option<usize>, field: &str, what: &str) {
     let prefix = line.map_or_else(|| "bad.toml: ".to_owned(), |l| format!("bad.toml:{l}: "));
@@ -115,12 +121,9 @@ fn a_wrong_type_is_named_with_its_line() {
 
 #[test]
 fn an_unknown_name_in_a_closed_list_is_named() {
-    let e = error(&with(OBJECTS, "shape = \"box\"", "shape = \"pyramid\""));
-    assert_names(&e, Some(7), "pyramid", "unknown variant");
-    let e = error(&with(OBJECTS, "[\"gravity\"]", "[\"gravity\", \"magnetism\"]"));
-    assert_names(&e, Some(2), "magnetism", "unknown variant");
-    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"juggling\""));
-    assert_names(&e, Some(20), "juggling", "unknown variant");
+    breaks(OBJECTS, "shape = \"box\"", "shape = \"pyramid\"", Some(7), "pyramid", "unknown variant");
+    breaks(OBJECTS, "[\"gravity\"]", "[\"gravity\", \"magnetism\"]", Some(2), "magnetism", "unknown variant");
+    breaks(OBJECTS, "kind = \"positioning\"", "kind = \"juggling\"", Some(20), "juggling", "unknown variant");
 }
 
 #[test]
@@ -131,62 +134,90 @@ fn a_missing_required_field_is_named() {
 
 #[test]
 fn a_missing_field_a_shape_or_body_needs_is_named() {
-    let e = error(&with(OBJECTS, "size = [0.1, 0.1, 0.1]\n", ""));
-    assert_names(&e, Some(5), "objects[0].size", "a box needs `size = [x, y, z]`");
-    let e = error(&with(OBJECTS, "radius = 0.03\n", ""));
-    assert_names(&e, Some(12), "objects[1].radius", "a sphere needs `radius`");
-    let e = error(&with(OBJECTS, "mass = 0.1\n", ""));
-    assert_names(&e, Some(12), "objects[1].mass", "a dynamic object needs `mass`");
-    let e = error(&with(SOFT, "mass = 0.03\n", ""));
-    assert_names(&e, Some(5), "soft_bodies[0].mass", "needs `mass` (kg) or `density`");
+    breaks(OBJECTS, "size = [0.1, 0.1, 0.1]\n", "", Some(5), "objects[0].size", "a box needs `size = [x, y, z]`");
+    breaks(OBJECTS, "radius = 0.03\n", "", Some(12), "objects[1].radius", "a sphere needs `radius`");
+    breaks(OBJECTS, "mass = 0.1\n", "", Some(12), "objects[1].mass", "a dynamic object needs `mass`");
+    breaks(SOFT, "mass = 0.03\n", "", Some(5), "soft_bodies[0].mass", "needs `mass` (kg) or `density`");
 }
 
 #[test]
 fn a_missing_field_a_goal_needs_is_named() {
-    let e = error(&with(STEER, "finish = [-0.3, -0.2]\n", ""));
-    assert_names(&e, Some(13), "goal.finish", "a steering goal needs `finish`");
-    let e = error(&with(STEER, "object = \"puck\"\n", ""));
-    assert_names(&e, Some(13), "goal.object", "this goal needs `goal.object`");
-    let e = error(&with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", ""));
-    assert_names(&e, Some(19), "goal.targets", "at least one [[goal.targets]]");
-    let no_targets = with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", "");
-    let e = error(&with(&no_targets, "kind = \"positioning\"", "kind = \"sorting\""));
-    assert_names(&e, Some(19), "goal.zones", "at least one [[goal.zones]]");
-    let e = error(&with(&no_targets, "kind = \"positioning\"", "kind = \"gather\""));
-    assert_names(&e, Some(19), "goal.center", "a gather goal needs `center`");
-    let e = error(&with(&no_targets, "kind = \"positioning\"", "kind = \"region\""));
-    assert_names(&e, Some(19), "goal.min", "a region goal needs `min`");
+    breaks(STEER, "finish = [-0.3, -0.2]\n", "", Some(13), "goal.finish", "a steering goal needs `finish`");
+    breaks(STEER, "object = \"puck\"\n", "", Some(13), "goal.object", "this goal needs `goal.object`");
+    let targets = "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n";
+    breaks(OBJECTS, targets, "", Some(19), "goal.targets", "at least one [[goal.targets]]");
+    let no_targets = with(OBJECTS, targets, "");
+    let positioning = "kind = \"positioning\"";
+    breaks(&no_targets, positioning, "kind = \"sorting\"", Some(19), "goal.zones", "at least one [[goal.zones]]");
+    breaks(&no_targets, positioning, "kind = \"gather\"", Some(19), "goal.center", "a gather goal needs `center`");
+    breaks(&no_targets, positioning, "kind = \"region\"", Some(19), "goal.min", "a region goal needs `min`");
     // The positioning goal's targets under another kind are not dropped.
-    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"sorting\""));
-    assert_names(&e, Some(19), "goal.targets", "a sorting goal has no `targets`");
-    let e = error(&with(SOFT, "body = \"paper\"\n", ""));
-    assert_names(&e, Some(14), "goal.body", "this goal needs `body`");
+    breaks(OBJECTS, positioning, "kind = \"sorting\"", Some(19), "goal.targets", "a sorting goal has no `targets`");
+    breaks(SOFT, "body = \"paper\"\n", "", Some(14), "goal.body", "this goal needs `body`");
 }
 
 #[test]
 fn a_value_out_of_range_is_named_with_its_range() {
-    let e = error(&with(OBJECTS, "mass = 1.0", "mass = -2.0"));
-    assert_names(&e, Some(9), "objects[0].mass", "-2 is out of range (0.001..=1000)");
-    let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1.0, 0.75]\nrestitution = 1.5"));
-    assert_names(&e, Some(5), "table.restitution", "1.5 is out of range (0..=1)");
-    let e = error(&with(OBJECTS, "position = [0.0, 0.0]", "position = [0.0, 0.0]\nrotation_deg = [0.0, 0.0, 400.0]"));
-    assert_names(&e, Some(12), "objects[0].rotation_deg[2]", "400 is out of range (-360..=360)");
-    let e = error(&with(OBJECTS, "kind = \"positioning\"", "kind = \"positioning\"\ndwell_s = 100.0"));
-    assert_names(&e, Some(21), "goal.dwell_s", "100 is out of range (0..=60)");
-    let e = error(&format!("{OBJECTS}[physics]\ntimestep_hz = 5.0\n"));
-    assert_names(&e, Some(25), "physics.timestep_hz", "5 is out of range (10..=10000)");
-    let e = error(&with(SOFT, "mass = 0.03", "mass = 0.03\ncrumple = 0.9"));
-    assert_names(&e, Some(12), "soft_bodies[0].crumple", "0.9 is out of range (0..=0.6)");
-    let e = error(&with(SOFT, "mass = 0.03", "mass = 0.03\nthickness = 0.1"));
-    assert_names(&e, Some(12), "soft_bodies[0].thickness", "out of range (up to 0.05 m)");
+    breaks(OBJECTS, "mass = 1.0", "mass = -2.0", Some(9), "objects[0].mass", "-2 is out of range (0.001..=1000)");
+    breaks(
+        OBJECTS,
+        "size = [1.0, 0.75]",
+        "size = [1.0, 0.75]\nrestitution = 1.5",
+        Some(5),
+        "table.restitution",
+        "1.5 is out of range (0..=1)",
+    );
+    breaks(
+        OBJECTS,
+        "position = [0.0, 0.0]",
+        "position = [0.0, 0.0]\nrotation_deg = [0.0, 0.0, 400.0]",
+        Some(12),
+        "objects[0].rotation_deg[2]",
+        "400 is out of range (-360..=360)",
+    );
+    breaks(
+        OBJECTS,
+        "kind = \"positioning\"",
+        "kind = \"positioning\"\ndwell_s = 100.0",
+        Some(21),
+        "goal.dwell_s",
+        "100 is out of range (0..=60)",
+    );
+    assert_names(
+        &error(&format!("{OBJECTS}[physics]\ntimestep_hz = 5.0\n")),
+        Some(25),
+        "physics.timestep_hz",
+        "5 is out of range (10..=10000)",
+    );
+    breaks(
+        SOFT,
+        "mass = 0.03",
+        "mass = 0.03\ncrumple = 0.9",
+        Some(12),
+        "soft_bodies[0].crumple",
+        "0.9 is out of range (0..=0.6)",
+    );
+    breaks(
+        SOFT,
+        "mass = 0.03",
+        "mass = 0.03\nthickness = 0.1",
+        Some(12),
+        "soft_bodies[0].thickness",
+        "out of range (up to 0.05 m)",
+    );
 }
 
 #[test]
 fn a_size_that_must_be_positive_is_named() {
-    let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [0.0, 0.75]"));
-    assert_names(&e, Some(4), "table.size[0]", "0 is out of range (0.05..=10)");
-    let e = error(&with(OBJECTS, "radius = 0.03", "radius = 0.0"));
-    assert_names(&e, Some(15), "objects[1].radius", "0 is out of range (0.001..=10)");
+    breaks(
+        OBJECTS,
+        "size = [1.0, 0.75]",
+        "size = [0.0, 0.75]",
+        Some(4),
+        "table.size[0]",
+        "0 is out of range (0.05..=10)",
+    );
+    breaks(OBJECTS, "radius = 0.03", "radius = 0.0", Some(15), "objects[1].radius", "0 is out of range (0.001..=10)");
     let e = error(&with(OBJECTS, "effects = [\"gravity\"]", "effects = [\"gravity\"]\ntime_limit_s = 0"));
     assert!(e.starts_with("bad.toml"), "{e}");
     assert!(e.contains("time_limit_s"), "{e}");
@@ -194,58 +225,150 @@ fn a_size_that_must_be_positive_is_named() {
 
 #[test]
 fn a_count_out_of_range_is_named() {
-    let e = error(&format!("{OBJECTS}[physics]\nsolver_iterations = 0\n"));
-    assert_names(&e, Some(25), "physics.solver_iterations", "0 is out of range (1..=100)");
-    let e = error(&with(OBJECTS, "position = [0.2, 0.0]", "position = [0.2, 0.0]\ncount = 0"));
-    assert_names(&e, Some(19), "objects[1].count", "0 is out of range (1..=1000)");
-    let e = error(&with(SOFT, "resolution = [16, 11]", "resolution = [16, 1]"));
-    assert_names(&e, Some(9), "soft_bodies[0].resolution[1]", "1 is out of range (2..=128)");
-    let e = error(&format!("{SOFT}pieces = 1\n"));
-    assert_names(&e, Some(17), "goal.pieces", "1 is out of range (2..=100)");
-    let e = error(&with(SOFT, "resolution = [16, 11]", "resolution = [128, 128]"));
-    assert_names(&e, Some(9), "soft_bodies[0].resolution", "16384 particles is too many");
+    assert_names(
+        &error(&format!("{OBJECTS}[physics]\nsolver_iterations = 0\n")),
+        Some(25),
+        "physics.solver_iterations",
+        "0 is out of range (1..=100)",
+    );
+    breaks(
+        OBJECTS,
+        "position = [0.2, 0.0]",
+        "position = [0.2, 0.0]\ncount = 0",
+        Some(19),
+        "objects[1].count",
+        "0 is out of range (1..=1000)",
+    );
+    breaks(
+        SOFT,
+        "resolution = [16, 11]",
+        "resolution = [16, 1]",
+        Some(9),
+        "soft_bodies[0].resolution[1]",
+        "1 is out of range (2..=128)",
+    );
+    assert_names(&error(&format!("{SOFT}pieces = 1\n")), Some(17), "goal.pieces", "1 is out of range (2..=100)");
+    breaks(
+        SOFT,
+        "resolution = [16, 11]",
+        "resolution = [128, 128]",
+        Some(9),
+        "soft_bodies[0].resolution",
+        "16384 particles is too many",
+    );
 }
 
 #[test]
 fn a_number_that_is_not_finite_is_named() {
-    let e = error(&with(OBJECTS, "mass = 1.0", "mass = nan"));
-    assert_names(&e, Some(9), "objects[0].mass", "must be a finite number, got NaN");
-    let e = error(&with(OBJECTS, "position = [0.0, 0.0]", "position = [inf, 0.0]"));
-    assert_names(&e, Some(11), "objects[0].position[0]", "must be a finite number, got inf");
-    let e = error(&with(OBJECTS, "position = [0.2, 0.1]", "position = [nan, 0.1]"));
-    assert_names(&e, Some(23), "goal.targets[0].position", "must be finite");
+    breaks(OBJECTS, "mass = 1.0", "mass = nan", Some(9), "objects[0].mass", "must be a finite number, got NaN");
+    breaks(
+        OBJECTS,
+        "position = [0.0, 0.0]",
+        "position = [inf, 0.0]",
+        Some(11),
+        "objects[0].position[0]",
+        "must be a finite number, got inf",
+    );
+    breaks(
+        OBJECTS,
+        "position = [0.2, 0.1]",
+        "position = [nan, 0.1]",
+        Some(23),
+        "goal.targets[0].position",
+        "must be finite",
+    );
 }
 
 #[test]
 fn an_array_of_the_wrong_length_is_named() {
-    let e = error(&with(OBJECTS, "position = [0.0, 0.0]", "position = [0.0, 0.0, 0.0, 0.0]"));
-    assert_names(&e, Some(11), "objects[0].position", "must be [x, y] or [x, y, z]");
-    let e = error(&with(SOFT, "size = [0.3, 0.2]", "size = [0.3, 0.2, 0.1]"));
-    assert_names(&e, Some(8), "soft_bodies[0].size", "a cloth needs `size = [x, y]`");
-    let e = error(&with(SOFT, "resolution = [16, 11]", "resolution = [16]"));
-    assert_names(&e, Some(9), "soft_bodies[0].resolution", "needs 2 entries, one per side, got 1");
+    breaks(
+        OBJECTS,
+        "position = [0.0, 0.0]",
+        "position = [0.0, 0.0, 0.0, 0.0]",
+        Some(11),
+        "objects[0].position",
+        "must be [x, y] or [x, y, z]",
+    );
+    breaks(
+        SOFT,
+        "size = [0.3, 0.2]",
+        "size = [0.3, 0.2, 0.1]",
+        Some(8),
+        "soft_bodies[0].size",
+        "a cloth needs `size = [x, y]`",
+    );
+    breaks(
+        SOFT,
+        "resolution = [16, 11]",
+        "resolution = [16]",
+        Some(9),
+        "soft_bodies[0].resolution",
+        "needs 2 entries, one per side, got 1",
+    );
 }
 
 #[test]
 fn a_place_off_the_table_is_named() {
-    let e = error(&with(OBJECTS, "position = [0.2, 0.0]", "position = [0.9, 0.0]"));
-    assert_names(&e, Some(18), "objects[1].position", "(0.900, 0.000) lies off the table (±0.500 × ±0.375)");
-    let e = error(&with(OBJECTS, "position = [0.2, 0.1]", "position = [0.9, 0.1]"));
-    assert_names(&e, Some(23), "goal.targets[0].position", "lies off the table");
-    let e = error(&with(SOFT, "position = [0.0, 0.0]", "position = [0.0, 0.5]"));
-    assert_names(&e, Some(10), "soft_bodies[0].position", "lies off the table");
-    let e = error(&with(STEER, "waypoints = [[0.1, 0.18]]", "waypoints = [[0.1, 0.18], [0.1, 0.5]]"));
-    assert_names(&e, Some(16), "goal.waypoints[1]", "lies off the table");
+    breaks(
+        OBJECTS,
+        "position = [0.2, 0.0]",
+        "position = [0.9, 0.0]",
+        Some(18),
+        "objects[1].position",
+        "(0.900, 0.000) lies off the table (±0.500 × ±0.375)",
+    );
+    breaks(
+        OBJECTS,
+        "position = [0.2, 0.1]",
+        "position = [0.9, 0.1]",
+        Some(23),
+        "goal.targets[0].position",
+        "lies off the table",
+    );
+    breaks(
+        SOFT,
+        "position = [0.0, 0.0]",
+        "position = [0.0, 0.5]",
+        Some(10),
+        "soft_bodies[0].position",
+        "lies off the table",
+    );
+    breaks(
+        STEER,
+        "waypoints = [[0.1, 0.18]]",
+        "waypoints = [[0.1, 0.18], [0.1, 0.5]]",
+        Some(16),
+        "goal.waypoints[1]",
+        "lies off the table",
+    );
 }
 
 #[test]
 fn an_unknown_colour_is_named() {
-    let e = error(&with(OBJECTS, "color = \"red\"", "color = \"reddish\""));
-    assert_names(&e, Some(10), "objects[0].color", "unknown colour `reddish` (use #rrggbb or one of red, blue");
-    let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1.0, 0.75]\ncolor = \"plaid\""));
-    assert_names(&e, Some(5), "table.color", "unknown colour `plaid`");
-    let e = error(&with(SOFT, "color = \"white\"", "color = \"#12345\""));
-    assert_names(&e, Some(13), "soft_bodies[0].color", "unknown colour `#12345`");
+    breaks(
+        OBJECTS,
+        "color = \"red\"",
+        "color = \"reddish\"",
+        Some(10),
+        "objects[0].color",
+        "unknown colour `reddish` (use #rrggbb or one of red, blue",
+    );
+    breaks(
+        OBJECTS,
+        "size = [1.0, 0.75]",
+        "size = [1.0, 0.75]\ncolor = \"plaid\"",
+        Some(5),
+        "table.color",
+        "unknown colour `plaid`",
+    );
+    breaks(
+        SOFT,
+        "color = \"white\"",
+        "color = \"#12345\"",
+        Some(13),
+        "soft_bodies[0].color",
+        "unknown colour `#12345`",
+    );
     let zone = "kind = \"sorting\"\n[[goal.zones]]\ncolor = \"mauvish\"\nmin = [0.1, 0.1]\nmax = [0.3, 0.3]\n";
     let e = error(&with(
         &with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", ""),
@@ -268,8 +391,7 @@ fn an_inverted_zone_is_named() {
 
 #[test]
 fn a_duplicate_name_is_named() {
-    let e = error(&with(OBJECTS, "name = \"ball\"", "name = \"a\""));
-    assert_names(&e, Some(13), "objects[1].name", "`a` is the name of two objects");
+    breaks(OBJECTS, "name = \"ball\"", "name = \"a\"", Some(13), "objects[1].name", "`a` is the name of two objects");
     let e = error(&with(
         &with(
             SOFT,
@@ -284,16 +406,18 @@ fn a_duplicate_name_is_named() {
 
 #[test]
 fn a_reference_to_nothing_is_named() {
-    let e = error(&with(OBJECTS, "object = \"a\"", "object = \"b\""));
-    assert_names(&e, Some(22), "goal.targets[0].object", "no object named `b`");
-    let e = error(&with(STEER, "object = \"puck\"", "object = \"disc\""));
-    assert_names(&e, Some(15), "goal.object", "no object named `disc`");
-    let e = error(&with(STEER, "object = \"puck\"", "object = \"puck\"\nplatform = \"stage\""));
-    assert_names(&e, Some(16), "goal.platform", "no object named `stage`");
-    let e = error(&with(SOFT, "body = \"paper\"", "body = \"napkin\""));
-    assert_names(&e, Some(16), "goal.body", "no soft body named `napkin`");
-    let e = error(&with(SOFT, "tear_strain = 0.25\n", ""));
-    assert_names(&e, Some(15), "goal.body", "`paper` cannot tear: give it a `tear_strain`");
+    breaks(OBJECTS, "object = \"a\"", "object = \"b\"", Some(22), "goal.targets[0].object", "no object named `b`");
+    breaks(STEER, "object = \"puck\"", "object = \"disc\"", Some(15), "goal.object", "no object named `disc`");
+    breaks(
+        STEER,
+        "object = \"puck\"",
+        "object = \"puck\"\nplatform = \"stage\"",
+        Some(16),
+        "goal.platform",
+        "no object named `stage`",
+    );
+    breaks(SOFT, "body = \"paper\"", "body = \"napkin\"", Some(16), "goal.body", "no soft body named `napkin`");
+    breaks(SOFT, "tear_strain = 0.25\n", "", Some(15), "goal.body", "`paper` cannot tear: give it a `tear_strain`");
     let e = error(
         &with(SOFT, "kind = \"torn\"", "kind = \"cloth_flat\"")
             .replace("kind = \"cloth\"", "kind = \"volume\"")
@@ -307,8 +431,14 @@ fn a_reference_to_nothing_is_named() {
 
 #[test]
 fn fields_that_do_not_go_together_are_named() {
-    let e = error(&with(SOFT, "mass = 0.03", "mass = 0.03\ndensity = 0.5"));
-    assert_names(&e, Some(12), "soft_bodies[0].density", "give `mass` or `density`, not both");
+    breaks(
+        SOFT,
+        "mass = 0.03",
+        "mass = 0.03\ndensity = 0.5",
+        Some(12),
+        "soft_bodies[0].density",
+        "give `mass` or `density`, not both",
+    );
     let volume = with(
         &with(&with(SOFT, "kind = \"cloth\"", "kind = \"volume\""), "size = [0.3, 0.2]", "size = [0.3, 0.2, 0.05]"),
         "resolution = [16, 11]",
@@ -316,20 +446,50 @@ fn fields_that_do_not_go_together_are_named() {
     )
     .replace("\"cloth\", \"tearing\"", "\"soft_bodies\", \"tearing\"");
     scene::parse(&volume, "volume.toml").unwrap_or_else(|e| panic!("the volume loads: {e}"));
-    let e = error(&with(&volume, "mass = 0.03", "mass = 0.03\nbending = 2.0"));
-    assert_names(&e, Some(12), "soft_bodies[0].bending", "only a cloth has bending springs");
-    let e = error(&with(&volume, "mass = 0.03", "mass = 0.03\ncrumple = 0.2"));
-    assert_names(&e, Some(12), "soft_bodies[0].crumple", "only a cloth can start crumpled");
-    let e = error(&with(&volume, "mass = 0.03", "mass = 0.03\ncrease = 0.2"));
-    assert_names(&e, Some(12), "soft_bodies[0].crease", "only a cloth creases");
+    breaks(
+        &volume,
+        "mass = 0.03",
+        "mass = 0.03\nbending = 2.0",
+        Some(12),
+        "soft_bodies[0].bending",
+        "only a cloth has bending springs",
+    );
+    breaks(
+        &volume,
+        "mass = 0.03",
+        "mass = 0.03\ncrumple = 0.2",
+        Some(12),
+        "soft_bodies[0].crumple",
+        "only a cloth can start crumpled",
+    );
+    breaks(
+        &volume,
+        "mass = 0.03",
+        "mass = 0.03\ncrease = 0.2",
+        Some(12),
+        "soft_bodies[0].crease",
+        "only a cloth creases",
+    );
 }
 
 #[test]
 fn an_effect_a_body_needs_but_the_scene_lacks_is_named() {
-    let e = error(&with(SOFT, "\"cloth\", \"tearing\"", "\"cloth\""));
-    assert_names(&e, Some(12), "soft_bodies[0].tear_strain", "tearing needs the `tearing` effect: add it to `effects`");
-    let e = error(&with(SOFT, "\"cloth\", \"tearing\"", "\"tearing\""));
-    assert_names(&e, Some(7), "soft_bodies[0].kind", "a cloth needs the `cloth` effect");
+    breaks(
+        SOFT,
+        "\"cloth\", \"tearing\"",
+        "\"cloth\"",
+        Some(12),
+        "soft_bodies[0].tear_strain",
+        "tearing needs the `tearing` effect: add it to `effects`",
+    );
+    breaks(
+        SOFT,
+        "\"cloth\", \"tearing\"",
+        "\"tearing\"",
+        Some(7),
+        "soft_bodies[0].kind",
+        "a cloth needs the `cloth` effect",
+    );
 }
 
 /// A scene that loads must hold nothing a solver cannot take: every number
@@ -354,33 +514,76 @@ fn a_number_past_its_documented_bound_is_named_with_the_bound() {
     let e = error(&fixed("[60.0, 0.0]"));
     assert_names(&e, Some(12), "objects[0].position", "copy 3 lies at (120, 0), farther than 100 m");
 
-    let e = error(&with(OBJECTS, "mass = 1.0", "mass = 1e-30"));
-    assert_names(&e, Some(9), "objects[0].mass", "1e-30 is out of range (0.001..=1000)");
-    let e = error(&with(OBJECTS, "size = [0.1, 0.1, 0.1]", "size = [0.1, 1e30, 0.1]"));
-    assert_names(&e, Some(8), "objects[0].size[1]", "1e30 is out of range (0.001..=10)");
-    let e = error(&with(OBJECTS, "size = [1.0, 0.75]", "size = [1e30, 0.75]"));
-    assert_names(&e, Some(4), "table.size[0]", "1e30 is out of range (0.05..=10)");
-    let e = error(&with(OBJECTS, "effects = [\"gravity\"]", "effects = [\"gravity\"]\ntime_limit_s = 1e9"));
-    assert_names(&e, Some(3), "time_limit_s", "1e9 is out of range (at most 600)");
-    let e = error(&format!("{OBJECTS}[physics]\nccd_substeps = 1000000\n"));
-    assert_names(&e, Some(25), "physics.ccd_substeps", "1000000 is out of range (0..=16)");
+    breaks(OBJECTS, "mass = 1.0", "mass = 1e-30", Some(9), "objects[0].mass", "1e-30 is out of range (0.001..=1000)");
+    breaks(
+        OBJECTS,
+        "size = [0.1, 0.1, 0.1]",
+        "size = [0.1, 1e30, 0.1]",
+        Some(8),
+        "objects[0].size[1]",
+        "1e30 is out of range (0.001..=10)",
+    );
+    breaks(
+        OBJECTS,
+        "size = [1.0, 0.75]",
+        "size = [1e30, 0.75]",
+        Some(4),
+        "table.size[0]",
+        "1e30 is out of range (0.05..=10)",
+    );
+    breaks(
+        OBJECTS,
+        "effects = [\"gravity\"]",
+        "effects = [\"gravity\"]\ntime_limit_s = 1e9",
+        Some(3),
+        "time_limit_s",
+        "1e9 is out of range (at most 600)",
+    );
+    assert_names(
+        &error(&format!("{OBJECTS}[physics]\nccd_substeps = 1000000\n")),
+        Some(25),
+        "physics.ccd_substeps",
+        "1000000 is out of range (0..=16)",
+    );
 
     // Cylinders and capsules of 1e30 would reach parry and panic in its EPA.
-    let e = error(&with(STEER, "height = 0.02", "height = 1e30"));
-    assert_names(&e, Some(9), "objects[0].height", "1e30 is out of range (0.001..=10)");
-    let e = error(&with(STEER, "radius = 0.025", "radius = 1e30"));
-    assert_names(&e, Some(8), "objects[0].radius", "1e30 is out of range (0.001..=10)");
+    breaks(STEER, "height = 0.02", "height = 1e30", Some(9), "objects[0].height", "1e30 is out of range (0.001..=10)");
+    breaks(STEER, "radius = 0.025", "radius = 1e30", Some(8), "objects[0].radius", "1e30 is out of range (0.001..=10)");
     let capsule = with(&with(STEER, "shape = \"cylinder\"", "shape = \"capsule\""), "height = 0.02", "height = 1e30");
     assert_names(&error(&capsule), Some(9), "objects[0].height", "1e30 is out of range (0..=10)");
 
-    let e = error(&with(SOFT, "size = [0.3, 0.2]", "size = [0.3, 1e30]"));
-    assert_names(&e, Some(8), "soft_bodies[0].size[1]", "1e30 is out of range (0.001..=10)");
-    let e = error(&with(SOFT, "mass = 0.03", "mass = 1e-30"));
-    assert_names(&e, Some(11), "soft_bodies[0].mass", "1e-30 is out of range (0.001..=1000)");
-    let e = error(&with(SOFT, "mass = 0.03", "density = 19000.0"));
-    assert_names(&e, Some(11), "soft_bodies[0].density", "gives a mass of 1140 kg, out of range (0.001..=1000 kg)");
-    let e = error(&with(STEER, "finish = [-0.3, -0.2]", "finish = [-0.3, -0.2]\nfinish_radius = 1e30"));
-    assert_names(&e, Some(18), "goal.finish_radius", "1e30 is out of range (at most 10)");
+    breaks(
+        SOFT,
+        "size = [0.3, 0.2]",
+        "size = [0.3, 1e30]",
+        Some(8),
+        "soft_bodies[0].size[1]",
+        "1e30 is out of range (0.001..=10)",
+    );
+    breaks(
+        SOFT,
+        "mass = 0.03",
+        "mass = 1e-30",
+        Some(11),
+        "soft_bodies[0].mass",
+        "1e-30 is out of range (0.001..=1000)",
+    );
+    breaks(
+        SOFT,
+        "mass = 0.03",
+        "density = 19000.0",
+        Some(11),
+        "soft_bodies[0].density",
+        "gives a mass of 1140 kg, out of range (0.001..=1000 kg)",
+    );
+    breaks(
+        STEER,
+        "finish = [-0.3, -0.2]",
+        "finish = [-0.3, -0.2]\nfinish_radius = 1e30",
+        Some(18),
+        "goal.finish_radius",
+        "1e30 is out of range (at most 10)",
+    );
 }
 
 #[test]
@@ -429,12 +632,16 @@ fn a_duplicate_among_the_most_objects_a_scene_may_have_is_named_at_its_line() {
 /// object's `mass` (line 9, its `[[objects]]` header is line 5).
 #[test]
 fn a_bad_value_in_a_table_is_named_at_its_own_line() {
-    let e = error(&with(STEER, "finish = [-0.3, -0.2]", "finish = [-3.0, -0.2]"));
-    assert_names(&e, Some(17), "goal.finish", "lies off the table");
-    let e = error(&with(OBJECTS, "object = \"a\"", "object = \"nobody\""));
-    assert_names(&e, Some(22), "goal.targets[0].object", "no object named `nobody`");
-    let e = error(&with(OBJECTS, "mass = 1.0", "mass = -1.0"));
-    assert_names(&e, Some(9), "objects[0].mass", "");
+    breaks(STEER, "finish = [-0.3, -0.2]", "finish = [-3.0, -0.2]", Some(17), "goal.finish", "lies off the table");
+    breaks(
+        OBJECTS,
+        "object = \"a\"",
+        "object = \"nobody\"",
+        Some(22),
+        "goal.targets[0].object",
+        "no object named `nobody`",
+    );
+    breaks(OBJECTS, "mass = 1.0", "mass = -1.0", Some(9), "objects[0].mass", "");
 }
 
 /// The region goal the silent-acceptance checks break: a 10 cm cube `a`

@@ -6,6 +6,9 @@
 //! the cluster cannot start, the cluster tests fail with the script's output:
 //! they never skip.
 
+mod common;
+
+use common::{bin, text};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -31,16 +34,6 @@ const STUDY: [&str; 11] = [
 
 /// How long a sweep may take on the local cluster before the test gives up.
 const WAIT: Duration = Duration::from_mins(5);
-
-fn bin() -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_surfacelab"));
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
-}
-
-fn text(o: &Output) -> String {
-    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
-}
 
 /// A fresh scratch folder; its name holds a space and a quote, so every
 /// path in the scripts must be quoted right.

@@ -1,10 +1,14 @@
 //! Hard cases that must stay numerically stable, in the shape of rapier's
 //! `joint_stability.rs`: each runs ≥ 10,000 steps through the real pipeline
 //! and asserts no NaN, no object leaving the world, speeds below a stated
-//! limit and penetration below 1 cm. Every case's scene is a file under
-//! `tasks/cases/`, so a failure can be watched in the demo
+//! limit and penetration below a bound of `common/thresholds.rs`. Every
+//! case's scene is a file under `tasks/cases/`, so a failure can be watched
+//! in the demo
 //! (`surfacelab demo --task tasks/cases/NAME.toml`).
 
+mod common;
+
+use common::thresholds::{self, Threshold};
 use glam::{Vec2, Vec3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
@@ -16,30 +20,28 @@ use surfacelab::scene;
 use surfacelab::session::{Session, SessionOptions};
 
 const STEPS: usize = 10_000;
-/// Penetration allowed between scene bodies (m).
-const MAX_PENETRATION: f32 = 0.01;
 
 struct Case<'a> {
     task: &'a str,
     kind: TechniqueKind,
     /// Fastest any object may move (m/s).
-    speed_limit: f32,
+    speed_limit: Threshold,
     /// Steps before penetration is judged (overlap recovery needs a few).
     settle_steps: usize,
     /// Deepest overlap allowed between scene bodies (m).
-    max_penetration: f32,
+    max_penetration: Threshold,
     config: Option<TechniqueConfig>,
     sensor_px: (u32, u32),
 }
 
 impl<'a> Case<'a> {
-    fn new(task: &'a str, kind: TechniqueKind, speed_limit: f32) -> Self {
+    fn new(task: &'a str, kind: TechniqueKind, speed_limit: Threshold) -> Self {
         Case {
             task,
             kind,
             speed_limit,
             settle_steps: 0,
-            max_penetration: MAX_PENETRATION,
+            max_penetration: thresholds::STABILITY_PENETRATION,
             config: None,
             sensor_px: (640, 480),
         }
@@ -92,15 +94,8 @@ fn run_with(
     }
     let st = s.world().stats();
     assert_eq!(st.nan_count, 0, "{} {}: NaN", case.task, case.kind);
-    assert!(
-        st.max_speed_seen < case.speed_limit,
-        "{} {}: max speed {} ≥ {}",
-        case.task,
-        case.kind,
-        st.max_speed_seen,
-        case.speed_limit
-    );
-    assert!(worst_pen < case.max_penetration, "{} {}: penetration {worst_pen}", case.task, case.kind);
+    case.speed_limit.check(st.max_speed_seen, &format!("{} {}: max speed", case.task, case.kind));
+    case.max_penetration.check(worst_pen, &format!("{} {}: penetration", case.task, case.kind));
     s
 }
 
@@ -115,7 +110,7 @@ fn lerp(a: Vec2, b: Vec2, k: usize, frames: usize) -> Vec2 {
 
 #[test]
 fn two_joints_pulling_one_box_apart() {
-    let case = Case::new("tasks/cases/one_box.toml", TechniqueKind::JOINT, 3.0);
+    let case = Case::new("tasks/cases/one_box.toml", TechniqueKind::JOINT, thresholds::SPEED_PULLED_APART);
     run(&case, STEPS, |k, _| {
         vec![
             tip(1, lerp(Vec2::new(-0.04, 0.0), Vec2::new(-0.35, 0.05), k, 60)),
@@ -130,9 +125,11 @@ fn four_joints_pulling_one_box_apart() {
     // the paper's own "breaking joints fling objects". Bounded, not exploding.
     // The last joint slings the box, spinning at 5 rad/s, into the rim wall:
     // its corner arrives at 0.5 m/s (8 mm a step) and rapier's soft contact
-    // lets it in by more than a step's travel for a step or two, then out.
-    // Two steps of that corner's travel bound it.
-    let case = Case { max_penetration: 0.02, ..Case::new("tasks/cases/one_box.toml", TechniqueKind::JOINT, 5.0) };
+    // lets it in for a step or two, then out (`thresholds::FLUNG_BOX_PENETRATION`).
+    let case = Case {
+        max_penetration: thresholds::FLUNG_BOX_PENETRATION,
+        ..Case::new("tasks/cases/one_box.toml", TechniqueKind::JOINT, thresholds::SPEED_FLUNG_BOX)
+    };
     let dirs = [Vec2::X, Vec2::NEG_X, Vec2::Y, Vec2::NEG_Y];
     run(&case, STEPS, |k, _| {
         dirs.iter().enumerate().map(|(i, d)| tip(i as u32 + 1, lerp(*d * 0.045, *d * 0.3, k, 90))).collect()
@@ -141,7 +138,7 @@ fn four_joints_pulling_one_box_apart() {
 
 #[test]
 fn a_joint_on_a_box_that_a_flat_hand_pins_down() {
-    let case = Case::new("tasks/cases/one_box.toml", TechniqueKind::JOINT, 3.0);
+    let case = Case::new("tasks/cases/one_box.toml", TechniqueKind::JOINT, thresholds::SPEED_HELD);
     run(&case, STEPS, |k, _| {
         let palm = Hand::new(1, HandKind::FlatHand, -0.02, 0.0).with_pressure(1.0);
         vec![palm, tip(2, lerp(Vec2::new(0.055, 0.0), Vec2::new(0.3, 0.0), k, 120))]
@@ -151,7 +148,10 @@ fn a_joint_on_a_box_that_a_flat_hand_pins_down() {
 #[test]
 fn a_stack_of_five_boxes_under_a_pressing_flat_hand() {
     for kind in [TechniqueKind::PROXY, TechniqueKind::PARTICLE] {
-        let case = Case::new("tasks/cases/stack5.toml", kind, 2.0);
+        let case = Case {
+            max_penetration: thresholds::STACK_PENETRATION,
+            ..Case::new("tasks/cases/stack5.toml", kind, thresholds::SPEED_HELD)
+        };
         let s = run(&case, STEPS, |_, _| vec![Hand::new(1, HandKind::FlatHand, 0.0, 0.0).with_pressure(1.0)]);
         // Still a stack: every box within 2 cm of the axis.
         for id in s.world().object_ids() {
@@ -163,7 +163,7 @@ fn a_stack_of_five_boxes_under_a_pressing_flat_hand() {
 
 #[test]
 fn a_ball_flicked_at_40_m_per_s_at_a_thin_wall_does_not_tunnel() {
-    let case = Case::new("tasks/cases/ball_wall.toml", TechniqueKind::PROXY, 41.0);
+    let case = Case::new("tasks/cases/ball_wall.toml", TechniqueKind::PROXY, thresholds::SPEED_FLICKED_BALL);
     // CCD stops it at the wall, though the contact may sink a few mm in the
     // step it arrives; tunnelling would put its centre past the near face.
     let wall_face = 0.2 - 0.005;
@@ -184,7 +184,7 @@ fn a_ball_flicked_at_40_m_per_s_at_a_thin_wall_does_not_tunnel() {
 
 #[test]
 fn deeply_overlapping_objects_recover_calmly() {
-    let mut case = Case::new("tasks/cases/overlap.toml", TechniqueKind::PROXY, 2.5);
+    let mut case = Case::new("tasks/cases/overlap.toml", TechniqueKind::PROXY, thresholds::SPEED_HELD);
     case.settle_steps = 120;
     run(&case, STEPS, |_, _| Vec::new());
 }
@@ -192,7 +192,7 @@ fn deeply_overlapping_objects_recover_calmly() {
 #[test]
 fn a_100_to_1_mass_ratio_stack_pushed_on_top() {
     for kind in [TechniqueKind::PROXY, TechniqueKind::PARTICLE, TechniqueKind::JOINT] {
-        let case = Case::new("tasks/cases/mass_ratio.toml", kind, 3.0);
+        let case = Case::new("tasks/cases/mass_ratio.toml", kind, thresholds::SPEED_HELD);
         let s = run(&case, STEPS, |k, s| {
             // A fingertip drags the light box around on the heavy block for 3 s.
             let top = s.world().screen_point(Vec3::new(0.0, 0.0, 0.07));
@@ -206,13 +206,13 @@ fn a_100_to_1_mass_ratio_stack_pushed_on_top() {
 #[test]
 #[ignore = "fails on rapier 0.36: soft-contact stiffness scales with the light pair's mass, so a 10 kg block crushes a 0.1 kg box (1.5 cm in 6 steps at 4-30 iterations, 30-240 Hz contacts); kept to re-check on rapier upgrades"]
 fn a_100_to_1_mass_ratio_stack_heavy_on_light() {
-    let case = Case::new("tasks/cases/mass_ratio_inverted.toml", TechniqueKind::PROXY, 3.0);
+    let case = Case::new("tasks/cases/mass_ratio_inverted.toml", TechniqueKind::PROXY, thresholds::SPEED_HELD);
     run(&case, STEPS, |_, _| Vec::new());
 }
 
 #[test]
 fn proxies_losing_and_regaining_tracking_every_frame() {
-    let case = Case::new("tasks/cases/one_box.toml", TechniqueKind::PROXY, 4.5);
+    let case = Case::new("tasks/cases/one_box.toml", TechniqueKind::PROXY, thresholds::SPEED_AT_REST);
     run(&case, STEPS, |k, _| {
         let x = -0.05 + 0.1 * ((k % 600) as f32 / 600.0);
         if k % 2 == 0 { vec![tip(1, Vec2::new(x, 0.0))] } else { Vec::new() }
@@ -222,8 +222,10 @@ fn proxies_losing_and_regaining_tracking_every_frame() {
 #[test]
 fn a_tracked_contact_teleporting_across_the_table() {
     for kind in [TechniqueKind::PROXY, TechniqueKind::JOINT, TechniqueKind::PARTICLE] {
-        // Contact speeds are capped at 4 m/s; objects they hit may move a bit faster.
-        let case = Case::new("tasks/cases/one_box.toml", kind, 8.0);
+        // The contact jumps 60 cm every half second between two spots beside
+        // the 14 cm box: whatever the technique makes of the jump, the box
+        // is never touched and stays at rest.
+        let case = Case::new("tasks/cases/one_box.toml", kind, thresholds::SPEED_AT_REST);
         run(&case, STEPS, |k, _| {
             let side = if (k / 30) % 2 == 0 { -0.3 } else { 0.3 };
             vec![tip(1, Vec2::new(side, 0.0))]
@@ -233,7 +235,7 @@ fn a_tracked_contact_teleporting_across_the_table() {
 
 #[test]
 fn a_capsule_particle_wedged_under_an_object() {
-    let mut case = Case::new("tasks/cases/one_box.toml", TechniqueKind::PARTICLE, 3.0);
+    let mut case = Case::new("tasks/cases/one_box.toml", TechniqueKind::PARTICLE, thresholds::SPEED_HELD);
     case.config = Some(TechniqueConfig { particle_capsules: true, ..TechniqueConfig::default() });
     // A fingertip half on the box's rim, half on the table, pressing in.
     run(&case, STEPS, |k, _| vec![tip(1, lerp(Vec2::new(-0.085, 0.0), Vec2::new(-0.065, 0.0), k, 300))]);
@@ -242,7 +244,7 @@ fn a_capsule_particle_wedged_under_an_object() {
 #[test]
 fn the_steering_cylinder_pinned_between_two_hands() {
     for kind in [TechniqueKind::PROXY, TechniqueKind::PARTICLE, TechniqueKind::JOINT] {
-        let case = Case::new("tasks/steering.toml", kind, 3.0);
+        let case = Case::new("tasks/steering.toml", kind, thresholds::SPEED_HELD);
         let s = run(&case, STEPS, |k, s| {
             // Two hand edges close in on the cylinder from both sides and hold.
             let c = s.world().screen_point(Vec3::new(0.34, 0.22, 0.07));
@@ -259,7 +261,7 @@ fn the_steering_cylinder_pinned_between_two_hands() {
 #[test]
 fn a_thin_card_pressed_on_one_side_tilts_and_stays_calm() {
     for kind in [TechniqueKind::PROXY, TechniqueKind::PARTICLE] {
-        let case = Case::new("tasks/cases/cambered_card.toml", kind, 2.0);
+        let case = Case::new("tasks/cases/cambered_card.toml", kind, thresholds::SPEED_HELD);
         let mut tilted = false;
         let s = run(&case, STEPS, |k, s| {
             if k == 60 {
@@ -337,7 +339,13 @@ fn contact_module_fed_degenerate_pairs_by_the_real_pipeline() {
             }
         }
     }
-    assert!(answered > 1000, "answered {answered}, rejected {rejected}");
+    // A contact hull too thin to be a convex polygon (a blob a pixel wide)
+    // is skipped, not tested: this seeded run skips 1 hull and answers
+    // 7848 pairs; more than three skips, or under 5000 answers (two thirds
+    // of those measured), fail the test.
+    println!("contact pairs answered {answered}, hulls rejected {rejected}");
+    assert!(answered > 5000, "answered {answered}, rejected {rejected}");
+    assert!(rejected <= 3, "{rejected} hulls rejected, {answered} pairs answered");
 }
 
 /// The paper's particles at their most numerous: a forearm and two flat
@@ -355,7 +363,7 @@ fn a_20000_particle_flood_short() {
 }
 
 fn flood(steps: usize) {
-    let mut case = Case::new("tasks/sorting.toml", TechniqueKind::PARTICLE, 5.0);
+    let mut case = Case::new("tasks/sorting.toml", TechniqueKind::PARTICLE, thresholds::SPEED_FLOOD);
     case.sensor_px = (1280, 960);
     // Every sensed particle a body (no culling): this is rapier under load.
     case.config = Some(TechniqueConfig {

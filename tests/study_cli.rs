@@ -1,24 +1,11 @@
 //! The study's command line: failures counted at the time limit
 //! (scripted and replayed), and `--seeds N`, through the real binary.
 
+mod common;
+
+use common::{bin, refused, text, tmp};
 use std::path::Path;
-use std::process::{Command, Output};
-
-fn bin() -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_surfacelab"));
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
-}
-
-/// A scratch folder for one test, removed with everything in it when the
-/// returned guard goes out of scope.
-fn tmp(name: &str) -> tempfile::TempDir {
-    tempfile::Builder::new().prefix(&format!("surfacelab-study-cli-{name}-")).tempdir().expect("temp dir")
-}
-
-fn text(o: &Output) -> String {
-    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
-}
+use std::process::Command;
 
 /// Column `name` of every row of a CSV file.
 fn column(path: &Path, name: &str) -> Vec<String> {
@@ -142,8 +129,7 @@ fn a_running_study_locks_its_folder_and_a_killed_one_does_not() {
     let o = bin().args(["study", "--no-progress", "--resume"]).arg(&out).output().expect("runs");
     let still_running = running.try_wait().expect("wait").is_none();
     assert!(still_running, "the study finished before the resume could race it; make it longer");
-    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
-    assert!(text(&o).contains(&format!("pid {}", running.id())), "names the holder: {}", text(&o));
+    refused(&o, &[&format!("pid {}", running.id())]);
     running.kill().expect("SIGKILL");
     running.wait().expect("reaped");
 
@@ -192,8 +178,7 @@ fn resume_refuses_a_changed_design_and_says_what_it_drops() {
     std::fs::write(&run_toml, original.replace("time_limit_override = 5.0", "time_limit_override = 7.0"))
         .expect("edit");
     let o = resume(&[]);
-    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
-    assert!(text(&o).contains("run.toml: the design was edited after the run started"), "{}", text(&o));
+    refused(&o, &["run.toml: the design was edited after the run started"]);
 
     // A run.toml from before the hash resumes, with a note; a torn last row
     // is dropped, said, and its trial run again.
@@ -213,11 +198,9 @@ fn resume_refuses_a_changed_design_and_says_what_it_drops() {
     // run.toml gone: resume and a fresh run both say what to do.
     std::fs::remove_file(&run_toml).expect("remove");
     let o = resume(&[]);
-    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
-    assert!(text(&o).contains("run.toml is missing") && text(&o).contains("trials.csv.orphan"), "{}", text(&o));
+    refused(&o, &["run.toml is missing", "trials.csv.orphan"]);
     let o = tiny(&out).output().expect("runs");
-    assert_eq!(o.status.code(), Some(2), "{}", text(&o));
-    assert!(text(&o).contains("Its run.toml is gone") && text(&o).contains("trials.csv.orphan"), "{}", text(&o));
+    refused(&o, &["Its run.toml is gone", "trials.csv.orphan"]);
 }
 
 /// `--manners`: the study under the full repertoire and under the

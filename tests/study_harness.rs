@@ -3,6 +3,9 @@
 //! counterbalancing, determinism, resume, shards, statistics) is checked
 //! exactly.
 
+mod common;
+
+use common::scratch;
 use std::collections::{BTreeMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -128,13 +131,6 @@ fn quiet(jobs: usize) -> RunOptions {
 }
 
 /// A fresh, empty folder under the test target's temporary directory.
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("study_harness").join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("create scratch dir");
-    dir
-}
-
 fn small_design() -> StudyDesign {
     StudyDesign { participants: 2, repetitions: 1, ..StudyDesign::default() }
 }

@@ -4,7 +4,9 @@
 //! Cousineau–Morey within-subject CIs, the files they are written to, and
 //! the paper's findings decided on them.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use common::scratch;
 use surfacelab::harness::study::analysis::{analyze, read_anova, write_anova, write_pairwise};
 use surfacelab::harness::study::anova::{TwoWayData, rm_anova};
 use surfacelab::harness::study::findings::{FINDINGS, FindingVerdict};
@@ -183,12 +185,6 @@ impl TrialRunner for MdRunner {
             ..TrialResult::default()
         })
     }
-}
-
-fn scratch(name: &str) -> PathBuf {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("study_stats").join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    dir
 }
 
 fn quiet() -> RunOptions {

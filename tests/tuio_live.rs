@@ -3,11 +3,14 @@
 //! report checked against what the hands did, and its `--record`ing
 //! replayed with `run --gesture`.
 
+mod common;
+
+use common::{bin, text, tmp};
 use rosc::{OscBundle, OscMessage, OscPacket, OscTime, OscType, encoder};
 use std::io::{BufRead, BufReader};
 use std::net::{SocketAddr, UdpSocket};
 use std::path::Path;
-use std::process::{Child, Command, Output, Stdio};
+use std::process::{Child, Stdio};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
@@ -18,22 +21,6 @@ static REAL_TIME: Mutex<()> = Mutex::new(());
 const TABLE: [f32; 2] = [1.0, 0.75];
 /// The senders' frame rate (Hz).
 const RATE: f64 = 60.0;
-
-fn bin() -> Command {
-    let mut c = Command::new(env!("CARGO_BIN_EXE_surfacelab"));
-    c.current_dir(env!("CARGO_MANIFEST_DIR"));
-    c
-}
-
-/// A scratch folder for one test, removed with everything in it when the
-/// returned guard goes out of scope.
-fn tmp(name: &str) -> tempfile::TempDir {
-    tempfile::Builder::new().prefix(&format!("surfacelab-tuio-{name}-")).tempdir().expect("temp dir")
-}
-
-fn text(o: &Output) -> String {
-    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
-}
 
 /// Table metres to TUIO's normalized coordinates (origin top left, y down).
 fn normalized(p: [f32; 2]) -> [f32; 2] {

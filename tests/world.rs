@@ -1,5 +1,8 @@
 //! The physics world: determinism, ray casts, and effect gating.
 
+mod common;
+
+use common::scenes;
 use glam::{Vec2, Vec3};
 use surfacelab::pipeline::world::{ObjectId, World};
 use surfacelab::scene::{self, EffectSet};
@@ -147,32 +150,15 @@ fn touching_where_an_object_appears_hits_its_top() {
 /// sink millimetres into each other in `surfacelab behaviours --case gather`.
 #[test]
 fn small_discs_pushed_together_do_not_interpenetrate() {
-    let s = scene::parse(
-        r#"
-name = "two_discs"
-effects = ["gravity", "friction"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "a"
-shape = "cylinder"
-radius = 0.011
-height = 0.01
-mass = 0.01
-position = [-0.03, 0.0]
-color = "blue"
-[[objects]]
-name = "b"
-shape = "cylinder"
-radius = 0.011
-height = 0.01
-mass = 0.01
-position = [0.0, 0.003]
-color = "blue"
-"#,
-        "two_discs.toml",
-    )
-    .expect("scene");
+    let s = scenes::build(
+        &scenes::table("two_discs").object("a", scenes::disc(0.011, 0.01), [-0.03, 0.0], 0.01, "blue").object(
+            "b",
+            scenes::disc(0.011, 0.01),
+            [0.0, 0.003],
+            0.01,
+            "blue",
+        ),
+    );
     let mut w = World::new(&s);
     let (a, b) = (ObjectId::new(0), ObjectId::new(1));
     let mut deepest = 0.0f32;
@@ -319,10 +305,14 @@ fn a_row_squeezed_between_two_hands_gives_way_instead_of_interpenetrating() {
 fn overlap_after_one_step(hand: bool) -> f32 {
     use rapier3d::prelude::{ColliderBuilder, RigidBodyBuilder};
     use surfacelab::pipeline::world::Layer;
-    let text = "name = \"pair\"\neffects = [\"gravity\", \"friction\"]\n[table]\nsize = [1.0, 0.75]\n\
-        [[objects]]\nname = \"a\"\nshape = \"cylinder\"\nradius = 0.011\nheight = 0.01\nmass = 0.01\ncolor = \"blue\"\nposition = [0.0, 0.0]\n\
-        [[objects]]\nname = \"b\"\nshape = \"cylinder\"\nradius = 0.011\nheight = 0.01\nmass = 0.01\ncolor = \"blue\"\nposition = [0.018, 0.0]\n";
-    let s = scene::parse(text, "pair.toml").expect("scene");
+    let s =
+        scenes::build(&scenes::table("pair").object("a", scenes::disc(0.011, 0.01), [0.0, 0.0], 0.01, "blue").object(
+            "b",
+            scenes::disc(0.011, 0.01),
+            [0.018, 0.0],
+            0.01,
+            "blue",
+        ));
     let mut w = World::new(&s);
     if hand {
         // Resting against the first disc's far side, still.
