@@ -87,8 +87,8 @@ mod tests {
 
     #[test]
     fn the_right_lengths_read_as_arrays() {
-        let row: Row = toml::from_str("size = [1.0, 0.75]\nstep = [1, 2, 3]\nring = [[[0, 0], [1, 0], [0, 1]]]")
-            .expect("valid");
+        let row: Row =
+            toml::from_str("size = [1.0, 0.75]\nstep = [1, 2, 3]\nring = [[[0, 0], [1, 0], [0, 1]]]").expect("valid");
         assert_eq!(row.size, [1.0, 0.75]);
         let step = row.step.expect("step");
         assert_eq!((*step.get_ref(), step.span()), ([1.0, 2.0, 3.0], 26..35));

@@ -386,7 +386,8 @@ fn sweeping_blobs(f: i32, t: f64) -> Vec<u8> {
 /// `VmRSS` of process `pid` in MiB, `None` once it has gone.
 fn resident_mib(pid: u32) -> Option<f64> {
     let status = std::fs::read_to_string(format!("/proc/{pid}/status")).ok()?;
-    let kib: f64 = status.lines().find_map(|l| l.strip_prefix("VmRSS:"))?.trim().trim_end_matches("kB").trim().parse().ok()?;
+    let kib: f64 =
+        status.lines().find_map(|l| l.strip_prefix("VmRSS:"))?.trim().trim_end_matches("kB").trim().parse().ok()?;
     Some(kib / 1024.0)
 }
 
@@ -440,7 +441,11 @@ fn a_demo_soak_under_tuio_keeps_its_memory() {
     // The watcher's clock starts with Xvfb; the demo's window opens a few
     // seconds later, so the samples span a little less than the run.
     let at = |share: f64| {
-        samples.iter().find(|(t, _)| *t >= share * seconds).copied().unwrap_or_else(|| panic!("no sample at {share}: {samples:?}"))
+        samples
+            .iter()
+            .find(|(t, _)| *t >= share * seconds)
+            .copied()
+            .unwrap_or_else(|| panic!("no sample at {share}: {samples:?}"))
     };
     // The last sample a second before the quit: at the quit the process
     // already frees its window and its GPU memory.

@@ -5,12 +5,11 @@
 
 mod common;
 
+use common::{bin, text};
 use std::io::BufRead as _;
 use std::path::{Path, PathBuf};
-use common::{bin, text};
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
-
 
 /// A small design whose trials end at a 5 s limit: 4 participants × 2
 /// tasks × 3 techniques × 2 feedback = 48 trials, a few seconds in all.

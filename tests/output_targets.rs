@@ -5,16 +5,26 @@
 
 mod common;
 
+use common::bin;
 use std::io::Read as _;
 use std::os::unix::fs::FileTypeExt as _;
 use std::path::{Path, PathBuf};
-use common::bin;
 use std::process::{Command, Output, Stdio};
 
 /// A one-box drag with the report going to `report`.
 fn run_to(report: &str) -> Command {
     let mut c = bin();
-    c.args(["run", "--task", "cases/one_box", "--technique", "joint", "--gesture", "fingertip_drag", "--report", report]);
+    c.args([
+        "run",
+        "--task",
+        "cases/one_box",
+        "--technique",
+        "joint",
+        "--gesture",
+        "fingertip_drag",
+        "--report",
+        report,
+    ]);
     c
 }
 
@@ -54,7 +64,8 @@ fn a_symlinked_report_lands_in_its_target_and_the_link_stays() {
     assert!(std::fs::symlink_metadata(&link).expect("link").file_type().is_symlink(), "the link is kept");
     assert_eq!(report_scene(&std::fs::read(&target).expect("target")), "one_box");
     // Nothing but the report folder and the link: no temporary file left.
-    let names: Vec<_> = std::fs::read_dir(dir.path().join("kept")).expect("list").map(|e| e.expect("e").file_name()).collect();
+    let names: Vec<_> =
+        std::fs::read_dir(dir.path().join("kept")).expect("list").map(|e| e.expect("e").file_name()).collect();
     assert_eq!(names, ["report.json"]);
 }
 

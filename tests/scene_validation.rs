@@ -671,7 +671,11 @@ fn nothing_is_accepted_silently() {
     assert_names(&e, Some(6), "objects[0].name", "must not be empty");
     let e = error(&with(OBJECTS, "name = \"t\"", "name = \"  \""));
     assert_names(&e, Some(1), "name", "must not be empty");
-    let e = error(&with(OBJECTS, "position = [0.2, 0.0]", "position = [0.2, 0.0]\ncount = 3\nstep = [0.05, 0.0]\nper_row = 0"));
+    let e = error(&with(
+        OBJECTS,
+        "position = [0.2, 0.0]",
+        "position = [0.2, 0.0]\ncount = 3\nstep = [0.05, 0.0]\nper_row = 0",
+    ));
     assert_names(&e, Some(21), "objects[1].per_row", "0 is out of range (1..=3)");
     // Goals that can never be met.
     let e = error(&region("").replace("max_height = 0.06", "max_height = 0"));

@@ -16,7 +16,9 @@ pub fn check_work(scene: &scene::Scene, seconds: f64) -> Result<(), super::Failu
     if seconds <= scene.time_limit_s {
         return Ok(());
     }
-    scene::Work::of(scene, seconds).check().map_err(|m| super::Failure::bad_input(anyhow::anyhow!("{}: {seconds} s of simulation: {m}", scene.origin)))
+    scene::Work::of(scene, seconds)
+        .check()
+        .map_err(|m| super::Failure::bad_input(anyhow::anyhow!("{}: {seconds} s of simulation: {m}", scene.origin)))
 }
 
 /// The exit status of a command stopped by Ctrl-C (128 + SIGINT, as a shell
@@ -81,7 +83,10 @@ pub fn replay_showing_progress(
             continue;
         }
         if stop.load(Ordering::Relaxed) {
-            eprintln!("surfacelab {command}: stopped by Ctrl-C at {:.2} s of {end:.2} s; it {at_stop} as things are", session.time());
+            eprintln!(
+                "surfacelab {command}: stopped by Ctrl-C at {:.2} s of {end:.2} s; it {at_stop} as things are",
+                session.time()
+            );
             return Ok(Some((session.time(), end)));
         }
         let now = Instant::now();

@@ -42,7 +42,11 @@ fn run_fitts(args: &FittsArgs) -> super::CommandResult {
     )?;
     outln!(
         "  MT = {:.3} + {:.3} ID s (R² = {:.3} over {} conditions); throughput {:.2} bits/s (ISO 9241-9, effective width)",
-        fit.a_s, fit.b_s_per_bit, fit.r2, fit.conditions, fit.throughput_bits_s
+        fit.a_s,
+        fit.b_s_per_bit,
+        fit.r2,
+        fit.conditions,
+        fit.throughput_bits_s
     )?;
     outln!("  files in {}: fitts.csv, fitts.json, fitts.png", args.out.display())?;
     Ok(ExitCode::SUCCESS)

@@ -2,8 +2,8 @@
 //! then render it off-screen and write a PNG. Needs no display.
 
 use super::ScreenshotArgs;
-use crate::app::scene_view::{self, ViewOptions};
 use super::long_run::Until;
+use crate::app::scene_view::{self, ViewOptions};
 use crate::input::Gesture;
 use crate::render::{self, GpuContext};
 use crate::scene;
@@ -25,7 +25,8 @@ pub fn run(args: &ScreenshotArgs) -> super::CommandResult {
         // No hands: an empty gesture gives none at every step.
         None => (&Gesture::default(), Until::Before(at)),
     };
-    let stopped = super::long_run::replay_showing_progress(&mut session, hands, until, "screenshot", "draws the picture")?;
+    let stopped =
+        super::long_run::replay_showing_progress(&mut session, hands, until, "screenshot", "draws the picture")?;
     let list = scene_view::fitted_draw_list(
         &session,
         ViewOptions { feedback: args.feedback, contact_overlay: !args.no_contact_overlay },

@@ -278,7 +278,9 @@ fn run_slurm(args: &StudyArgs, shards: u32) -> super::CommandResult {
         )?;
         outln!(
             "  watch: squeue -j {},{}   failed tasks: sacct -X -j {} --format=JobID,State,ExitCode",
-            ids.array, ids.merge, ids.array
+            ids.array,
+            ids.merge,
+            ids.array
         )?;
     } else {
         let q = |p: &std::path::Path| slurm::shell_quote(p).unwrap_or_else(|_| p.display().to_string());

@@ -53,7 +53,8 @@ impl<'a> FieldReader<'a> {
                 .filter(|s| !s.is_empty())
                 .map(|s| format!(" (at `{s}`)"))
                 .unwrap_or_default();
-            let field = e.span().and_then(|s| self.field_at(s.start)).map(|f| format!("field `{f}`: ")).unwrap_or_default();
+            let field =
+                e.span().and_then(|s| self.field_at(s.start)).map(|f| format!("field `{f}`: ")).unwrap_or_default();
             FieldError::Syntax {
                 origin: self.origin.to_owned(),
                 line,

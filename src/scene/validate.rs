@@ -11,11 +11,11 @@ use super::file::{
     SoftKindFile, TableFile,
 };
 use super::id::{ObjectId, SoftId};
-use super::work::Work;
 use super::model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
     SteeringGoal, Table, Target,
 };
+use super::work::Work;
 use glam::{EulerRot, Quat, Vec2, Vec3};
 use std::ops::Range;
 use std::path::{Path, PathBuf};

@@ -109,7 +109,12 @@ mod tests {
     fn the_built_in_cloth_fits_and_the_same_cloth_at_10_khz_does_not() {
         assert_eq!(work(256, 0, 60.0, 90.0).check(), Ok(()));
         let e = work(256, 0, 10_000.0, 90.0).check().expect_err("hours of work");
-        assert!(e.starts_with("256 particles × 10000 Hz × 90 s = 230,400,000 particle-steps, above the bound of 10,000,000"), "{e}");
+        assert!(
+            e.starts_with(
+                "256 particles × 10000 Hz × 90 s = 230,400,000 particle-steps, above the bound of 10,000,000"
+            ),
+            "{e}"
+        );
     }
 
     #[test]
