@@ -16,6 +16,7 @@ mod joint;
 mod kind;
 mod pad;
 mod particle;
+mod particle_frame;
 mod proxy;
 mod registry;
 mod rest;

@@ -62,7 +62,7 @@
 
 use super::surface_point::least_squares_turn;
 use crate::pipeline::surface::Sensor;
-use crate::pipeline::vision::{Contact, VisionFrame};
+use crate::pipeline::vision::{Contact, EdgeSample, VisionFrame};
 use crate::pipeline::world::{RayHit, World};
 use crate::scene::ObjectId;
 use std::collections::HashMap;
@@ -116,6 +116,21 @@ pub struct Press {
     pub grey: u8,
 }
 
+impl Press {
+    /// The press as a sample of its contact, measured flow and all, so
+    /// that it becomes a particle by the same steps as an outline point.
+    pub fn sample(&self) -> EdgeSample {
+        EdgeSample {
+            px: self.px,
+            flow_px: self.flow_px,
+            magnitude: 0.0,
+            grey: self.grey,
+            contact_id: self.contact_id,
+            has_flow: true,
+        }
+    }
+}
+
 /// The object point a resting contact's centre sticks to, and where it and
 /// the contact's centre were when it stuck.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -149,7 +164,7 @@ impl RigidFlow {
             return None;
         }
         let n = samples.len() as f32;
-        let mean = |f: &dyn Fn(&&crate::pipeline::vision::EdgeSample) -> f32| samples.iter().map(f).sum::<f32>() / n;
+        let mean = |f: &dyn Fn(&&EdgeSample) -> f32| samples.iter().map(f).sum::<f32>() / n;
         let centre = [mean(&|e| e.px[0]), mean(&|e| e.px[1])];
         let velocity = [mean(&|e| e.flow_px[0]), mean(&|e| e.flow_px[1])];
         let turn = least_squares_turn(samples.iter().map(|e| {
