@@ -11,10 +11,8 @@
 //! - [`panel`] / [`view`]: the side panel; the table view and its overlays.
 //! - `input`: mouse, touch, TUIO and scripted hands merged; `tuio`: the UDP listener.
 //! - [`record`]: gesture recording; `participant`: study trials and their rows.
-//! - [`capture`]: reading back the window for `--screenshot-after`.
 //! - [`point_picker`]: `calibrate`'s window, four clicks on a camera frame.
 
-pub mod capture;
 pub mod clock;
 pub mod lab;
 pub mod panel;

@@ -25,6 +25,7 @@ pub mod mesh;
 mod mesh_library;
 pub mod palette;
 mod pipelines;
+mod readback;
 pub mod renderer;
 pub mod samples;
 mod shadow_map;
@@ -33,7 +34,8 @@ mod targets;
 mod uniforms;
 
 pub use camera::CameraMatrices;
-pub use capture::{CAPTURE_FORMAT, Capture, padded_bytes_per_row, render_to_image, save_png};
+pub use capture::{CAPTURE_FORMAT, Capture, render_to_image, save_png};
+pub use readback::{Alpha, Readback, padded_bytes_per_row, readable};
 pub use draw_list::*;
 pub use error::RenderError;
 pub use gpu::{

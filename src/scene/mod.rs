@@ -14,6 +14,7 @@ pub mod fields;
 mod file;
 mod id;
 mod model;
+mod outline;
 mod validate;
 
 pub use builder::{SceneBuilder, ShapeSpec};
@@ -25,4 +26,5 @@ pub use model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
     SteeringGoal, Table, Target,
 };
+pub use outline::{Ring, footprint, solid_outline};
 pub use validate::{load, parse, resolve_path};
