@@ -19,6 +19,7 @@ use surfacelab::harness::study::{RunOptions, StudyDesign, SummaryRow, run_study}
 use surfacelab::pipeline::technique::{
     Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind, TechniqueSpec, register,
 };
+use surfacelab::pipeline::surface::PixelPoint;
 use surfacelab::pipeline::world::{TechniqueWorld, World, WorldError};
 
 /// How far from a contact the magnet reaches (m).
@@ -48,7 +49,7 @@ impl Technique for Magnet {
         self.pulls.clear();
         self.contacts = input.frame.contacts.len();
         for contact in &input.frame.contacts {
-            let hand = Vec2::from(input.sensor.to_table(contact.blob.centroid));
+            let hand = Vec2::from(input.sensor.to_table(PixelPoint::from(contact.blob.centroid)));
             let nearest = world
                 .object_ids()
                 .map(|id| (id, world.object_pose(id)))

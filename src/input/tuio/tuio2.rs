@@ -809,7 +809,7 @@ mod tests {
     }
 
     fn grey(image: &crate::pipeline::surface::ContactImage, sensor: &Sensor, p: [f32; 2]) -> u8 {
-        let [c, r] = sensor.to_pixel(p);
+        let [c, r] = sensor.to_pixel(crate::pipeline::surface::TablePoint::from(p)).to_array();
         image.pixels[r.round() as usize * image.width + c.round() as usize]
     }
 

@@ -36,7 +36,8 @@
 use super::hit_test;
 use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
 use super::{Feedback, HitTest, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
-use crate::pipeline::vision::Contact;
+use crate::pipeline::surface::PixelPoint;
+use crate::pipeline::vision::{Contact, ContactId};
 use crate::pipeline::world::{Layer, ObjectId, TechniqueBody, TechniqueJoint, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
 use rapier3d::prelude::*;
@@ -100,11 +101,11 @@ const PRISM_SCALES: [f32; 4] = [1.0, 0.75, 0.5, 0.25];
 #[derive(Debug)]
 pub struct JointTechnique {
     config: TechniqueConfig,
-    grabs: BTreeMap<u32, Grab>,
-    soft_grabs: BTreeMap<u32, SoftGrab>,
-    pushers: BTreeMap<u32, Pusher>,
+    grabs: BTreeMap<ContactId, Grab>,
+    soft_grabs: BTreeMap<ContactId, SoftGrab>,
+    pushers: BTreeMap<ContactId, Pusher>,
     /// Contacts whose joint broke: they grab nothing until lifted.
-    broken: BTreeSet<u32>,
+    broken: BTreeSet<ContactId>,
     contacts: usize,
 }
 
@@ -293,7 +294,7 @@ fn pusher_shape(
         .hull
         .iter()
         .map(|q| {
-            (at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target) * scale
+            (at_height(world, Vec2::from(input.sensor.to_table(PixelPoint::new(q[0] as f32, q[1] as f32))), mid) - target) * scale
         })
         .collect();
     (target, prism(&hull, input.sensor.metres_per_pixel()))
@@ -391,19 +392,19 @@ impl Technique for JointTechnique {
             }
             self.update_pusher(world, c, input, target);
         }
-        let lifted: Vec<u32> = self.grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
+        let lifted: Vec<ContactId> = self.grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in lifted {
             if let Some(g) = self.grabs.remove(&id) {
                 Self::release(world, g);
             }
         }
-        let lifted: Vec<u32> = self.soft_grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
+        let lifted: Vec<ContactId> = self.soft_grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in lifted {
             if let Some(g) = self.soft_grabs.remove(&id) {
                 Self::release_soft(world, g);
             }
         }
-        let lifted: Vec<u32> = self.pushers.keys().copied().filter(|id| !seen.contains(id)).collect();
+        let lifted: Vec<ContactId> = self.pushers.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in lifted {
             if let Some(p) = self.pushers.remove(&id) {
                 world.remove_body(p.body);

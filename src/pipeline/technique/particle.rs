@@ -45,7 +45,7 @@ use super::rest::{Press, Resting};
 use super::sight_reach::SightReach;
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
 use crate::pipeline::surface::Sensor;
-use crate::pipeline::vision::{EdgeSample, FlowInterest};
+use crate::pipeline::vision::{ContactId, EdgeSample, FlowInterest};
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError, highest_top};
 use glam::Vec3;
 use rapier3d::parry::shape::Ball;
@@ -110,7 +110,7 @@ pub struct ParticleTechnique {
     contacts: usize,
     /// Contacts whose particles are balls this frame even with
     /// `particle_capsules` (see [`ParticleTechnique::set_ball_contacts`]).
-    ball_contacts: Vec<u32>,
+    ball_contacts: Vec<ContactId>,
     /// What each contact landed on, which holds its line-of-sight
     /// particles' sides up off the table and is pressed by the flat of the
     /// hand (see `rest`).
@@ -138,7 +138,7 @@ impl ParticleTechnique {
     /// Makes the particles of these contacts balls, not line-of-sight
     /// capsules, from the next `apply` on: Hybrid's gripping contacts,
     /// whose contact from the side is their grips (see `HybridTechnique`).
-    pub(super) fn set_ball_contacts(&mut self, ids: impl IntoIterator<Item = u32>) {
+    pub(super) fn set_ball_contacts(&mut self, ids: impl IntoIterator<Item = ContactId>) {
         self.ball_contacts.clear();
         self.ball_contacts.extend(ids);
     }
@@ -204,7 +204,7 @@ impl ParticleTechnique {
             self.resting.clear();
         }
         let presses: Vec<EdgeSample> = self.resting.presses().iter().map(Press::sample).collect();
-        let mut counts: HashMap<u32, (u32, u32)> = HashMap::new();
+        let mut counts: HashMap<ContactId, (u32, u32)> = HashMap::new();
         for e in &samples {
             counts.entry(e.contact_id).or_default().0 += 1;
         }
@@ -400,7 +400,7 @@ impl Technique for ParticleTechnique {
         self.sensed_only = culled;
         // A resting contact's particles on what it rests on move as one pad
         // (see `pad`), by contact in id order (deterministic).
-        let mut pads: BTreeMap<u32, Vec<PadParticle>> = BTreeMap::new();
+        let mut pads: BTreeMap<ContactId, Vec<PadParticle>> = BTreeMap::new();
         let mut placements = Vec::with_capacity(all.len());
         for p in all {
             match p.pad {

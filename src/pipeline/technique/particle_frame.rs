@@ -30,7 +30,7 @@ use super::sight_reach::SightReach;
 use super::surface_point::{clamp_len, project_flow, table_point};
 use super::TechniqueConfig;
 use crate::pipeline::surface::Sensor;
-use crate::pipeline::vision::EdgeSample;
+use crate::pipeline::vision::{ContactId, EdgeSample};
 use crate::pipeline::world::{RayHit, World};
 use glam::{Vec2, Vec3};
 use rapier3d::parry::shape::{Ball, Capsule};
@@ -71,7 +71,7 @@ pub(super) struct Placement {
     pub give_way: Vec3,
     /// The contact whose pad it belongs to: it lands on the object that
     /// contact rests on (see `pad`).
-    pub pad: Option<u32>,
+    pub pad: Option<ContactId>,
 }
 
 /// What every sample of one frame shares.
@@ -83,7 +83,7 @@ pub(super) struct Frame<'a> {
     /// What each hand landed on, and the flat of the hand pressing on it.
     pub resting: &'a Resting,
     /// Contacts whose particles are balls even with `particle_capsules`.
-    pub ball_contacts: &'a [u32],
+    pub ball_contacts: &'a [ContactId],
     /// Where particles can touch something movable (with `particle_cull`).
     pub reach: Option<SightReach>,
     /// Nothing movable reaches above this height: the part of a
@@ -98,7 +98,7 @@ pub(super) struct Frame<'a> {
     /// spacing its mass and weight are given for.
     pub share: f32,
     /// Per contact: its outline samples and its presses.
-    pub counts: HashMap<u32, (u32, u32)>,
+    pub counts: HashMap<ContactId, (u32, u32)>,
 }
 
 impl Frame<'_> {
@@ -108,7 +108,7 @@ impl Frame<'_> {
     /// box dragged from just behind its leading edge
     /// (`a_fingertip_drags_a_box_from_anywhere_on_its_top`) and the
     /// steering cylinder dragged by its top (`cylinder_top_drag`).
-    fn spread(&self, id: u32) -> f32 {
+    fn spread(&self, id: ContactId) -> f32 {
         self.counts.get(&id).map_or(1.0, |&(n, m)| if n == 0 { 1.0 } else { n as f32 / (n + m) as f32 })
     }
 }
@@ -141,7 +141,7 @@ pub(super) struct Draft {
     up: Vec3,
     give_way: Vec3,
     velocity: Vec3,
-    pad: Option<u32>,
+    pad: Option<ContactId>,
 }
 
 impl Draft {
