@@ -10,7 +10,7 @@ use crate::pipeline::surface::{Sensor, TablePoint};
 use crate::pipeline::vision::Blob;
 use crate::pipeline::world::{TechniqueWorld, World, WorldError};
 use glam::Vec3;
-use rapier3d::prelude::SoftBodyHandle;
+use crate::pipeline::world::physics::SoftBodyHandle;
 
 #[derive(Debug)]
 pub struct DirectForce {

@@ -40,7 +40,7 @@ use crate::pipeline::surface::PixelPoint;
 use crate::pipeline::vision::{Contact, ContactId};
 use crate::pipeline::world::{Layer, ObjectId, TechniqueBody, TechniqueJoint, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
-use rapier3d::prelude::*;
+use crate::pipeline::world::physics::*;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// Height of the kinematic side-collision prism (m): taller than the
@@ -249,7 +249,7 @@ impl JointTechnique {
 }
 
 /// The edges of a pusher prism where its collider is now.
-fn prism_edges(col: &rapier3d::prelude::Collider) -> Vec<(Vec3, Vec3)> {
+fn prism_edges(col: &crate::pipeline::world::physics::Collider) -> Vec<(Vec3, Vec3)> {
     let pose = col.position();
     let at = |p: Vec3| pose.transform_point(p);
     let shape = col.shape();
@@ -309,7 +309,7 @@ fn overlaps_object(world: &World, shape: &SharedShape, base: Vec3) -> bool {
         let dynamic = physics.bodies.get(world.object_body(id)).is_some_and(RigidBody::is_dynamic);
         dynamic
             && physics.colliders.get(world.object_collider(id)).is_some_and(|c| {
-                rapier3d::parry::query::intersection_test(&pose, shape.as_ref(), c.position(), c.shape())
+                crate::pipeline::world::parry::query::intersection_test(&pose, shape.as_ref(), c.position(), c.shape())
                     .is_ok_and(|hit| hit.intersecting)
             })
     })

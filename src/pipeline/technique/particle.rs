@@ -48,8 +48,8 @@ use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{ContactId, EdgeSample, FlowInterest};
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError, highest_top};
 use glam::Vec3;
-use rapier3d::parry::shape::Ball;
-use rapier3d::prelude::*;
+use crate::pipeline::world::parry::shape::Ball;
+use crate::pipeline::world::physics::*;
 use std::collections::{BTreeMap, HashMap};
 
 /// Outline spacing (m) that `particle_mass` and `particle_weight` are given

@@ -33,8 +33,8 @@ use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{ContactId, EdgeSample};
 use crate::pipeline::world::{RayHit, World};
 use glam::{Vec2, Vec3};
-use rapier3d::parry::shape::{Ball, Capsule};
-use rapier3d::prelude::Pose;
+use crate::pipeline::world::parry::shape::{Ball, Capsule};
+use crate::pipeline::world::physics::Pose;
 use std::collections::HashMap;
 
 /// A particle's speed along the surface it touches, at most this many times
