@@ -8,7 +8,7 @@
 //! `cargo bench --bench effects` (about a minute); results in target/criterion.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use surfacelab::pipeline::world::physics::PhysicsWorld;
+use surfacelab::pipeline::world::prelude::PhysicsWorld;
 use std::time::Duration;
 use surfacelab::pipeline::surface::{Hand, HandKind};
 use surfacelab::pipeline::technique::TechniqueKind;

@@ -23,11 +23,11 @@ fn may_read(layer: &str) -> Option<&'static [&'static str]> {
     Some(match layer {
         "error" => &[],
         "files" => &["error"],
-        "contact" | "scene" => &["error", "files"],
+        // The renderer's input is a draw list; it reads nothing else.
+        "contact" | "scene" | "render" => &["error", "files"],
         "pipeline::world" => &["error", "files", "scene"],
         "pipeline::surface" => &BASE,
-        "pipeline::vision" => &["error", "files", "contact", "scene", "pipeline::surface"],
-        "input" => &["error", "files", "contact", "scene", "pipeline::surface"],
+        "pipeline::vision" | "input" => &["error", "files", "contact", "scene", "pipeline::surface"],
         "pipeline::technique" => {
             &["error", "files", "contact", "scene", "pipeline::surface", "pipeline::vision", "pipeline::world"]
         }
@@ -54,8 +54,6 @@ fn may_read(layer: &str) -> Option<&'static [&'static str]> {
             "pipeline::world",
             "session",
         ],
-        // The renderer's input is a draw list; it reads nothing else.
-        "render" => &["error", "files"],
         "app" => &[
             "error",
             "files",

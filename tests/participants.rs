@@ -5,7 +5,7 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use surfacelab::harness::participant::{Learner, Manner, PlannerOptions, ScriptedRunner, Skill, run_scripted_with};
-use surfacelab::harness::study::output::{RUN_TOML, TRIALS_CSV};
+use surfacelab::harness::study::{RUN_TOML, TRIALS_CSV};
 use surfacelab::harness::study::{RunOptions, StudyDesign, resume_study, run_study};
 use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
@@ -86,7 +86,7 @@ fn practice_tries_several_manners_and_what_is_learned_carries_over() {
     let skill = Skill::draw(11);
     let fresh = Learner::new(Manner::Fingertips(1));
     let practice = PlannerOptions {
-        explore: surfacelab::harness::participant::learner::EXPLORE_PRACTICE,
+        explore: surfacelab::harness::participant::EXPLORE_PRACTICE,
         ..PlannerOptions::default()
     };
     let (o, learned) =
@@ -132,7 +132,7 @@ fn every_study_task_is_completed_with_every_technique() {
     // without practice keeps to the index finger, which does not steer the
     // cylinder under Particle within the limit for seeds 1-3.)
     let practice = PlannerOptions {
-        explore: surfacelab::harness::participant::learner::EXPLORE_PRACTICE,
+        explore: surfacelab::harness::participant::EXPLORE_PRACTICE,
         ..PlannerOptions::default()
     };
     let mut missed = Vec::new();

@@ -7,7 +7,7 @@
 //! *press fraction*.
 
 use glam::Vec3;
-use surfacelab::pipeline::world::physics::*;
+use surfacelab::pipeline::world::prelude::*;
 use surfacelab::pipeline::world::{Layer, TechniqueBody, World};
 use surfacelab::scene;
 use surfacelab::scene::ObjectId;

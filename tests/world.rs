@@ -250,7 +250,7 @@ fn cap_and_wall_hits_get_their_own_normals() {
 /// Returns the deepest overlap of two discs, how far the first disc moved
 /// and the world after 0.5 s.
 fn squeeze_row(walls: &[f32], give_way: bool) -> (f32, f32, World) {
-    use surfacelab::pipeline::world::physics::{ColliderBuilder, RigidBodyBuilder};
+    use surfacelab::pipeline::world::prelude::{ColliderBuilder, RigidBodyBuilder};
     use std::fmt::Write;
     use surfacelab::pipeline::world::Layer;
     let mut text = format!(
@@ -317,7 +317,7 @@ fn a_row_squeezed_between_two_hands_gives_way_instead_of_interpenetrating() {
 /// them), stepped once with or without a hand's wall resting against the
 /// first. Returns the overlap after the step (m).
 fn overlap_after_one_step(hand: bool) -> f32 {
-    use surfacelab::pipeline::world::physics::{ColliderBuilder, RigidBodyBuilder};
+    use surfacelab::pipeline::world::prelude::{ColliderBuilder, RigidBodyBuilder};
     use surfacelab::pipeline::world::Layer;
     let text = "name = \"pair\"\neffects = [\"gravity\", \"friction\"]\n[table]\nsize = [1.0, 0.75]\n\
         [[objects]]\nname = \"a\"\nshape = \"cylinder\"\nradius = 0.011\nheight = 0.01\nmass = 0.01\ncolor = \"blue\"\nposition = [0.0, 0.0]\n\

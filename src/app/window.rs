@@ -442,7 +442,7 @@ impl App {
         if let Some(readback) = capture
             && let Some(shot) = self.screenshot.take()
         {
-            save_screenshot(readback, &device, &shot, self.lab.wall)?;
+            save_screenshot(&readback, &device, &shot, self.lab.wall)?;
         }
         for a in actions {
             self.apply(a);
@@ -643,7 +643,7 @@ fn read_back(
 }
 
 /// Waits for a read-back and writes it where `--screenshot-after` asked.
-fn save_screenshot(readback: Readback, device: &wgpu::Device, shot: &Screenshot, wall: f64) -> anyhow::Result<()> {
+fn save_screenshot(readback: &Readback, device: &wgpu::Device, shot: &Screenshot, wall: f64) -> anyhow::Result<()> {
     let image = readback.read(device, Alpha::Opaque)?;
     save_png(&image, &shot.path)?;
     eprintln!(

@@ -19,7 +19,7 @@ pub fn run() -> ExitCode {
         }
     };
     println!("display: {display}");
-    match crate::render::gpu::probe_adapter() {
+    match crate::render::probe_adapter() {
         Ok(a) => {
             println!("adapter: {}", a.name);
             println!("backend: {:?}", a.backend);

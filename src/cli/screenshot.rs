@@ -2,7 +2,7 @@
 //! then render it off-screen and write a PNG. Needs no display.
 
 use super::ScreenshotArgs;
-use crate::app::scene_view::{self, ViewOptions};
+use crate::app::{ViewOptions, fitted_draw_list};
 use crate::input::Gesture;
 use crate::render::{self, GpuContext};
 use crate::scene;
@@ -28,7 +28,7 @@ pub fn run(args: &ScreenshotArgs) -> super::CommandResult {
             }
         }
     }
-    let list = scene_view::fitted_draw_list(
+    let list = fitted_draw_list(
         &session,
         ViewOptions { feedback: args.feedback, contact_overlay: !args.no_contact_overlay },
         [w, h],

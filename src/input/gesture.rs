@@ -84,7 +84,7 @@ use toml::Spanned;
 
 use crate::pipeline::surface::{Hand, HandKind, MAX_OUTLINE_POINTS, MIN_RING_POINTS, Outline, Pose};
 use crate::scene::bounds;
-use crate::scene::fields::human;
+use crate::scene::human;
 use crate::scene::{FieldError, FieldReader};
 
 /// The `format` value every gesture file carries.

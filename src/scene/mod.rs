@@ -10,7 +10,7 @@ pub mod builtin;
 mod defaults;
 mod effects;
 mod error;
-pub mod fields;
+mod fields;
 mod file;
 mod id;
 mod model;
@@ -20,7 +20,7 @@ mod validate;
 pub use builder::{SceneBuilder, ShapeSpec};
 pub use effects::{Effect, EffectSet};
 pub use error::SceneError;
-pub use fields::{FieldError, FieldReader};
+pub use fields::{FieldError, FieldReader, human};
 pub use id::{ObjectId, SoftId};
 pub use model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,

@@ -10,7 +10,7 @@ use crate::pipeline::surface::{Sensor, TablePoint};
 use crate::pipeline::vision::Blob;
 use crate::pipeline::world::{TechniqueWorld, World, WorldError};
 use glam::Vec3;
-use crate::pipeline::world::physics::SoftBodyHandle;
+use crate::pipeline::world::prelude::SoftBodyHandle;
 
 #[derive(Debug)]
 pub struct DirectForce {

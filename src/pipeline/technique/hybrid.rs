@@ -45,7 +45,7 @@ use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{Contact, ContactId, FlowInterest};
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
-use crate::pipeline::world::physics::*;
+use crate::pipeline::world::prelude::*;
 use std::collections::BTreeMap;
 
 /// Height (m) of a grip capsule: above the equator of the largest ball in

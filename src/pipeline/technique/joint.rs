@@ -40,7 +40,7 @@ use crate::pipeline::surface::PixelPoint;
 use crate::pipeline::vision::{Contact, ContactId};
 use crate::pipeline::world::{Layer, ObjectId, TechniqueBody, TechniqueJoint, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
-use crate::pipeline::world::physics::*;
+use crate::pipeline::world::prelude::*;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// Height of the kinematic side-collision prism (m): taller than the
@@ -249,7 +249,7 @@ impl JointTechnique {
 }
 
 /// The edges of a pusher prism where its collider is now.
-fn prism_edges(col: &crate::pipeline::world::physics::Collider) -> Vec<(Vec3, Vec3)> {
+fn prism_edges(col: &crate::pipeline::world::prelude::Collider) -> Vec<(Vec3, Vec3)> {
     let pose = col.position();
     let at = |p: Vec3| pose.transform_point(p);
     let shape = col.shape();

@@ -10,7 +10,7 @@
 mod config;
 mod direct;
 mod feedback;
-pub mod hit_test;
+mod hit_test;
 mod hybrid;
 mod joint;
 mod kind;

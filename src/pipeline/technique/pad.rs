@@ -52,7 +52,7 @@ use super::surface_point::least_squares_turn;
 use crate::pipeline::vision::ContactId;
 use crate::pipeline::world::{TechniqueBody, TechniqueWorld};
 use glam::Vec3;
-use crate::pipeline::world::physics::*;
+use crate::pipeline::world::prelude::*;
 use std::collections::BTreeMap;
 
 /// Extra solver iterations for the island of a persistent pad. With none,

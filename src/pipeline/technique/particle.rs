@@ -49,7 +49,7 @@ use crate::pipeline::vision::{ContactId, EdgeSample, FlowInterest};
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError, highest_top};
 use glam::Vec3;
 use crate::pipeline::world::parry::shape::Ball;
-use crate::pipeline::world::physics::*;
+use crate::pipeline::world::prelude::*;
 use std::collections::{BTreeMap, HashMap};
 
 /// Outline spacing (m) that `particle_mass` and `particle_weight` are given

@@ -34,7 +34,7 @@ use crate::pipeline::vision::{ContactId, EdgeSample};
 use crate::pipeline::world::{RayHit, World};
 use glam::{Vec2, Vec3};
 use crate::pipeline::world::parry::shape::{Ball, Capsule};
-use crate::pipeline::world::physics::Pose;
+use crate::pipeline::world::prelude::Pose;
 use std::collections::HashMap;
 
 /// A particle's speed along the surface it touches, at most this many times
@@ -213,7 +213,7 @@ pub(super) fn settle(frame: &Frame<'_>, mut d: Draft) -> Settled {
 /// point is now, it would sit on the top and only rub it: a fingertip going
 /// from rest to 1.6 m/s in one frame (half a box's width) would leave the
 /// box it flicks almost where it was (`surfacelab behaviours`,
-/// flick_from_rest).
+/// `flick_from_rest`).
 fn climb(frame: &Frame<'_>, d: &mut Draft) {
     let e = &d.sample;
     if !d.interior && e.flow_px[0].hypot(e.flow_px[1]) > MIN_SWEEP_PX {
@@ -372,7 +372,7 @@ fn clear(frame: &Frame<'_>, d: &mut Draft) {
 /// impulse their weight calls for in their first step; pooled ones,
 /// re-placed like this, all of it within a few steps (warm-started).
 /// Created afresh every step (the paper's variant) they overshoot as the
-/// box under them sinks into its own soft contact (tests/particle_press.rs).
+/// box under them sinks into its own soft contact (`tests/particle_press.rs`).
 fn weigh(frame: &Frame<'_>, d: &Draft) -> Placement {
     let config = frame.config;
     let e = &d.sample;

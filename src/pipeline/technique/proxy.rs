@@ -15,7 +15,7 @@ use super::{Feedback, HitTest, PressureMode, ProxyShape, Technique, TechniqueCon
 use crate::pipeline::vision::{Contact, ContactId};
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
-use crate::pipeline::world::physics::*;
+use crate::pipeline::world::prelude::*;
 use std::collections::BTreeMap;
 
 #[derive(Debug, Clone, Copy)]

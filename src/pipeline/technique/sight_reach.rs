@@ -133,7 +133,7 @@ mod tests {
     use super::*;
     use crate::scene;
     use crate::pipeline::world::parry::query;
-    use crate::pipeline::world::physics::{Pose, Segment};
+    use crate::pipeline::world::prelude::{Pose, Segment};
 
     /// A 6 cm box turned 45° at (-0.25, 0.1) and a 6 cm ball at (0.2, -0.1),
     /// at rest on a table under the default camera.
