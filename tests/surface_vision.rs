@@ -498,7 +498,10 @@ fn hand(kind: &str, extra: &str, keys: &str) -> String {
 
 const KEYS: &str = "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\n\n[[hands.keys]]\nt = 1.0\n";
 
+/// One piece on purpose: a table of malformed files and what each error
+/// must name.
 #[test]
+#[allow(clippy::too_many_lines, reason = "a table of cases")]
 fn malformed_gestures_name_the_file_the_field_and_the_line() {
     // (file, text, must contain...)
     let cases: Vec<(&str, String, Vec<&str>)> = vec![
