@@ -215,10 +215,8 @@ pub fn parse_shard(s: &str) -> Result<Shard, String> {
 /// `study findings DIR`: findings.csv and seeds.png from `DIR/seed-1`,
 /// `DIR/seed-2`, ... (every consecutive seed folder holding a run.toml).
 fn findings(dir: &std::path::Path) -> super::CommandResult {
-    let dirs: Vec<_> = (1..=u32::MAX)
-        .map(|k| study::seed_dir(dir, k))
-        .take_while(|d| d.join(study::RUN_TOML).exists())
-        .collect();
+    let dirs: Vec<_> =
+        (1..=u32::MAX).map(|k| study::seed_dir(dir, k)).take_while(|d| d.join(study::RUN_TOML).exists()).collect();
     if dirs.is_empty() {
         return Err(study::StudyError::mismatch(dir, "no seed-1/run.toml: not a `study --seeds` folder").into());
     }
