@@ -121,6 +121,12 @@ fn bench(
 }
 
 fn benches(c: &mut Criterion) {
+    pair_benches(c);
+    random_benches(c);
+}
+
+/// The entrance block against brute force and parry on regular pairs.
+fn pair_benches(c: &mut Criterion) {
     bench(c, "build", &SIZES, |n| {
         let (a, b) = pair(n);
         Box::new(move || EntranceBlock::new(black_box(&a), black_box(&b)).edges().len() as f64)
@@ -198,6 +204,10 @@ fn benches(c: &mut Criterion) {
             })
         });
     }
+}
+
+/// Random point sets, hulled first: the block against parry.
+fn random_benches(c: &mut Criterion) {
     bench(c, "random_from_points", &RANDOM_SIZES, |n| {
         let pairs = random_pairs(n, false);
         let mut k = 0;

@@ -8,10 +8,10 @@
 //! `cargo bench --bench effects` (about a minute); results in target/criterion.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use rapier3d::prelude::PhysicsWorld;
 use std::time::Duration;
 use surfacelab::pipeline::surface::{Hand, HandKind};
 use surfacelab::pipeline::technique::TechniqueKind;
+use surfacelab::pipeline::world::prelude::PhysicsWorld;
 use surfacelab::pipeline::world::{ObjectId, World};
 use surfacelab::scene::{self, Effect, EffectSet, Scene};
 use surfacelab::session::{Session, SessionOptions};

@@ -16,6 +16,7 @@ use std::process::ExitCode;
 use surfacelab::harness::behaviour::{Metric, cases, cells, markdown, run_suite};
 use surfacelab::harness::participant::ScriptedRunner;
 use surfacelab::harness::study::{RunOptions, StudyDesign, SummaryRow, run_study};
+use surfacelab::pipeline::surface::PixelPoint;
 use surfacelab::pipeline::technique::{
     Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind, TechniqueSpec, register,
 };
@@ -48,7 +49,7 @@ impl Technique for Magnet {
         self.pulls.clear();
         self.contacts = input.frame.contacts.len();
         for contact in &input.frame.contacts {
-            let hand = Vec2::from(input.sensor.to_table(contact.blob.centroid));
+            let hand = Vec2::from(input.sensor.to_table(PixelPoint::from(contact.blob.centroid)));
             let nearest = world
                 .object_ids()
                 .map(|id| (id, world.object_pose(id)))

@@ -420,10 +420,10 @@ fn a_demo_soak_under_tuio_keeps_its_memory() {
             let _ = socket.send_to(&sweeping_blobs(f, t), ("127.0.0.1", port));
             pid = pid.or_else(|| std::fs::read_to_string(&pid_file).ok().and_then(|p| p.trim().parse::<u32>().ok()));
             // Once a second: (seconds since the demo started, resident MiB).
-            if f % 60 == 0 {
-                if let Some(rss) = pid.and_then(resident_mib) {
-                    samples.push((t, rss));
-                }
+            if f % 60 == 0
+                && let Some(rss) = pid.and_then(resident_mib)
+            {
+                samples.push((t, rss));
             }
             std::thread::sleep(std::time::Duration::from_secs_f64(1.0 / 60.0));
         }

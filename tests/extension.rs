@@ -10,6 +10,7 @@ use std::sync::OnceLock;
 use surfacelab::harness::behaviour::{Expectation, Metric, cases, cells, markdown, run_case, suite_kinds};
 use surfacelab::harness::participant::ScriptedRunner;
 use surfacelab::harness::study::{RunOptions, StudyDesign, run_study};
+use surfacelab::pipeline::surface::PixelPoint;
 use surfacelab::pipeline::technique::{
     Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput, TechniqueKind, TechniqueSpec, register,
 };
@@ -28,7 +29,7 @@ impl Technique for Tether {
     fn apply(&mut self, input: &TechniqueInput<'_>, world: &mut TechniqueWorld<'_>) -> Result<(), WorldError> {
         self.contacts = input.frame.contacts.len();
         for c in &input.frame.contacts {
-            let hand = Vec2::from(input.sensor.to_table(c.blob.centroid));
+            let hand = Vec2::from(input.sensor.to_table(PixelPoint::from(c.blob.centroid)));
             let nearest = world
                 .object_ids()
                 .map(|id| (id, world.object_pose(id)))

@@ -25,7 +25,7 @@ use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRu
 use std::path::Path;
 use std::time::{Duration, Instant};
 use surfacelab::harness::study::RunFile;
-use surfacelab::harness::study::output::recover_trials;
+use surfacelab::harness::study::recover_trials;
 use surfacelab::input::Gesture;
 use surfacelab::input::tuio::TuioState;
 use surfacelab::pipeline::surface::{Hand, HandKind};

@@ -8,7 +8,7 @@ use common::scratch;
 use std::collections::BTreeMap;
 use std::path::Path;
 use surfacelab::harness::participant::{Learner, Manner, PlannerOptions, ScriptedRunner, Skill, run_scripted_with};
-use surfacelab::harness::study::output::{RUN_TOML, TRIALS_CSV};
+use surfacelab::harness::study::{RUN_TOML, TRIALS_CSV};
 use surfacelab::harness::study::{RunOptions, StudyDesign, resume_study, run_study};
 use surfacelab::pipeline::technique::TechniqueKind;
 use surfacelab::scene;
@@ -81,10 +81,8 @@ fn practice_tries_several_manners_and_what_is_learned_carries_over() {
     let scene = scene::load("sorting").expect("sorting");
     let skill = Skill::draw(11);
     let fresh = Learner::new(Manner::Fingertips(1));
-    let practice = PlannerOptions {
-        explore: surfacelab::harness::participant::learner::EXPLORE_PRACTICE,
-        ..PlannerOptions::default()
-    };
+    let practice =
+        PlannerOptions { explore: surfacelab::harness::participant::EXPLORE_PRACTICE, ..PlannerOptions::default() };
     let (o, learned) =
         run_scripted_with(&scene, TechniqueKind::PROXY, true, skill, 5, 120.0, fresh.clone(), practice, None)
             .expect("practice");
@@ -127,10 +125,8 @@ fn every_study_task_is_completed_with_every_technique() {
     // cells: nothing here is tuned per technique. (A fresh participant
     // without practice keeps to the index finger, which does not steer the
     // cylinder under Particle within the limit for seeds 1-3.)
-    let practice = PlannerOptions {
-        explore: surfacelab::harness::participant::learner::EXPLORE_PRACTICE,
-        ..PlannerOptions::default()
-    };
+    let practice =
+        PlannerOptions { explore: surfacelab::harness::participant::EXPLORE_PRACTICE, ..PlannerOptions::default() };
     let mut missed = Vec::new();
     for task in ["positioning", "sorting", "steering"] {
         let scene = scene::load(task).expect("task");

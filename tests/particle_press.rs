@@ -10,7 +10,7 @@ mod common;
 
 use common::scenes;
 use glam::Vec3;
-use rapier3d::prelude::*;
+use surfacelab::pipeline::world::prelude::*;
 use surfacelab::pipeline::world::{Layer, TechniqueBody, World};
 use surfacelab::scene;
 use surfacelab::scene::ObjectId;

@@ -14,11 +14,11 @@ use std::sync::OnceLock;
 
 use glam::{Vec2, Vec3};
 use image::RgbaImage;
-use surfacelab::render::snapshot::{SnapshotDir, Tolerance};
 use surfacelab::render::{
     CameraMatrices, Capture, DOT_PER_LINE_WIDTH, DrawList, FeedbackDraw, GpuContext, RenderError, RendererOptions,
     render_to_image, samples,
 };
+use surfacelab::render::{SnapshotDir, Tolerance};
 
 const WIDTH: u32 = 640;
 const HEIGHT: u32 = 480;
@@ -264,7 +264,7 @@ fn non_srgb_targets_look_the_same() {
         // saturated colours differ (on llvmpipe: 0.5% of the pixels by more
         // than 24, none by more than 43). A missing or doubled encoding
         // would shift every pixel.
-        let c = surfacelab::render::snapshot::compare(&reference, &image, 24);
+        let c = surfacelab::render::compare(&reference, &image, 24);
         if format.is_srgb() {
             assert_eq!(c.max_channel_delta, 0, "{format:?} differs from {:?}", surfacelab::render::CAPTURE_FORMAT);
         }

@@ -9,11 +9,11 @@
 mod common;
 
 use common::{asset, gestures};
-use surfacelab::app::scene_view::{self, ViewOptions};
+use surfacelab::app::{ViewOptions, draw_list};
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::TechniqueKind;
-use surfacelab::render::snapshot::{SnapshotDir, Tolerance};
 use surfacelab::render::{self, GpuContext};
+use surfacelab::render::{SnapshotDir, Tolerance};
 use surfacelab::scene;
 use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
@@ -66,8 +66,8 @@ fn each_task_scene_matches_its_golden_image() {
     let gpu = gpu();
     for task in ["positioning", "sorting", "steering"] {
         let s = session_at(&format!("tasks/{task}.toml"), TechniqueKind::PROXY, None, 0.25);
-        let img = render::render_to_image(&gpu, &scene_view::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1)
-            .expect("render");
+        let img =
+            render::render_to_image(&gpu, &draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1).expect("render");
         snapshots()
             .check(&format!("task_{task}"), &img, TOLERANCE)
             .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
@@ -82,12 +82,12 @@ fn feedback_on_and_off_differ_exactly_by_red_feedback_for_every_technique() {
         let s = session_at("tasks/sorting.toml", kind, Some(&drag_red_box()), 0.6);
         let off = render::render_to_image(
             &gpu,
-            &scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: false }),
+            &draw_list(&s, ViewOptions { feedback: false, contact_overlay: false }),
             SIZE.0,
             SIZE.1,
         )
         .expect("render");
-        let on_list = scene_view::draw_list(&s, ViewOptions { feedback: true, contact_overlay: false });
+        let on_list = draw_list(&s, ViewOptions { feedback: true, contact_overlay: false });
         assert!(
             !on_list.feedback.is_empty() || kind == TechniqueKind::DIRECT,
             "{kind}: no feedback geometry mid-gesture"
@@ -119,11 +119,10 @@ fn the_contact_overlay_shadows_where_the_hands_are() {
     let gpu = gpu();
     let s =
         session_at("tasks/sorting.toml", TechniqueKind::PARTICLE, Some("assets/gestures/flat_hand_sweep.toml"), 0.5);
-    let plain = render::render_to_image(&gpu, &scene_view::draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1)
-        .expect("render");
+    let plain = render::render_to_image(&gpu, &draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1).expect("render");
     let shadow = render::render_to_image(
         &gpu,
-        &scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true }),
+        &draw_list(&s, ViewOptions { feedback: false, contact_overlay: true }),
         SIZE.0,
         SIZE.1,
     )
@@ -161,7 +160,7 @@ fn a_fingertip_on_a_box_is_drawn_over_the_box() {
     let draw = |overlay: bool| {
         render::render_to_image(
             &gpu,
-            &scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: overlay }),
+            &draw_list(&s, ViewOptions { feedback: false, contact_overlay: overlay }),
             SIZE.0,
             SIZE.1,
         )

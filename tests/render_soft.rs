@@ -9,11 +9,11 @@
 mod common;
 
 use common::asset;
-use surfacelab::app::scene_view::{self, ViewOptions};
+use surfacelab::app::{ViewOptions, draw_list};
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::TechniqueKind;
-use surfacelab::render::snapshot::{SnapshotDir, Tolerance};
 use surfacelab::render::{self, GpuContext};
+use surfacelab::render::{SnapshotDir, Tolerance};
 use surfacelab::scene;
 use surfacelab::scene::SoftId;
 use surfacelab::session::{Session, SessionOptions};
@@ -38,7 +38,7 @@ fn session_at(task: &str, gesture: Option<&str>, at: f64) -> Session {
 #[test]
 fn the_crumpled_cloth_matches_its_golden_image() {
     let s = session_at("tasks/cloth.toml", None, 0.5);
-    let list = scene_view::draw_list(&s, ViewOptions::default());
+    let list = draw_list(&s, ViewOptions::default());
     assert_eq!(list.deformables.len(), 1, "one cloth");
     assert_eq!(list.deformables[0].positions.len(), 16 * 16);
     let img = render::render_to_image(&gpu(), &list, SIZE.0, SIZE.1).expect("render");
@@ -53,7 +53,7 @@ fn the_torn_paper_draws_both_pieces() {
     // shadows on so the hands show.
     let s = session_at("tasks/tear.toml", Some("assets/gestures/tear_two_hands.toml"), 1.4);
     assert!(s.world().soft_piece_masses(SoftId::new(0)).len() >= 2, "the paper should have torn by 1.4 s");
-    let list = scene_view::draw_list(&s, ViewOptions { feedback: false, contact_overlay: true });
+    let list = draw_list(&s, ViewOptions { feedback: false, contact_overlay: true });
     assert!(list.deformables.len() >= 2, "every piece is drawn: {}", list.deformables.len());
     let img = render::render_to_image(&gpu(), &list, SIZE.0, SIZE.1).expect("render");
     SnapshotDir::new(asset("tests/snapshots"))

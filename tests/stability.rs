@@ -13,7 +13,7 @@ use glam::{Vec2, Vec3};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use surfacelab::contact::{self, ConvexPolygon};
-use surfacelab::pipeline::surface::{Hand, HandKind};
+use surfacelab::pipeline::surface::{Hand, HandKind, PixelPoint};
 use surfacelab::pipeline::technique::{TechniqueConfig, TechniqueKind};
 use surfacelab::pipeline::world::ObjectId;
 use surfacelab::scene;
@@ -318,7 +318,7 @@ fn contact_module_fed_degenerate_pairs_by_the_real_pipeline() {
                 .blob
                 .hull
                 .iter()
-                .map(|p| s.sensor().to_table([p[0] as f32, p[1] as f32]))
+                .map(|p| s.sensor().to_table(PixelPoint::new(p[0] as f32, p[1] as f32)).to_array())
                 .map(|q| [f64::from(q[0]), f64::from(q[1])])
                 .collect();
             let Ok(a) = ConvexPolygon::from_xy(&pts) else {

@@ -10,12 +10,12 @@ use std::collections::{BTreeMap, HashSet};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
-use surfacelab::harness::study::output::{RUN_TOML, SUMMARY_CSV, TRIALS_CSV, read_trials};
 use surfacelab::harness::study::{
     ParticipantRun, RunFile, RunOptions, RunnerSettings, Shard, StudyDesign, StudyError, TrialResult, TrialRow,
     TrialRunner, TrialSpec, describe, merge, resume_study, run_study, summarize, t_quantile_975, trial_seed,
     williams_square,
 };
+use surfacelab::harness::study::{RUN_TOML, SUMMARY_CSV, TRIALS_CSV, read_trials};
 use surfacelab::pipeline::technique::TechniqueKind;
 
 /// Results that depend only on the spec. `jitter` sleeps a seed-dependent
@@ -645,8 +645,8 @@ fn summary_of_hand_made_rows() {
 
     let dir = scratch("summary_file");
     let path = dir.join(SUMMARY_CSV);
-    surfacelab::harness::study::summary::write_summary(&path, &summary).expect("write");
-    assert_eq!(surfacelab::harness::study::summary::read_summary(&path).expect("read"), summary);
+    surfacelab::harness::study::write_summary(&path, &summary).expect("write");
+    assert_eq!(surfacelab::harness::study::read_summary(&path).expect("read"), summary);
     let text = std::fs::read_to_string(&path).expect("text");
     assert!(text.starts_with(
         "task,technique,feedback,participants,trials,completed,failed,mean_s,sd_s,ci95_low_s,ci95_high_s,errors,ci95_within_low_s,ci95_within_high_s\n"
@@ -928,7 +928,7 @@ fn figure_copes_with_sparse_data() {
     assert!(png.starts_with(b"\x89PNG"));
     let svg = String::from_utf8(read(&dir.join("figure.svg"))).expect("svg text");
     assert!(svg.contains("Particle") && svg.contains("Feedback off") && !svg.contains("Feedback on"));
-    let summary = surfacelab::harness::study::summary::read_summary(&dir.join(SUMMARY_CSV)).expect("summary");
+    let summary = surfacelab::harness::study::read_summary(&dir.join(SUMMARY_CSV)).expect("summary");
     // Two tasks, every technique.
     assert_eq!(summary.len(), 2 * 5);
     assert!(

@@ -7,15 +7,15 @@
 mod common;
 
 use common::scratch;
-use surfacelab::harness::study::analysis::{analyze, read_anova, write_anova, write_pairwise};
-use surfacelab::harness::study::anova::{TwoWayData, rm_anova};
-use surfacelab::harness::study::findings::{FINDINGS, FindingVerdict};
-use surfacelab::harness::study::pairwise::{holm, paired_t};
-use surfacelab::harness::study::report::{REPORT_HTML, REPORT_MD};
-use surfacelab::harness::study::within_ci::cousineau_morey_half_widths;
+use surfacelab::harness::study::cousineau_morey_half_widths;
+use surfacelab::harness::study::{FINDINGS, FindingVerdict};
+use surfacelab::harness::study::{REPORT_HTML, REPORT_MD};
 use surfacelab::harness::study::{
     RunOptions, StudyDesign, TrialResult, TrialRow, TrialRunner, TrialSpec, run_study, summarize,
 };
+use surfacelab::harness::study::{TwoWayData, rm_anova};
+use surfacelab::harness::study::{analyze, read_anova, write_anova, write_pairwise};
+use surfacelab::harness::study::{holm, paired_t};
 use surfacelab::pipeline::technique::TechniqueKind;
 
 /// Maxwell & Delaney (2004), *Designing Experiments and Analyzing Data*, 2nd
@@ -346,7 +346,7 @@ fn failed_trials_count_at_the_limit_and_incomplete_participants_are_left_out() {
 
 #[test]
 fn the_report_reads_strategy_shares_when_trials_csv_has_them() {
-    use surfacelab::harness::study::report::{Block, report_blocks, strategy_counts};
+    use surfacelab::harness::study::{Block, report_blocks, strategy_counts};
     let dir = scratch("strategies");
     std::fs::create_dir_all(&dir).expect("dir");
     let path = dir.join("trials.csv");

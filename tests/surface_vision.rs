@@ -4,14 +4,14 @@
 use std::path::{Path, PathBuf};
 
 use surfacelab::pipeline::surface::{
-    ContactImage, Footprint, Hand, HandKind, Patch, RasterParams, Sensor, rasterize, rasterize_into, rasterize_patches,
-    rasterize_rows,
+    ContactImage, Footprint, Hand, HandKind, Patch, PixelPoint, RasterParams, Sensor, TablePoint, rasterize,
+    rasterize_into, rasterize_patches, rasterize_rows,
 };
 
 use surfacelab::input::{Button, Gesture, GestureRecorder, Modifiers, Mouse, MouseEvent};
 use surfacelab::pipeline::vision::{
-    BlobTrackerParams, BlockMatcher, FlowInterest, Pipeline, VisionFrame, VisionParams, find_blobs, signed_area,
-    sobel_at, threshold,
+    BlobTrackerParams, BlockMatcher, ContactId, FlowInterest, Pipeline, VisionFrame, VisionParams, find_blobs,
+    signed_area, sobel_at, threshold,
 };
 
 fn sensor() -> Sensor {
@@ -51,7 +51,7 @@ fn rasterized_disc_has_the_right_area_and_centroid() {
         assert!(area_error < 0.02, "area {} vs {expected}", b.area);
         // The thresholded pixels quantise the outline by up to a tenth of
         // a pixel for a small disc.
-        let c = s.to_pixel(centre);
+        let c = s.to_pixel(TablePoint::from(centre)).to_array();
         for got in [b.centroid, b.weighted_centroid] {
             assert!((got[0] - c[0]).abs() < 0.1 && (got[1] - c[1]).abs() < 0.1, "{got:?} vs {c:?}");
         }
@@ -115,13 +115,13 @@ fn flat_hand_motion(a: &Hand, b: &Hand) -> FlowCase {
         .edges
         .iter()
         .map(|e| {
-            let p = s.to_table(e.px);
+            let p = s.to_table(PixelPoint::from(e.px)).to_array();
             let (sb, cb) = b.pose.angle.sin_cos();
             let local = [p[0] - b.pose.x, p[1] - b.pose.y];
             let local = [cb * local[0] + sb * local[1], -sb * local[0] + cb * local[1]];
             let (sa, ca) = a.pose.angle.sin_cos();
             let was = [a.pose.x + ca * local[0] - sa * local[1], a.pose.y + sa * local[0] + ca * local[1]];
-            let was_px = s.to_pixel(was);
+            let was_px = s.to_pixel(TablePoint::from(was)).to_array();
             [e.px[0] - was_px[0], e.px[1] - was_px[1]]
         })
         .collect();
@@ -266,8 +266,8 @@ fn elongation_of_each_hand_kind() {
 
 // --- vision: tracking --------------------------------------------------------
 
-fn ids_left_to_right(frame: &VisionFrame) -> Vec<u32> {
-    let mut c: Vec<(f32, u32)> = frame.contacts.iter().map(|c| (c.blob.centroid[0], c.id)).collect();
+fn ids_left_to_right(frame: &VisionFrame) -> Vec<ContactId> {
+    let mut c: Vec<(f32, ContactId)> = frame.contacts.iter().map(|c| (c.blob.centroid[0], c.id)).collect();
     c.sort_by(|a, b| a.0.total_cmp(&b.0));
     c.into_iter().map(|(_, id)| id).collect()
 }
@@ -279,7 +279,7 @@ fn two_fingers_that_merge_and_split_keep_sensible_ids() {
     // The left finger lands first, so it is the older contact.
     let first = p.process(&draw(&[tip(1, -0.04)]));
     let left = first.contacts[0].id;
-    let mut right = 0;
+    let mut right = ContactId::new(0);
     // Approach (each finger 2 mm per frame), touch, hold, part.
     let mut xs: Vec<f32> = (0..=16).map(|k| 0.04 - 0.002 * k as f32).collect();
     xs.extend([0.008; 5]);
@@ -497,7 +497,10 @@ fn hand(kind: &str, extra: &str, keys: &str) -> String {
 
 const KEYS: &str = "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\n\n[[hands.keys]]\nt = 1.0\n";
 
+/// One piece on purpose: a table of malformed files and what each error
+/// must name.
 #[test]
+#[allow(clippy::too_many_lines, reason = "a table of cases")]
 fn malformed_gestures_name_the_file_the_field_and_the_line() {
     // (file, text, must contain...)
     let cases: Vec<(&str, String, Vec<&str>)> = vec![
@@ -653,7 +656,8 @@ fn the_twist_turns_the_contacts_and_the_drag_moves_ten_centimetres() {
         let image = draw(hands);
         let blobs = find_blobs(&image, &threshold(&image, 48), 6);
         assert_eq!(blobs.len(), 2);
-        let (a, b) = (s.to_table(blobs[0].centroid), s.to_table(blobs[1].centroid));
+        let (a, b) =
+            (s.to_table(PixelPoint::from(blobs[0].centroid)).0, s.to_table(PixelPoint::from(blobs[1].centroid)).0);
         (b[1] - a[1]).atan2(b[0] - a[0])
     };
     let turned = angle(&twist.sample(2.0)) - angle(&twist.sample(0.0));
@@ -663,7 +667,7 @@ fn the_twist_turns_the_contacts_and_the_drag_moves_ten_centimetres() {
     let drag = Gesture::load(gestures_dir().join("fingertip_drag.toml")).expect("parses");
     let at = |t: f64| {
         let image = draw(&drag.sample(t));
-        s.to_table(find_blobs(&image, &threshold(&image, 48), 6)[0].weighted_centroid)
+        s.to_table(PixelPoint::from(find_blobs(&image, &threshold(&image, 48), 6)[0].weighted_centroid)).0
     };
     let (a, b) = (at(0.0), at(1.5));
     assert!((b[0] - a[0] - 0.1).abs() < 0.001 && (b[1] - a[1]).abs() < 0.001, "{a:?} -> {b:?}");

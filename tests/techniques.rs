@@ -222,8 +222,8 @@ fn culled_particles_change_nothing_the_objects_feel() {
 /// test prints the nearest distance).
 #[test]
 fn no_culled_particle_could_have_touched_the_box() {
-    use rapier3d::parry::query;
-    use rapier3d::prelude::{Capsule, Pose};
+    use surfacelab::pipeline::world::parry::query;
+    use surfacelab::pipeline::world::prelude::{Capsule, Pose};
     let scene = scene::load(&asset("tasks/cases/one_box.toml")).expect("scene");
     for gesture in ["flat_hand_sweep", "edge_push"] {
         let g = Gesture::load(asset(&format!("assets/gestures/{gesture}.toml"))).expect("gesture");

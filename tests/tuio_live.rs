@@ -292,7 +292,7 @@ fn path(p: &Path) -> &str {
     p.to_str().expect("a UTF-8 temp path")
 }
 
-/// The most memory the process `pid` has held (VmHWM, kB), read until it exits.
+/// The most memory the process `pid` has held (`VmHWM`, kB), read until it exits.
 fn peak_rss_kb(pid: u32) -> std::thread::JoinHandle<u64> {
     std::thread::spawn(move || {
         let mut peak = 0;

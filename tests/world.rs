@@ -236,9 +236,9 @@ fn cap_and_wall_hits_get_their_own_normals() {
 /// Returns the deepest overlap of two discs, how far the first disc moved
 /// and the world after 0.5 s.
 fn squeeze_row(walls: &[f32], give_way: bool) -> (f32, f32, World) {
-    use rapier3d::prelude::{ColliderBuilder, RigidBodyBuilder};
     use std::fmt::Write;
     use surfacelab::pipeline::world::Layer;
+    use surfacelab::pipeline::world::prelude::{ColliderBuilder, RigidBodyBuilder};
     let mut text = format!(
         "name = \"row\"\neffects = [\"gravity\", \"friction\"]\n[physics]\ngive_way = {give_way}\n[table]\nsize = [1.0, 0.75]\n"
     );
@@ -303,8 +303,8 @@ fn a_row_squeezed_between_two_hands_gives_way_instead_of_interpenetrating() {
 /// them), stepped once with or without a hand's wall resting against the
 /// first. Returns the overlap after the step (m).
 fn overlap_after_one_step(hand: bool) -> f32 {
-    use rapier3d::prelude::{ColliderBuilder, RigidBodyBuilder};
     use surfacelab::pipeline::world::Layer;
+    use surfacelab::pipeline::world::prelude::{ColliderBuilder, RigidBodyBuilder};
     let s =
         scenes::build(&scenes::table("pair").object("a", scenes::disc(0.011, 0.01), [0.0, 0.0], 0.01, "blue").object(
             "b",

@@ -5,91 +5,31 @@
 //! [`crate::input::tuio`] turn input into hands, the gesture recorder and
 //! the study's row types write files.
 //!
-//! - [`window`]: winit, wgpu and egui; the frame loop.
-//! - [`lab`]: the state the window shows and the panel changes.
-//! - [`clock`]: the fixed physics timestep, independent of the frame rate.
-//! - [`panel`] / [`view`]: the side panel; the table view and its overlays.
+//! - `window`: winit, wgpu and egui; the frame loop.
+//! - `lab`: the state the window shows and the panel changes.
+//! - `clock`: the fixed physics timestep, independent of the frame rate.
+//! - `panel` / `view`: the side panel; the table view and its overlays.
 //! - `input`: mouse, touch, TUIO and scripted hands merged; `tuio`: the UDP listener.
-//! - [`record`]: gesture recording; `participant`: study trials and their rows.
-//! - [`capture`]: reading back the window for `--screenshot-after`.
-//! - [`point_picker`]: `calibrate`'s window, four clicks on a camera frame.
+//! - `record`: gesture recording; `participant`: study trials and their rows.
+//! - `point_picker`: `calibrate`'s window, four clicks on a camera frame.
 
-pub mod capture;
-pub mod clock;
-pub mod lab;
-pub mod panel;
-pub mod participant_mode;
-pub mod point_picker;
-pub mod record;
-pub mod scene_view;
-pub mod stats;
-pub mod ui_cache;
-pub mod view;
-pub mod window;
+mod clock;
+mod lab;
+mod options;
+mod panel;
+mod participant_mode;
+mod point_picker;
+mod record;
+mod scene_view;
+mod stats;
+mod ui_cache;
+mod view;
+mod window;
 mod window_surface;
 
+pub use options::{DEFAULT_WINDOW, DemoOptions, Screenshot};
 pub use participant_mode::ParticipantOptions;
-pub use scene_view::{ViewOptions, draw_list, scene_camera};
+pub use point_picker::pick_points;
+pub use record::Recording;
+pub use scene_view::{ViewOptions, draw_list, fitted_draw_list, scene_camera};
 pub use window::run;
-
-use crate::input::Gesture;
-use crate::pipeline::technique::TechniqueKind;
-use std::net::SocketAddr;
-use std::path::PathBuf;
-
-/// Window size in logical pixels when none is asked for.
-pub const DEFAULT_WINDOW: [u32; 2] = [1280, 800];
-
-/// The demo's validated choices (the CLI builds them from its flags).
-#[derive(Debug)]
-pub struct DemoOptions {
-    /// A scene name under `tasks/` or a path.
-    pub task: String,
-    pub technique: TechniqueKind,
-    pub feedback: bool,
-    /// Show the sensed contact image as a hand shadow.
-    pub contact_overlay: bool,
-    /// Logical pixels.
-    pub window_size: [u32; 2],
-    /// Listen for TUIO 1.1 on this UDP address.
-    pub tuio: Option<SocketAddr>,
-    /// A gesture replayed as live input from session time 0.
-    pub script: Option<Gesture>,
-    /// Camera frames seen in place of hands: recorded (from session time
-    /// 0) or live. The window hands it to its [`Lab`](lab::Lab).
-    pub camera: Option<crate::input::CameraInput>,
-    /// Save what the window shows once this many seconds have passed.
-    pub screenshot_after: Option<Screenshot>,
-    /// Close after this many seconds (wall clock).
-    pub quit_after: Option<f64>,
-    pub participant: Option<ParticipantOptions>,
-    /// Recordings go to `out_dir/gestures`, screenshots to `out_dir/screenshots`.
-    pub out_dir: PathBuf,
-}
-
-/// `--screenshot-after SECONDS PATH`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Screenshot {
-    pub after_s: f64,
-    pub path: PathBuf,
-}
-
-impl DemoOptions {
-    /// The researcher's demo of a task with a technique, nothing else on.
-    pub fn new(task: impl Into<String>, technique: TechniqueKind) -> Self {
-        Self {
-            task: task.into(),
-            technique,
-            feedback: false,
-            contact_overlay: true,
-            window_size: DEFAULT_WINDOW,
-            tuio: None,
-            camera: None,
-            script: None,
-            screenshot_after: None,
-            quit_after: None,
-            participant: None,
-            out_dir: PathBuf::from("out"),
-        }
-    }
-}

@@ -9,11 +9,11 @@
 //! measured rows of the same task and condition. So a session can be run
 //! condition by condition, one `demo --participant` call each.
 
-use crate::harness::study::output::{TrialRow, TrialsWriter, recover_trials};
 use crate::harness::study::{TrialResult, TrialSpec};
+use crate::harness::study::{TrialRow, TrialsWriter, recover_trials};
 use crate::pipeline::technique::TechniqueKind;
 use anyhow::Context;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Who, what condition, how many trials, where the rows go.
 #[derive(Debug, Clone, PartialEq)]
@@ -128,16 +128,12 @@ impl Trials {
     pub fn position(&self) -> (u32, u32) {
         ((self.done + 1).min(self.options.repetitions), self.options.repetitions)
     }
-
-    pub fn trials_csv(&self) -> &Path {
-        &self.options.trials_csv
-    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::harness::study::output::read_trials;
+    use crate::harness::study::read_trials;
 
     #[test]
     fn rows_continue_the_numbering_of_the_file() {

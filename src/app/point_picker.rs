@@ -199,29 +199,7 @@ impl Picker {
                 if response.secondary_clicked() {
                     points.pop();
                 }
-                let marker = egui::Color32::from_rgb(255, 64, 160);
-                let corners: Vec<egui::Pos2> = points.iter().map(|p| shown_at(*p, shown, frame)).collect();
-                if corners.len() > 1 {
-                    let mut ring = corners.clone();
-                    if corners.len() == 4 {
-                        ring.push(corners[0]);
-                    }
-                    painter.add(egui::Shape::line(ring, egui::Stroke::new(1.5, marker)));
-                }
-                for (i, (c, name)) in corners.iter().zip(names).enumerate() {
-                    painter.circle_stroke(*c, 6.0, egui::Stroke::new(2.0, marker));
-                    painter.line_segment([*c - egui::vec2(10.0, 0.0), *c + egui::vec2(10.0, 0.0)], (1.0, marker));
-                    painter.line_segment([*c - egui::vec2(0.0, 10.0), *c + egui::vec2(0.0, 10.0)], (1.0, marker));
-                    // Labels point into the frame, so none runs off its edge.
-                    let (offset, align) = match (c.x > shown.center().x, c.y > shown.center().y) {
-                        (false, false) => (egui::vec2(9.0, 9.0), egui::Align2::LEFT_TOP),
-                        (true, false) => (egui::vec2(-9.0, 9.0), egui::Align2::RIGHT_TOP),
-                        (true, true) => (egui::vec2(-9.0, -9.0), egui::Align2::RIGHT_BOTTOM),
-                        (false, true) => (egui::vec2(9.0, -9.0), egui::Align2::LEFT_BOTTOM),
-                    };
-                    let text = format!("{} {name}", i + 1);
-                    painter.text(*c + offset, align, text, egui::FontId::proportional(14.0), marker);
-                }
+                draw_markers(painter, points, names, shown, frame);
                 let banner = egui::Rect::from_min_size(ui.max_rect().min, egui::vec2(ui.max_rect().width(), 24.0));
                 painter.rect_filled(banner, 0.0, egui::Color32::from_black_alpha(190));
                 painter.text(
@@ -284,6 +262,34 @@ impl Picker {
             gfx.renderer.free_texture(id);
         }
         Ok(())
+    }
+}
+
+/// The clicked points on the shown frame: a cross and a circle each, a
+/// label pointing into the frame, and the ring through them.
+fn draw_markers(painter: &egui::Painter, points: &[[f64; 2]], names: &[String; 4], shown: egui::Rect, frame: [u32; 2]) {
+    let marker = egui::Color32::from_rgb(255, 64, 160);
+    let corners: Vec<egui::Pos2> = points.iter().map(|p| shown_at(*p, shown, frame)).collect();
+    if corners.len() > 1 {
+        let mut ring = corners.clone();
+        if corners.len() == 4 {
+            ring.push(corners[0]);
+        }
+        painter.add(egui::Shape::line(ring, egui::Stroke::new(1.5, marker)));
+    }
+    for (i, (c, name)) in corners.iter().zip(names).enumerate() {
+        painter.circle_stroke(*c, 6.0, egui::Stroke::new(2.0, marker));
+        painter.line_segment([*c - egui::vec2(10.0, 0.0), *c + egui::vec2(10.0, 0.0)], (1.0, marker));
+        painter.line_segment([*c - egui::vec2(0.0, 10.0), *c + egui::vec2(0.0, 10.0)], (1.0, marker));
+        // Labels point into the frame, so none runs off its edge.
+        let (offset, align) = match (c.x > shown.center().x, c.y > shown.center().y) {
+            (false, false) => (egui::vec2(9.0, 9.0), egui::Align2::LEFT_TOP),
+            (true, false) => (egui::vec2(-9.0, 9.0), egui::Align2::RIGHT_TOP),
+            (true, true) => (egui::vec2(-9.0, -9.0), egui::Align2::RIGHT_BOTTOM),
+            (false, true) => (egui::vec2(9.0, -9.0), egui::Align2::LEFT_BOTTOM),
+        };
+        let text = format!("{} {name}", i + 1);
+        painter.text(*c + offset, align, text, egui::FontId::proportional(14.0), marker);
     }
 }
 

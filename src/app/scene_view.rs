@@ -9,7 +9,7 @@ use crate::scene::{Goal, Scene, Shape};
 use crate::session::Session;
 use glam::{Mat4, Vec2, Vec3};
 
-pub use crate::render::palette::{FEEDBACK_RED, TARGET_RED, WAYPOINT_BLUE};
+pub use crate::render::{FEEDBACK_RED, TARGET_RED, WAYPOINT_BLUE};
 
 /// What to show besides the scene.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]

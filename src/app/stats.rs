@@ -23,10 +23,6 @@ impl Rolling {
     pub fn mean(&self) -> f64 {
         if self.samples.is_empty() { 0.0 } else { self.samples.iter().sum::<f64>() / self.samples.len() as f64 }
     }
-
-    pub fn max(&self) -> f64 {
-        self.samples.iter().copied().fold(0.0, f64::max)
-    }
 }
 
 /// What the panel shows about timing (milliseconds unless named otherwise).
@@ -142,7 +138,6 @@ mod tests {
         for i in 0..100 {
             r.push(f64::from(i));
         }
-        assert_eq!(r.max(), 99.0);
         assert_eq!(r.mean(), (40..100).sum::<i32>() as f64 / 60.0);
     }
 

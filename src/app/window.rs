@@ -4,7 +4,6 @@
 //! into the view's texture, copies that into the window, draws egui on top
 //! and presents; frames are paced to the display's refresh rate.
 
-use super::capture::{Readback, readable};
 use super::lab::Lab;
 use super::panel::{self, Action, HAND_MODES, PanelState};
 use super::ui_cache;
@@ -12,7 +11,7 @@ use super::view::{self, ViewFrame};
 use super::window_surface::WindowSurface;
 use super::{DemoOptions, Screenshot};
 use crate::input::{Button, Modifiers, MouseEvent, SourceEvent};
-use crate::render::{GpuContext, Renderer, RendererOptions, save_png};
+use crate::render::{Alpha, GpuContext, Readback, Renderer, RendererOptions, readable, save_png};
 use anyhow::{Context, anyhow, bail};
 use glam::Vec2;
 use std::sync::Arc;
@@ -443,7 +442,7 @@ impl App {
         if let Some(readback) = capture
             && let Some(shot) = self.screenshot.take()
         {
-            save_screenshot(readback, &device, &shot, self.lab.wall)?;
+            save_screenshot(&readback, &device, &shot, self.lab.wall)?;
         }
         for a in actions {
             self.apply(a);
@@ -632,18 +631,20 @@ fn read_back(
     screen: &egui_wgpu::ScreenDescriptor,
 ) -> Readback {
     let device = gfx.gpu.device.clone();
+    let readback = Readback::new(&device, [frame.width(), frame.height()], frame.format(), "window capture readback");
     if gfx.config.usage.contains(wgpu::TextureUsages::COPY_SRC) {
-        Readback::record(&device, encoder, frame)
+        readback.record(encoder, frame);
     } else {
         let twin = twin_texture(&device, &gfx.config);
         compose(gfx, encoder, &twin, at, live, screen);
-        Readback::record(&device, encoder, &twin)
+        readback.record(encoder, &twin);
     }
+    readback
 }
 
 /// Waits for a read-back and writes it where `--screenshot-after` asked.
-fn save_screenshot(readback: Readback, device: &wgpu::Device, shot: &Screenshot, wall: f64) -> anyhow::Result<()> {
-    let image = readback.finish(device)?;
+fn save_screenshot(readback: &Readback, device: &wgpu::Device, shot: &Screenshot, wall: f64) -> anyhow::Result<()> {
+    let image = readback.read(device, Alpha::Opaque)?;
     save_png(&image, &shot.path)?;
     eprintln!(
         "surfacelab demo: window screenshot {}x{} at {wall:.1} s -> {}",

@@ -39,7 +39,7 @@ pub fn run(args: &CalibrateArgs) -> super::CommandResult {
     } else {
         let title = format!("surfacelab calibrate: {}", first.display());
         let names = names.each_ref().map(String::as_str);
-        let Some(p) = crate::app::point_picker::pick_points(&frame, names, &title)? else {
+        let Some(p) = crate::app::pick_points(&frame, names, &title)? else {
             eprintln!("surfacelab calibrate: the window closed before four points were accepted; nothing written");
             return Ok(ExitCode::FAILURE);
         };

@@ -19,7 +19,7 @@ pub fn run() -> super::CommandResult {
         }
     };
     outln!("display: {display}")?;
-    match crate::render::gpu::probe_adapter() {
+    match crate::render::probe_adapter() {
         Ok(a) => {
             outln!("adapter: {}", a.name)?;
             outln!("backend: {:?}", a.backend)?;

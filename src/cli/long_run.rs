@@ -79,7 +79,7 @@ pub fn replay_showing_progress(
         session.step(&hands)?;
         steps += 1;
         // The clock and the flag every few steps: cheap beside a step.
-        if steps % 8 != 0 {
+        if !steps.is_multiple_of(8) {
             continue;
         }
         if stop.load(Ordering::Relaxed) {

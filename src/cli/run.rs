@@ -3,7 +3,7 @@
 //! write a JSON report.
 
 use super::RunArgs;
-use crate::app::record::Recording;
+use crate::app::Recording;
 use crate::input::tuio::{DEFAULT_PORT, TuioListener};
 use crate::input::{Gesture, quantized};
 use crate::scene;

@@ -3,7 +3,7 @@
 
 use super::ScreenshotArgs;
 use super::long_run::Until;
-use crate::app::scene_view::{self, ViewOptions};
+use crate::app::{ViewOptions, fitted_draw_list};
 use crate::input::Gesture;
 use crate::render::{self, GpuContext};
 use crate::scene;
@@ -27,7 +27,7 @@ pub fn run(args: &ScreenshotArgs) -> super::CommandResult {
     };
     let stopped =
         super::long_run::replay_showing_progress(&mut session, hands, until, "screenshot", "draws the picture")?;
-    let list = scene_view::fitted_draw_list(
+    let list = fitted_draw_list(
         &session,
         ViewOptions { feedback: args.feedback, contact_overlay: !args.no_contact_overlay },
         [w, h],

@@ -34,13 +34,13 @@ pub fn run(args: &StudyArgs) -> super::CommandResult {
     }
     let cpu_before = process_cpu_s();
     let outcome = if let Some(dir) = &args.resume {
-        let run_toml = dir.join(study::output::RUN_TOML);
-        if !run_toml.exists() && dir.join(study::output::TRIALS_CSV).exists() {
+        let run_toml = dir.join(study::RUN_TOML);
+        if !run_toml.exists() && dir.join(study::TRIALS_CSV).exists() {
             return Err(Failure::bad_input(anyhow::anyhow!(
                 "--resume {}: {} is missing{}",
                 dir.display(),
                 run_toml.display(),
-                study::error::orphan_advice(dir)
+                study::orphan_advice(dir)
             )));
         }
         let run =
@@ -145,11 +145,11 @@ fn seeds_into(
     out: &std::path::Path,
     n: u32,
     options: &RunOptions,
-) -> Result<Vec<study::seeds::FindingsRow>, Failure> {
+) -> Result<Vec<study::FindingsRow>, Failure> {
     let mut dirs = Vec::new();
     for k in 1..=n {
-        let design = StudyDesign { seed: study::seeds::seed_for(base.seed, k), ..base.clone() };
-        let dir = study::seeds::seed_dir(out, k);
+        let design = StudyDesign { seed: study::seed_for(base.seed, k), ..base.clone() };
+        let dir = study::seed_dir(out, k);
         let runner = runner_for(args, design.clone(), &dir)?;
         let cpu_before = process_cpu_s();
         let outcome = study::run_study(&design, &dir, runner.as_ref(), options)?;
@@ -157,7 +157,7 @@ fn seeds_into(
         print_outcome(&outcome, cpu_since(cpu_before))?;
         dirs.push(dir);
     }
-    let rows = study::seeds::summarize_seeds(out, &dirs)?;
+    let rows = study::summarize_seeds(out, &dirs)?;
     outln!("findings over {n} seeds (reproduced / seeds that could test it, share, Wilson 95% interval):")?;
     for r in &rows {
         outln!("  {:32} {}", r.finding, share_text(r))?;
@@ -165,7 +165,7 @@ fn seeds_into(
     Ok(rows)
 }
 
-fn share_text(r: &study::seeds::FindingsRow) -> String {
+fn share_text(r: &study::FindingsRow) -> String {
     match (r.share, r.wilson_low, r.wilson_high) {
         (Some(p), Some(lo), Some(hi)) => {
             format!("{}/{} ({:.0}%, 95% CI {:.0}-{:.0}%)", r.reproduced, r.seeds, p * 100.0, lo * 100.0, hi * 100.0)
@@ -196,9 +196,9 @@ fn run_ablation(args: &StudyArgs, options: &RunOptions) -> super::CommandResult 
         let out = args.out.join(&label);
         outln!("repertoire {label}:")?;
         let findings = seeds_into(args, &design, &out, n, options)?;
-        done.push(study::ablation::Arm { repertoire: label, findings });
+        done.push(study::Arm { repertoire: label, findings });
     }
-    study::ablation::write_ablation(&args.out, &done)?;
+    study::write_ablation(&args.out, &done)?;
     outln!(
         "  files in {}: ablation.csv, ablation.md, and a folder per repertoire ({})",
         args.out.display(),
@@ -215,14 +215,12 @@ pub fn parse_shard(s: &str) -> Result<Shard, String> {
 /// `study findings DIR`: findings.csv and seeds.png from `DIR/seed-1`,
 /// `DIR/seed-2`, ... (every consecutive seed folder holding a run.toml).
 fn findings(dir: &std::path::Path) -> super::CommandResult {
-    let dirs: Vec<_> = (1..=u32::MAX)
-        .map(|k| study::seeds::seed_dir(dir, k))
-        .take_while(|d| d.join(study::output::RUN_TOML).exists())
-        .collect();
+    let dirs: Vec<_> =
+        (1..=u32::MAX).map(|k| study::seed_dir(dir, k)).take_while(|d| d.join(study::RUN_TOML).exists()).collect();
     if dirs.is_empty() {
         return Err(study::StudyError::mismatch(dir, "no seed-1/run.toml: not a `study --seeds` folder").into());
     }
-    let rows = study::seeds::summarize_seeds(dir, &dirs)?;
+    let rows = study::summarize_seeds(dir, &dirs)?;
     outln!("findings over {} seeds (reproduced / seeds that could test it):", dirs.len())?;
     for r in &rows {
         outln!("  {:32} {}/{}", r.finding, r.reproduced, r.seeds)?;

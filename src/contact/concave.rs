@@ -185,6 +185,28 @@ fn segment_distance(a0: Vec2, a1: Vec2, b0: Vec2, b1: Vec2) -> f64 {
 /// Ear clipping, then Hertel–Mehlhorn merging.
 fn decompose(ring: &Ring) -> Result<Vec<ConvexPolygon>, PolygonError> {
     let p = &ring.points;
+    let triangles = ear_clip(ring);
+    let pieces = merge_triangles(ring, &triangles);
+    let mut out = Vec::new();
+    for piece in pieces.into_iter().flatten() {
+        let points: Vec<Vec2> = piece.iter().map(|&i| p[i]).collect();
+        let sources: Vec<usize> = piece.iter().map(|&i| ring.source[i]).collect();
+        match ConvexPolygon::with_sources(&points, &sources) {
+            Ok(convex) => out.push(convex),
+            // A sliver thinner than the tolerance covers nothing worth a piece.
+            Err(PolygonError::ZeroArea | PolygonError::TooFewPoints { .. }) => {}
+            Err(e) => return Err(e),
+        }
+    }
+    if out.is_empty() {
+        return Err(PolygonError::ZeroArea);
+    }
+    Ok(out)
+}
+
+/// The ring cut into triangles by ear clipping, as vertex indices.
+fn ear_clip(ring: &Ring) -> Vec<[usize; 3]> {
+    let p = &ring.points;
     let tol = ring.slack();
     let mut chain: Vec<usize> = (0..p.len()).collect();
     let mut triangles: Vec<[usize; 3]> = Vec::new();
@@ -226,8 +248,14 @@ fn decompose(ring: &Ring) -> Result<Vec<ConvexPolygon>, PolygonError> {
     if chain.len() == 3 && turn(p[chain[0]], p[chain[1]], p[chain[2]], tol) == Turn::Convex {
         triangles.push([chain[0], chain[1], chain[2]]);
     }
+    triangles
+}
 
-    // Hertel–Mehlhorn: try every diagonal once.
+/// Hertel–Mehlhorn: neighbouring triangles merged across every diagonal
+/// whose removal keeps the piece convex, each diagonal tried once.
+fn merge_triangles(ring: &Ring, triangles: &[[usize; 3]]) -> Vec<Option<Vec<usize>>> {
+    let p = &ring.points;
+    let tol = ring.slack();
     let mut pieces: Vec<Option<Vec<usize>>> = triangles.iter().map(|t| Some(t.to_vec())).collect();
     let mut owner: HashMap<(usize, usize), usize> = HashMap::new();
     for (id, t) in triangles.iter().enumerate() {
@@ -267,22 +295,7 @@ fn decompose(ring: &Ring) -> Result<Vec<ConvexPolygon>, PolygonError> {
             pieces[qi] = None;
         }
     }
-
-    let mut out = Vec::new();
-    for piece in pieces.into_iter().flatten() {
-        let points: Vec<Vec2> = piece.iter().map(|&i| p[i]).collect();
-        let sources: Vec<usize> = piece.iter().map(|&i| ring.source[i]).collect();
-        match ConvexPolygon::with_sources(&points, &sources) {
-            Ok(convex) => out.push(convex),
-            // A sliver thinner than the tolerance covers nothing worth a piece.
-            Err(PolygonError::ZeroArea | PolygonError::TooFewPoints { .. }) => {}
-            Err(e) => return Err(e),
-        }
-    }
-    if out.is_empty() {
-        return Err(PolygonError::ZeroArea);
-    }
-    Ok(out)
+    pieces
 }
 
 fn merge_across(pp: &[usize], qq: &[usize], u: usize, v: usize) -> Vec<usize> {

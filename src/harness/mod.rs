@@ -10,8 +10,8 @@
 pub mod behaviour;
 pub mod fitts;
 pub mod participant;
-pub mod plot_font;
-pub mod plot_png;
+mod plot_font;
+mod plot_png;
 mod pool;
 pub mod study;
 pub mod tradeoff;

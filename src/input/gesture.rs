@@ -84,7 +84,7 @@ use toml::Spanned;
 
 use crate::pipeline::surface::{Hand, HandKind, MAX_OUTLINE_POINTS, MIN_RING_POINTS, Outline, Pose};
 use crate::scene::bounds;
-use crate::scene::fields::human;
+use crate::scene::human;
 use crate::scene::{FieldError, FieldReader};
 
 /// The `format` value every gesture file carries.
@@ -588,37 +588,7 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand, version: i64) -> Result<T
     let id = u32::try_from(*hand.id.get_ref()).map_err(|_| {
         r.field(format!("{path}.id"), Some(&hand.id), format!("{} is out of range (0..=4294967295)", hand.id.get_ref()))
     })?;
-    let name = hand.kind.get_ref().as_str();
-    let mut kind = HandKind::from_name(name).ok_or_else(|| {
-        let known: Vec<&str> = HandKind::ALL.iter().chain(&[HandKind::Contour]).map(|k| k.name()).collect();
-        r.field(
-            format!("{path}.kind"),
-            Some(&hand.kind),
-            format!("unknown hand kind \"{name}\"; expected one of {}", known.join(", ")),
-        )
-    })?;
-    match (&mut kind, &hand.fingers) {
-        (HandKind::Fingertips(n), Some(f)) => {
-            *n = u8::try_from(*f.get_ref()).ok().filter(|n| (1..=5).contains(n)).ok_or_else(|| {
-                r.field(format!("{path}.fingers"), Some(f), format!("{} is out of range (1..=5)", f.get_ref()))
-            })?;
-        }
-        (_, Some(f)) => {
-            return Err(r.field(
-                format!("{path}.fingers"),
-                Some(f),
-                format!("only kind \"fingertips\" takes `fingers`, not \"{name}\""),
-            ));
-        }
-        (_, None) => {}
-    }
-    if kind == HandKind::Contour && version < 2 {
-        return Err(r.field(
-            format!("{path}.kind"),
-            Some(&hand.kind),
-            format!("kind \"contour\" needs version 2 (this file says version {version})"),
-        ));
-    }
+    let kind = read_kind(r, &path, hand, version)?;
 
     let raw_keys = hand.keys.get_ref();
     if raw_keys.is_empty() {
@@ -653,29 +623,7 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand, version: i64) -> Result<T
                 ));
             }
         }
-        let pos = match (&k.pos, previous) {
-            (Some(p), _) => {
-                let v = *p.get_ref();
-                if !v.iter().all(|c| c.is_finite()) {
-                    return Err(r.field(at("pos"), Some(p), format!("must be finite, found [{}, {}]", v[0], v[1])));
-                }
-                let far = f64::from(bounds::POSITION_M);
-                if v.iter().any(|c| c.abs() > far) {
-                    return Err(r.field(
-                        at("pos"),
-                        Some(p),
-                        format!(
-                            "[{}, {}] is out of range (within ±{far} m of the table centre)",
-                            human(v[0]),
-                            human(v[1])
-                        ),
-                    ));
-                }
-                v
-            }
-            (None, Some(prev)) => prev.pos,
-            (None, None) => return Err(r.field(at("pos"), Some(&k.t), "missing in the first key")),
-        };
+        let pos = read_pos(r, &at, k, previous)?;
         let or = |v: &Option<Spanned<f64>>, name: &str, lo: f64, hi: f64, default: f64| match v {
             Some(v) => r.number(&at(name), v, lo, hi),
             None => Ok(default),
@@ -713,6 +661,72 @@ fn read_hand(r: &Reader<'_>, i: usize, hand: &RawHand, version: i64) -> Result<T
         });
     }
     Ok(Track { id, kind, keys })
+}
+
+/// A hand's kind, with its finger count, refused where the file's version
+/// or the kind does not allow it.
+fn read_kind(r: &Reader<'_>, path: &str, hand: &RawHand, version: i64) -> Result<HandKind, GestureError> {
+    let name = hand.kind.get_ref().as_str();
+    let mut kind = HandKind::from_name(name).ok_or_else(|| {
+        let known: Vec<&str> = HandKind::ALL.iter().chain(&[HandKind::Contour]).map(|k| k.name()).collect();
+        r.field(
+            format!("{path}.kind"),
+            Some(&hand.kind),
+            format!("unknown hand kind \"{name}\"; expected one of {}", known.join(", ")),
+        )
+    })?;
+    match (&mut kind, &hand.fingers) {
+        (HandKind::Fingertips(n), Some(f)) => {
+            *n = u8::try_from(*f.get_ref()).ok().filter(|n| (1..=5).contains(n)).ok_or_else(|| {
+                r.field(format!("{path}.fingers"), Some(f), format!("{} is out of range (1..=5)", f.get_ref()))
+            })?;
+        }
+        (_, Some(f)) => {
+            return Err(r.field(
+                format!("{path}.fingers"),
+                Some(f),
+                format!("only kind \"fingertips\" takes `fingers`, not \"{name}\""),
+            ));
+        }
+        (_, None) => {}
+    }
+    if kind == HandKind::Contour && version < 2 {
+        return Err(r.field(
+            format!("{path}.kind"),
+            Some(&hand.kind),
+            format!("kind \"contour\" needs version 2 (this file says version {version})"),
+        ));
+    }
+    Ok(kind)
+}
+
+/// A template key's position: given (finite, near the table) or the
+/// previous key's; the first key must give one.
+fn read_pos(
+    r: &Reader<'_>,
+    at: &dyn Fn(&str) -> String,
+    k: &RawKey,
+    previous: Option<&Key>,
+) -> Result<[f64; 2], GestureError> {
+    match (&k.pos, previous) {
+        (Some(p), _) => {
+            let v = *p.get_ref();
+            if !v.iter().all(|c| c.is_finite()) {
+                return Err(r.field(at("pos"), Some(p), format!("must be finite, found [{}, {}]", v[0], v[1])));
+            }
+            let far = f64::from(bounds::POSITION_M);
+            if v.iter().any(|c| c.abs() > far) {
+                return Err(r.field(
+                    at("pos"),
+                    Some(p),
+                    format!("[{}, {}] is out of range (within ±{far} m of the table centre)", human(v[0]), human(v[1])),
+                ));
+            }
+            Ok(v)
+        }
+        (None, Some(prev)) => Ok(prev.pos),
+        (None, None) => Err(r.field(at("pos"), Some(&k.t), "missing in the first key")),
+    }
 }
 
 /// One key of a contour hand: `points` (and `holes`) or the previous key's,

@@ -5,35 +5,36 @@
 //! - [`Renderer`]: long-lived pipelines; `prepare(&DrawList, size)` uploads a
 //!   frame, `paint(encoder, view)` draws it into any view of its format.
 //! - [`Capture`] / [`render_to_image`] / [`save_png`]: off-screen frames.
-//! - [`snapshot`]: golden-image checks for tests; [`samples`]: shared scenes.
+//! - `snapshot`: golden-image checks for tests; [`samples`]: shared scenes.
 //!
 //! Shaders live in `shaders/<pipeline>.wgsl`, each prefixed with
 //! `shaders/frame.wgsl` (uniforms, shadow lookup, lighting).
 
-pub mod bounds;
+mod bounds;
 mod buffer;
-pub mod camera;
-pub mod capture;
+mod camera;
+mod capture;
 mod contact_texture;
-pub mod draw_list;
-pub mod error;
+mod draw_list;
+mod error;
 mod frame;
-pub mod gpu;
+mod gpu;
 mod instances;
-pub mod light;
-pub mod mesh;
+mod light;
+mod mesh;
 mod mesh_library;
-pub mod palette;
+mod palette;
 mod pipelines;
-pub mod renderer;
+mod readback;
+mod renderer;
 pub mod samples;
 mod shadow_map;
-pub mod snapshot;
+mod snapshot;
 mod targets;
 mod uniforms;
 
 pub use camera::CameraMatrices;
-pub use capture::{CAPTURE_FORMAT, Capture, padded_bytes_per_row, render_to_image, save_png};
+pub use capture::{CAPTURE_FORMAT, Capture, render_to_image, save_png};
 pub use draw_list::*;
 pub use error::RenderError;
 pub use gpu::{
@@ -41,4 +42,7 @@ pub use gpu::{
     request_device,
 };
 pub use instances::DOT_PER_LINE_WIDTH;
+pub use palette::{FEEDBACK_RED, TARGET_RED, WAYPOINT_BLUE};
+pub use readback::{Alpha, Readback, padded_bytes_per_row, readable};
 pub use renderer::{Renderer, RendererOptions};
+pub use snapshot::{SnapshotDir, Tolerance, compare};

@@ -88,9 +88,9 @@ impl<'a> FieldReader<'a> {
                     Some((_, c)) => *c += 1,
                     None => counts.push((name.to_owned(), 1)),
                 }
-                table = name.to_owned();
+                name.clone_into(&mut table);
             } else if let Some(name) = t.strip_prefix('[').and_then(|r| r.split_once(']')).map(|(n, _)| n.trim()) {
-                table = name.to_owned();
+                name.clone_into(&mut table);
             }
         }
         let mut path = Vec::new();

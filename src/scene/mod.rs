@@ -10,21 +10,23 @@ pub mod builtin;
 mod defaults;
 mod effects;
 mod error;
-pub mod fields;
+mod fields;
 mod file;
 mod id;
 mod model;
+mod outline;
 mod validate;
 mod work;
 
 pub use builder::{SceneBuilder, ShapeSpec};
 pub use effects::{Effect, EffectSet};
 pub use error::SceneError;
-pub use fields::{FieldError, FieldReader};
+pub use fields::{FieldError, FieldReader, human};
 pub use id::{ObjectId, SoftId};
 pub use model::{
     BodyKind, CameraSpec, Color, Goal, ObjectSpec, PhysicsSpec, Scene, Shape, SoftBodySpec, SoftKind, SortingZone,
     SteeringGoal, Table, Target,
 };
+pub use outline::{Ring, footprint, solid_outline};
 pub use validate::{load, parse, resolve_path};
 pub use work::{MAX_OBJECT_STEPS, MAX_PARTICLE_STEPS, Work};

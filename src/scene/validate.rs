@@ -589,21 +589,7 @@ impl Checker<'_> {
             ));
         }
         let resolution = self.soft_resolution(&span, i, &b, kind, size)?;
-        let position = match b.position.as_slice() {
-            [x, y] => Vec3::new(*x, *y, if kind == SoftKind::Cloth { thickness } else { size.z / 2.0 + thickness }),
-            [x, y, z] => Vec3::new(*x, *y, *z),
-            _ => return Err(self.err(&span, f("position"), "must be [x, y] or [x, y, z]")),
-        };
-        for (k, v) in position.to_array().iter().enumerate() {
-            self.num(&span, &f(&format!("position[{k}]")), *v, -bounds::POSITION_M, bounds::POSITION_M)?;
-        }
-        if !table_contains(table, position.truncate()) {
-            return Err(self.err(
-                &span,
-                f("position"),
-                format!("({:.3}, {:.3}) lies off the table", position.x, position.y),
-            ));
-        }
+        let position = self.soft_position(&span, i, &b, kind, size, thickness, table)?;
         let mass = self.soft_mass(&span, i, &b, kind, size)?;
         self.cloth_only_keys(&span, i, &b, kind)?;
         let tear_strain = match b.tear_strain {
@@ -648,6 +634,38 @@ impl Checker<'_> {
             }
         }
         Ok(spec)
+    }
+
+    /// Where a soft body starts: as written, or resting on the table at
+    /// `[x, y]`; on the table either way.
+    #[allow(clippy::too_many_arguments)]
+    fn soft_position(
+        &self,
+        span: &Range<usize>,
+        i: usize,
+        b: &SoftBodyFile,
+        kind: SoftKind,
+        size: Vec3,
+        thickness: f32,
+        table: &Table,
+    ) -> Result<Vec3, SceneError> {
+        let f = |field: &str| format!("soft_bodies[{i}].{field}");
+        let position = match b.position.as_slice() {
+            [x, y] => Vec3::new(*x, *y, if kind == SoftKind::Cloth { thickness } else { size.z / 2.0 + thickness }),
+            [x, y, z] => Vec3::new(*x, *y, *z),
+            _ => return Err(self.err(span, f("position"), "must be [x, y] or [x, y, z]")),
+        };
+        for (k, v) in position.to_array().iter().enumerate() {
+            self.num(span, &f(&format!("position[{k}]")), *v, -bounds::POSITION_M, bounds::POSITION_M)?;
+        }
+        if !table_contains(table, position.truncate()) {
+            return Err(self.err(
+                span,
+                f("position"),
+                format!("({:.3}, {:.3}) lies off the table", position.x, position.y),
+            ));
+        }
+        Ok(position)
     }
 
     /// A soft body's particle grid: as written, or from its size at the

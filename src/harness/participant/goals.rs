@@ -3,7 +3,7 @@
 //! is, how much work is left, and which objects share a destination.
 
 use crate::scene::{Goal, ObjectId, Scene};
-use crate::session::goal::GoalTracker;
+use crate::session::GoalTracker;
 use glam::Vec2;
 
 /// Where the goal wants one object now.

@@ -4,8 +4,8 @@
 //! recordings (`runner`).
 
 mod goals;
-pub mod learner;
-pub mod manner;
+mod learner;
+mod manner;
 mod planner;
 mod repertoire;
 mod runner;
@@ -13,7 +13,7 @@ mod skill;
 mod trial;
 mod usage;
 
-pub use learner::Learner;
+pub use learner::{EXPLORE_PRACTICE, Learner};
 pub use manner::Manner;
 pub use planner::{Planner, PlannerOptions};
 pub use repertoire::{PRESETS, Repertoire, RepertoireError};

@@ -291,9 +291,7 @@ fn execute(
     let mut written = 0usize;
     if !todo.is_empty() {
         let sessions = session_plan(&trials, &todo_index);
-        let jobs =
-            if options.jobs == 0 { std::thread::available_parallelism().map_or(1, usize::from) } else { options.jobs };
-        let jobs = jobs.clamp(1, sessions.len().max(1));
+        let jobs = jobs_for(options, sessions.len());
         let next = AtomicUsize::new(0);
         let stop = AtomicBool::new(false);
         let (tx, rx) = mpsc::channel::<Measured>();
@@ -360,16 +358,19 @@ fn execute(
         failed: not_completed,
         errors: failed,
         simulated_s,
-        jobs: if options.jobs == 0 {
-            std::thread::available_parallelism().map_or(1, usize::from)
-        } else {
-            options.jobs
-        }
-        .clamp(1, todo.len().max(1)),
+        jobs: jobs_for(options, todo.len()),
         dropped_bytes: recovered.dropped_bytes,
         reported,
         elapsed: started.elapsed(),
     })
+}
+
+/// Worker threads for `work` pieces of work: as asked (0 = one per core),
+/// at least one and no more than there is work.
+fn jobs_for(options: &RunOptions, work: usize) -> usize {
+    let jobs =
+        if options.jobs == 0 { std::thread::available_parallelism().map_or(1, usize::from) } else { options.jobs };
+    jobs.clamp(1, work.max(1))
 }
 
 /// A measured trial's row, sent from a worker: its place among the trials

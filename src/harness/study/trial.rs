@@ -9,7 +9,7 @@
 //!   the measured ones.
 
 use crate::pipeline::technique::TechniqueKind;
-use crate::session::goal::Progress;
+use crate::session::Progress;
 use serde::{Deserialize, Serialize};
 
 /// Everything the runner needs to run one trial. The same spec always gives

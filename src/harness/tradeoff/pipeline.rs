@@ -114,9 +114,17 @@ fn with_vision(mut s: Setup, f: impl FnOnce(&mut VisionParams)) -> Setup {
 /// Every pipeline knob. `quick` trims the value lists.
 pub fn knobs(quick: bool) -> anyhow::Result<Vec<Knob>> {
     let b = base()?;
+    let mut out = sensing_knobs(&b, quick);
+    out.extend(physics_knobs(&b, quick));
+    out.extend(switch_knobs(&b));
+    Ok(out)
+}
+
+/// The knobs of the camera and the vision stage: resolution, outline
+/// stride and threshold, flow block and search radius.
+fn sensing_knobs(b: &Setup, quick: bool) -> Vec<Knob> {
     let defaults = TechniqueConfig::default();
     let dv = VisionParams::default();
-    let dp = b.scene.physics;
     let mut out = Vec::new();
 
     let res: &[(u32, u32)] = if quick {
@@ -185,6 +193,13 @@ pub fn knobs(quick: bool) -> anyhow::Result<Vec<Knob>> {
             .collect(),
         scripted: false,
     });
+    out
+}
+
+/// The knobs of the physics step: solver and PGS iterations, timestep.
+fn physics_knobs(b: &Setup, quick: bool) -> Vec<Knob> {
+    let dp = b.scene.physics;
+    let mut out = Vec::new();
     let iters: &[usize] = if quick { &[1, 2, 4, 8] } else { &[1, 2, 4, 8, 16] };
     let solver = |n: usize| {
         let mut s = b.clone();
@@ -220,7 +235,12 @@ pub fn knobs(quick: bool) -> anyhow::Result<Vec<Knob>> {
         values: rates.iter().map(|&hz| (hz.to_string(), (1.0 / hz - dp.dt).abs() < 1e-6, rate(hz))).collect(),
         scripted: !quick,
     });
-    // Switches whose "off" is the paper's way, which is also the reference.
+    out
+}
+
+/// Switches whose "off" is the paper's way, which is also the reference.
+fn switch_knobs(b: &Setup) -> Vec<Knob> {
+    let defaults = TechniqueConfig::default();
     let switch = |name, labels: [&str; 2], default: bool, set: fn(&mut TechniqueConfig, bool)| Knob {
         name,
         reference: with_config(b.clone(), |c| set(c, false)),
@@ -230,11 +250,12 @@ pub fn knobs(quick: bool) -> anyhow::Result<Vec<Knob>> {
             .collect(),
         scripted: false,
     };
-    out.push(switch("particle_pooling", ["per_frame", "pooled"], defaults.particle_pooled, |c, on| {
-        c.particle_pooled = on;
-    }));
-    out.push(switch("particle_cull", ["off", "on"], defaults.particle_cull, |c, on| c.particle_cull = on));
-    Ok(out)
+    vec![
+        switch("particle_pooling", ["per_frame", "pooled"], defaults.particle_pooled, |c, on| {
+            c.particle_pooled = on;
+        }),
+        switch("particle_cull", ["off", "on"], defaults.particle_cull, |c, on| c.particle_cull = on),
+    ]
 }
 
 /// Completion time of one scripted positioning trial under a setup's physics.

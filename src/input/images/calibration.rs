@@ -227,9 +227,9 @@ fn offset<T>(s: &Spanned<T>) -> usize {
     s.span().start
 }
 
-/// Every rule of the format; `dir`: where to read a background (`None`:
-/// the caller supplies it).
-fn check(r: &FieldReader<'_>, raw: &RawCalibration, dir: Option<&Path>) -> Result<Calibration, ImagesError> {
+/// The file's `format` and `version`: this build's, or an error naming
+/// what it found.
+fn check_header(r: &FieldReader<'_>, raw: &RawCalibration) -> Result<(), ImagesError> {
     match &raw.format {
         None => return Err(r.error(None, "format", format!("missing; expected \"{FORMAT}\"")).into()),
         Some(f) if f.get_ref().as_str() != Some(FORMAT) => {
@@ -247,6 +247,13 @@ fn check(r: &FieldReader<'_>, raw: &RawCalibration, dir: Option<&Path>) -> Resul
         }
         Some(_) => {}
     }
+    Ok(())
+}
+
+/// Every rule of the format; `dir`: where to read a background (`None`:
+/// the caller supplies it).
+fn check(r: &FieldReader<'_>, raw: &RawCalibration, dir: Option<&Path>) -> Result<Calibration, ImagesError> {
+    check_header(r, raw)?;
     let kind = match raw.kind.get_ref().as_str() {
         "ir" => CameraKind::Ir,
         "depth" => CameraKind::Depth,

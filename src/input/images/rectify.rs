@@ -9,7 +9,7 @@
 //! four loads and a few multiplies per contact pixel.
 
 use super::{Calibration, CameraImage, Conversion, Pixels};
-use crate::pipeline::surface::{ContactImage, Sensor};
+use crate::pipeline::surface::{ContactImage, PixelPoint, Sensor};
 
 /// Where a contact pixel samples the camera image: the top-left of its
 /// four camera pixels and its position between them.
@@ -53,7 +53,7 @@ impl Rectifier {
         let mut taps = Vec::with_capacity(w * h);
         for r in 0..h {
             for c in 0..w {
-                let t = sensor.to_table([c as f32, r as f32]);
+                let t = sensor.to_table(PixelPoint::new(c as f32, r as f32)).to_array();
                 let t = [f64::from(t[0]), f64::from(t[1])];
                 let tap = match to_image.apply(t) {
                     Some([x, y])
@@ -294,7 +294,7 @@ mod tests {
         let frame = CameraImage { width: 640, height: 480, pixels: Pixels::Grey8(levels) };
         let mut out = ContactImage::default();
         assert!(Rectifier::new(&cal, &sensor).rectify(&frame, &mut out));
-        let p = sensor.to_pixel([0.2, -0.1]);
+        let p = sensor.to_pixel(crate::pipeline::surface::TablePoint::new(0.2, -0.1)).to_array();
         assert_eq!(out.get(p[0].round() as i32, p[1].round() as i32), 255);
         // The lit region's centroid lies on the point, within a contact pixel.
         let (mut sx, mut sy, mut n) = (0.0, 0.0, 0.0);

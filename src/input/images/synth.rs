@@ -22,7 +22,7 @@
 
 use super::{Background, Calibration, CameraImage, CameraKind, Conversion, ImagesError, Pixels};
 use crate::input::Gesture;
-use crate::pipeline::surface::{ContactImage, RasterParams, Sensor, rasterize};
+use crate::pipeline::surface::{ContactImage, RasterParams, Sensor, TablePoint, rasterize};
 use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use std::path::Path;
@@ -102,7 +102,9 @@ impl Synthesizer {
         for y in 0..h {
             for x in 0..w {
                 let p = to_table.apply([f64::from(x), f64::from(y)]).filter(|p| p[0].abs() <= hw && p[1].abs() <= hd);
-                looks_at.push(p.map_or([f32::NAN; 2], |p| sensor.to_pixel([p[0] as f32, p[1] as f32])));
+                looks_at.push(
+                    p.map_or([f32::NAN; 2], |p| sensor.to_pixel(TablePoint::new(p[0] as f32, p[1] as f32)).to_array()),
+                );
             }
         }
         Ok(Synthesizer { calibration, sensor: *sensor, looks_at, background, vignette, seed })

@@ -509,6 +509,12 @@ fn ellipse(b: &Bounds) -> Vec<[f32; 2]> {
 // Decoding: every argument checked, so that a packet is applied whole or not
 // at all.
 
+/// One TUIO 2.0 message decoded into an operation.
+///
+/// One piece on purpose: a decoder, one match arm per message of the
+/// specification, each checking its own arguments; split, a message's
+/// layout would be spread over helpers that each know one field.
+#[allow(clippy::too_many_lines, reason = "a decoder: one arm per TUIO 2.0 message")]
 pub(super) fn op(m: &OscMessage) -> Result<Op2, TuioError> {
     let Some(name) = m.addr.strip_prefix("/tuio2/") else {
         return Ok(Op2::Ignored);
@@ -809,7 +815,7 @@ mod tests {
     }
 
     fn grey(image: &crate::pipeline::surface::ContactImage, sensor: &Sensor, p: [f32; 2]) -> u8 {
-        let [c, r] = sensor.to_pixel(p);
+        let [c, r] = sensor.to_pixel(crate::pipeline::surface::TablePoint::from(p)).to_array();
         image.pixels[r.round() as usize * image.width + c.round() as usize]
     }
 

@@ -13,7 +13,7 @@ use std::ops::Range;
 use super::footprint::Patch;
 use super::hand::Hand;
 use super::image::ContactImage;
-use super::sensor::Sensor;
+use super::sensor::{Sensor, TablePoint};
 
 /// Additive sensor noise: every pixel gets a uniform integer in
 /// `-amplitude..=amplitude` (clamped to 0..=255), drawn from a `ChaCha8Rng`
@@ -146,8 +146,8 @@ fn pixel_window(
         return None;
     }
     // Pixel rows grow as y falls: the top of the box is the first row.
-    let a = sensor.to_pixel([lo[0] - reach, hi[1] + reach]);
-    let b = sensor.to_pixel([hi[0] + reach, lo[1] - reach]);
+    let a = sensor.to_pixel(TablePoint::new(lo[0] - reach, hi[1] + reach)).to_array();
+    let b = sensor.to_pixel(TablePoint::new(hi[0] + reach, lo[1] - reach)).to_array();
     let max_c = image.width as f32 - 1.0;
     let max_r = image.height as f32 - 1.0;
     if b[0] < 0.0 || b[1] < 0.0 || a[0] > max_c || a[1] > max_r {
@@ -237,8 +237,8 @@ fn draw_outline(
         for i in 0..ring.len() {
             let (p, q) = (ring[j], ring[i]);
             j = i;
-            let ea = sensor.to_pixel([p[0].min(q[0]) - reach, p[1].max(q[1]) + reach]);
-            let eb = sensor.to_pixel([p[0].max(q[0]) + reach, p[1].min(q[1]) - reach]);
+            let ea = sensor.to_pixel(TablePoint::new(p[0].min(q[0]) - reach, p[1].max(q[1]) + reach)).to_array();
+            let eb = sensor.to_pixel(TablePoint::new(p[0].max(q[0]) + reach, p[1].min(q[1]) - reach)).to_array();
             let ec0 = (ea[0].ceil().max(c0 as f32) as usize).min(c1 + 1);
             let ec1 = eb[0].floor().min(c1 as f32);
             let er0 = (ea[1].ceil().max(r0 as f32) as usize).min(r1 + 1);
@@ -371,7 +371,7 @@ mod tests {
         hand.pressure = 0.6;
         let image = rasterize(&[hand], &sensor, &RasterParams::default());
         let at = |p: [f32; 2]| {
-            let [c, r] = sensor.to_pixel(p);
+            let [c, r] = sensor.to_pixel(TablePoint::from(p)).to_array();
             image.pixels[r.round() as usize * image.width + c.round() as usize]
         };
         assert_eq!(at([0.0, 0.0]), 0, "the hole");

@@ -1,7 +1,63 @@
 //! The camera under the table: which table point each pixel of the contact
 //! image sees.
 
+use glam::Vec2;
 use serde::{Deserialize, Serialize};
+
+/// A position in the contact image: `[column, row]`, integers at pixel
+/// centres (see [`Sensor`]). A distinct type from [`TablePoint`] so that
+/// the compiler refuses a pixel where metres are meant.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct PixelPoint(pub Vec2);
+
+/// A point on the table, metres from its centre, x to the right and y
+/// away from the viewer (see [`Sensor`]).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct TablePoint(pub Vec2);
+
+impl PixelPoint {
+    pub const fn new(column: f32, row: f32) -> PixelPoint {
+        PixelPoint(Vec2::new(column, row))
+    }
+
+    pub fn to_array(self) -> [f32; 2] {
+        self.0.to_array()
+    }
+}
+
+impl TablePoint {
+    pub const fn new(x: f32, y: f32) -> TablePoint {
+        TablePoint(Vec2::new(x, y))
+    }
+
+    pub fn to_array(self) -> [f32; 2] {
+        self.0.to_array()
+    }
+}
+
+impl From<[f32; 2]> for PixelPoint {
+    fn from(p: [f32; 2]) -> PixelPoint {
+        PixelPoint(Vec2::from(p))
+    }
+}
+
+impl From<[f32; 2]> for TablePoint {
+    fn from(p: [f32; 2]) -> TablePoint {
+        TablePoint(Vec2::from(p))
+    }
+}
+
+impl From<Vec2> for TablePoint {
+    fn from(p: Vec2) -> TablePoint {
+        TablePoint(p)
+    }
+}
+
+impl From<TablePoint> for Vec2 {
+    fn from(p: TablePoint) -> Vec2 {
+        p.0
+    }
+}
 
 /// The mapping between contact-image pixels and table coordinates.
 ///
@@ -40,17 +96,19 @@ impl Sensor {
 
     /// Pixel position (`[column, row]`, integers at pixel centres) to table
     /// metres.
-    pub fn to_table(&self, px: [f32; 2]) -> [f32; 2] {
+    pub fn to_table(&self, px: PixelPoint) -> TablePoint {
         let [sx, sy] = self.pixel_size();
-        [(px[0] + 0.5) * sx - self.table_width_m * 0.5, self.table_depth_m * 0.5 - (px[1] + 0.5) * sy]
+        let PixelPoint(Vec2 { x: c, y: r }) = px;
+        TablePoint::new((c + 0.5) * sx - self.table_width_m * 0.5, self.table_depth_m * 0.5 - (r + 0.5) * sy)
     }
 
     /// Table metres to a (fractional) pixel position; the inverse of
     /// [`Sensor::to_table`]. Points off the table give positions outside the
     /// image: callers decide whether to clamp.
-    pub fn to_pixel(&self, p: [f32; 2]) -> [f32; 2] {
+    pub fn to_pixel(&self, p: TablePoint) -> PixelPoint {
         let [sx, sy] = self.pixel_size();
-        [(p[0] + self.table_width_m * 0.5) / sx - 0.5, (self.table_depth_m * 0.5 - p[1]) / sy - 0.5]
+        let TablePoint(Vec2 { x, y }) = p;
+        PixelPoint::new((x + self.table_width_m * 0.5) / sx - 0.5, (self.table_depth_m * 0.5 - y) / sy - 0.5)
     }
 
     /// A displacement or velocity in pixels (rows grow downwards) to metres
@@ -89,11 +147,11 @@ mod tests {
     #[test]
     fn corners_and_centre_map_as_documented() {
         let s = Sensor::default();
-        let first = s.to_table([0.0, 0.0]);
+        let first = s.to_table(PixelPoint::new(0.0, 0.0)).to_array();
         assert!((first[0] - (-0.5 + 0.000_781_25)).abs() < 1e-6);
         assert!((first[1] - (0.375 - 0.000_781_25)).abs() < 1e-6);
         // The table centre lies between the four middle pixels.
-        let c = s.to_pixel([0.0, 0.0]);
+        let c = s.to_pixel(TablePoint::new(0.0, 0.0)).to_array();
         assert!((c[0] - 319.5).abs() < 1e-4 && (c[1] - 239.5).abs() < 1e-4);
         assert!((s.metres_per_pixel() - 0.001_562_5).abs() < 1e-9);
     }
@@ -102,7 +160,7 @@ mod tests {
     fn round_trip() {
         let s = Sensor::new(100, 50, 2.0, 0.5);
         for p in [[0.0, 0.0], [12.25, 3.5], [99.0, 49.0]] {
-            let q = s.to_pixel(s.to_table(p));
+            let q = s.to_pixel(s.to_table(PixelPoint::from(p))).to_array();
             assert!((q[0] - p[0]).abs() < 1e-4 && (q[1] - p[1]).abs() < 1e-4);
         }
         let v = s.vector_to_pixel(s.vector_to_table([3.0, -2.0]));

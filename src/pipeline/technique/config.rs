@@ -255,7 +255,7 @@ impl TechniqueConfig {
             ("friction", self.friction, (0.0, b::TECHNIQUE_GAIN)),
             ("particle_edge_threshold", self.particle_edge_threshold, (0.0, b::TECHNIQUE_GAIN)),
         ];
-        let human = crate::scene::fields::human;
+        let human = crate::scene::human;
         for (name, v, (lo, hi)) in ranged {
             if !v.is_finite() {
                 return Err((name, format!("must be a finite number, got {v}")));

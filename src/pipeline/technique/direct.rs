@@ -6,11 +6,11 @@
 
 use super::surface_point::{clamp_len, table_point, table_velocity};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
-use crate::pipeline::surface::Sensor;
+use crate::pipeline::surface::{Sensor, TablePoint};
 use crate::pipeline::vision::Blob;
+use crate::pipeline::world::prelude::SoftBodyHandle;
 use crate::pipeline::world::{TechniqueWorld, World, WorldError};
 use glam::Vec3;
-use rapier3d::prelude::SoftBodyHandle;
 
 #[derive(Debug)]
 pub struct DirectForce {
@@ -36,7 +36,7 @@ fn soft_particles_under(world: &World, sensor: &Sensor, blob: &Blob) -> Vec<(Sof
     let mut out = Vec::new();
     for (h, b) in world.physics().soft_bodies.iter() {
         for (i, p) in b.particle_positions().enumerate() {
-            let [x, y] = sensor.to_pixel(world.screen_point(p).to_array());
+            let [x, y] = sensor.to_pixel(TablePoint(world.screen_point(p))).to_array();
             if blob.contains(x.round() as i64, y.round() as i64) {
                 out.push((h, i as u32));
             }

@@ -21,8 +21,8 @@ use crate::contact::{ConvexPolygon, Vec2 as CVec2, contact_report};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::Contact;
 use crate::pipeline::world::{ObjectId, World};
-use crate::scene::Shape;
-use glam::{Quat, Vec2, Vec3};
+use crate::scene::{Ring, solid_outline};
+use glam::Vec2;
 
 /// Points per ring when a round shape's silhouette is sampled: the hull of
 /// 24 points on a circle lies within 0.9% of its radius.
@@ -76,42 +76,10 @@ pub fn outline(contact: &Contact, sensor: &Sensor) -> Vec<Vec2> {
 pub fn silhouette(world: &World, id: ObjectId) -> Vec<Vec2> {
     let pose = world.object_pose(id);
     let shape = world.scene().object(id).shape;
-    shape_points(shape, pose.position, pose.rotation).into_iter().map(|p| world.screen_point(p)).collect()
-}
-
-/// Points whose convex hull is the shape (its corners, or rings round its
-/// round parts), in the world.
-fn shape_points(shape: Shape, at: Vec3, turn: Quat) -> Vec<Vec3> {
-    let ring = |r: f32, z: f32| {
-        (0..RING).map(move |k| {
-            let a = k as f32 * std::f32::consts::TAU / RING as f32;
-            Vec3::new(r * a.cos(), r * a.sin(), z)
-        })
-    };
-    let local: Vec<Vec3> = match shape {
-        Shape::Box { half_extents: h } => {
-            (0..8).map(|k| Vec3::new(sign(k & 1) * h.x, sign(k & 2) * h.y, sign(k & 4) * h.z)).collect()
-        }
-        // Three great circles bound a sphere's silhouette from any eye.
-        Shape::Sphere { radius } => ring(radius, 0.0)
-            .chain((0..RING).flat_map(|k| {
-                let a = k as f32 * std::f32::consts::TAU / RING as f32;
-                [Vec3::new(radius * a.cos(), 0.0, radius * a.sin()), Vec3::new(0.0, radius * a.cos(), radius * a.sin())]
-            }))
-            .collect(),
-        Shape::Cylinder { radius, half_height } => {
-            ring(radius, -half_height).chain(ring(radius, half_height)).collect()
-        }
-        Shape::Capsule { radius, half_height } => ring(radius, -half_height)
-            .chain(ring(radius, half_height))
-            .chain([Vec3::new(0.0, 0.0, half_height + radius), Vec3::new(0.0, 0.0, -half_height - radius)])
-            .collect(),
-    };
-    local.into_iter().map(|p| at + turn * p).collect()
-}
-
-fn sign(bit: usize) -> f32 {
-    if bit == 0 { -1.0 } else { 1.0 }
+    solid_outline(shape, pose.position, pose.rotation, Ring::on(RING))
+        .into_iter()
+        .map(|p| world.screen_point(p))
+        .collect()
 }
 
 /// The convex polygon around `points` (any order); `None` for fewer than

@@ -42,10 +42,10 @@ use super::proxy::{gravity_scale_for, pressure_weight};
 use super::surface_point::{at_height, clamp_len, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
 use crate::pipeline::surface::Sensor;
-use crate::pipeline::vision::{Contact, FlowInterest};
+use crate::pipeline::vision::{Contact, ContactId, FlowInterest};
+use crate::pipeline::world::prelude::*;
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
-use rapier3d::prelude::*;
 use std::collections::BTreeMap;
 
 /// Height (m) of a grip capsule: above the equator of the largest ball in
@@ -81,7 +81,7 @@ struct Held {
 pub struct HybridTechnique {
     particles: ParticleTechnique,
     /// By contact id; a `BTreeMap` keeps creation order deterministic.
-    held: BTreeMap<u32, Held>,
+    held: BTreeMap<ContactId, Held>,
     grip_positions: Vec<Vec3>,
 }
 
@@ -212,7 +212,7 @@ impl Technique for HybridTechnique {
                 world.remove_body(g.body);
             }
         }
-        let gone: Vec<u32> = self.held.keys().copied().filter(|id| !seen.contains(id)).collect();
+        let gone: Vec<ContactId> = self.held.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in gone {
             if let Some(held) = self.held.remove(&id) {
                 for g in held.grips {

@@ -36,10 +36,11 @@
 use super::hit_test;
 use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
 use super::{Feedback, HitTest, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
-use crate::pipeline::vision::Contact;
+use crate::pipeline::surface::PixelPoint;
+use crate::pipeline::vision::{Contact, ContactId};
+use crate::pipeline::world::prelude::*;
 use crate::pipeline::world::{Layer, ObjectId, TechniqueBody, TechniqueJoint, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
-use rapier3d::prelude::*;
 use std::collections::{BTreeMap, BTreeSet};
 
 /// Height of the kinematic side-collision prism (m): taller than the
@@ -100,11 +101,11 @@ const PRISM_SCALES: [f32; 4] = [1.0, 0.75, 0.5, 0.25];
 #[derive(Debug)]
 pub struct JointTechnique {
     config: TechniqueConfig,
-    grabs: BTreeMap<u32, Grab>,
-    soft_grabs: BTreeMap<u32, SoftGrab>,
-    pushers: BTreeMap<u32, Pusher>,
+    grabs: BTreeMap<ContactId, Grab>,
+    soft_grabs: BTreeMap<ContactId, SoftGrab>,
+    pushers: BTreeMap<ContactId, Pusher>,
     /// Contacts whose joint broke: they grab nothing until lifted.
-    broken: BTreeSet<u32>,
+    broken: BTreeSet<ContactId>,
     contacts: usize,
 }
 
@@ -248,7 +249,7 @@ impl JointTechnique {
 }
 
 /// The edges of a pusher prism where its collider is now.
-fn prism_edges(col: &rapier3d::prelude::Collider) -> Vec<(Vec3, Vec3)> {
+fn prism_edges(col: &crate::pipeline::world::prelude::Collider) -> Vec<(Vec3, Vec3)> {
     let pose = col.position();
     let at = |p: Vec3| pose.transform_point(p);
     let shape = col.shape();
@@ -293,7 +294,9 @@ fn pusher_shape(
         .hull
         .iter()
         .map(|q| {
-            (at_height(world, Vec2::from(input.sensor.to_table([q[0] as f32, q[1] as f32])), mid) - target) * scale
+            (at_height(world, Vec2::from(input.sensor.to_table(PixelPoint::new(q[0] as f32, q[1] as f32))), mid)
+                - target)
+                * scale
         })
         .collect();
     (target, prism(&hull, input.sensor.metres_per_pixel()))
@@ -308,7 +311,7 @@ fn overlaps_object(world: &World, shape: &SharedShape, base: Vec3) -> bool {
         let dynamic = physics.bodies.get(world.object_body(id)).is_some_and(RigidBody::is_dynamic);
         dynamic
             && physics.colliders.get(world.object_collider(id)).is_some_and(|c| {
-                rapier3d::parry::query::intersection_test(&pose, shape.as_ref(), c.position(), c.shape())
+                crate::pipeline::world::parry::query::intersection_test(&pose, shape.as_ref(), c.position(), c.shape())
                     .is_ok_and(|hit| hit.intersecting)
             })
     })
@@ -391,19 +394,19 @@ impl Technique for JointTechnique {
             }
             self.update_pusher(world, c, input, target);
         }
-        let lifted: Vec<u32> = self.grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
+        let lifted: Vec<ContactId> = self.grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in lifted {
             if let Some(g) = self.grabs.remove(&id) {
                 Self::release(world, g);
             }
         }
-        let lifted: Vec<u32> = self.soft_grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
+        let lifted: Vec<ContactId> = self.soft_grabs.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in lifted {
             if let Some(g) = self.soft_grabs.remove(&id) {
                 Self::release_soft(world, g);
             }
         }
-        let lifted: Vec<u32> = self.pushers.keys().copied().filter(|id| !seen.contains(id)).collect();
+        let lifted: Vec<ContactId> = self.pushers.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in lifted {
             if let Some(p) = self.pushers.remove(&id) {
                 world.remove_body(p.body);

@@ -10,12 +10,13 @@
 mod config;
 mod direct;
 mod feedback;
-pub mod hit_test;
+mod hit_test;
 mod hybrid;
 mod joint;
 mod kind;
 mod pad;
 mod particle;
+mod particle_frame;
 mod proxy;
 mod registry;
 mod rest;

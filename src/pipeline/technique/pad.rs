@@ -49,9 +49,10 @@
 //! Design: docs/design/resting-pad.md.
 
 use super::surface_point::least_squares_turn;
+use crate::pipeline::vision::ContactId;
+use crate::pipeline::world::prelude::*;
 use crate::pipeline::world::{TechniqueBody, TechniqueWorld};
 use glam::Vec3;
-use rapier3d::prelude::*;
 use std::collections::BTreeMap;
 
 /// Extra solver iterations for the island of a persistent pad. With none,
@@ -95,7 +96,7 @@ pub struct PadParticle {
 /// The pads in the world, by contact id (in id order: deterministic).
 #[derive(Debug, Default)]
 pub struct Pads {
-    pads: BTreeMap<u32, Pad>,
+    pads: BTreeMap<ContactId, Pad>,
 }
 
 /// One contact's pad.
@@ -119,11 +120,11 @@ impl Pads {
     pub fn place(
         &mut self,
         world: &mut TechniqueWorld<'_>,
-        by_contact: BTreeMap<u32, Vec<PadParticle>>,
+        by_contact: BTreeMap<ContactId, Vec<PadParticle>>,
         ccd: f32,
         pooled: bool,
     ) {
-        let gone: Vec<u32> = self.pads.keys().copied().filter(|id| !by_contact.contains_key(id)).collect();
+        let gone: Vec<ContactId> = self.pads.keys().copied().filter(|id| !by_contact.contains_key(id)).collect();
         for id in gone {
             if let Some(pad) = self.pads.remove(&id) {
                 world.remove_body(pad.body);

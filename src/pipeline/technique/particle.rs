@@ -20,7 +20,7 @@
 //! there: pushes from the far side barely move the steering cylinder. A
 //! line-of-sight capsule meets the rim the user sees and pushes it, all
 //! the way when particles also predict their contacts and a point that
-//! climbed a step within the frame starts below it (see `placements`;
+//! climbed a step within the frame starts below it (see `particle_frame`;
 //! `surfacelab behaviours`, the `side_push_*` cases). Its frame cost
 //! against ball particles is the last line of `cargo bench --bench frame`.
 //!
@@ -30,7 +30,7 @@
 //! (`particle_cull`), a particle never slides along a surface faster than
 //! [`MAX_SURFACE_SPEEDUP`] times the hand moves over the table, a particle
 //! gives way to a surface that comes at it, a particle is never created
-//! inside a movable object (both in `placements`), a hand rests on what it
+//! inside a movable object (both in `particle_frame`), a hand rests on what it
 //! landed on: its sides start up there, the flat of the hand presses it and
 //! its skin sticks to it (`particle_rest`, `particle_stick`, see `rest`),
 //! and the particles it lays on what it rests on move as one pad
@@ -39,17 +39,17 @@
 //! Design: docs/design/particles.md.
 
 use super::pad::{PadParticle, Pads};
-use super::proxy::{gravity_scale_for, pressure_weight, soft_mass};
-use super::rest::{PAD, Resting};
+use super::particle_frame::{Draft, Frame, MAX_SURFACE_SPEEDUP, Placement, Settled, settle};
+use super::proxy::gravity_scale_for;
+use super::rest::{Press, Resting};
 use super::sight_reach::SightReach;
-use super::surface_point::{clamp_len, project_flow, table_point};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
 use crate::pipeline::surface::Sensor;
-use crate::pipeline::vision::{EdgeSample, FlowInterest};
+use crate::pipeline::vision::{ContactId, EdgeSample, FlowInterest};
+use crate::pipeline::world::parry::shape::Ball;
+use crate::pipeline::world::prelude::*;
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError, highest_top};
-use glam::{Vec2, Vec3};
-use rapier3d::parry::shape::{Ball, Capsule};
-use rapier3d::prelude::*;
+use glam::Vec3;
 use std::collections::{BTreeMap, HashMap};
 
 /// Outline spacing (m) that `particle_mass` and `particle_weight` are given
@@ -69,10 +69,6 @@ pub const REFERENCE_SPACING: f32 = 3.0 * 0.001_562_5;
 /// the test's bound (`culled_particles_change_nothing_the_objects_feel`).
 const CULL_SLACK: f32 = 0.005;
 
-/// A particle's speed along the surface it touches, at most this many times
-/// the hand's speed over the table.
-const MAX_SURFACE_SPEEDUP: f32 = 1.2;
-
 /// Length (m) of a line-of-sight capsule (see `particle_capsules`). The
 /// paper's reaches the camera's near plane; this one reaches a quarter
 /// metre up its ray, over twice the highest top a hand touches in the
@@ -81,11 +77,6 @@ const MAX_SURFACE_SPEEDUP: f32 = 1.2;
 /// the eye, the many unculled capsules of `tests/stability.rs` take minutes
 /// a step. Something stacked higher is met from above only.
 const SIGHT_LENGTH: f32 = 0.25;
-
-/// Flow (px) below which an outline point is not checked for a step it
-/// climbed within the frame (see `placements`): half a pixel is under a
-/// millimetre, less than a particle's radius.
-const MIN_SWEEP_PX: f32 = 0.5;
 
 /// Grid cell (px) for matching pooled particles to this frame's samples.
 const CELL: f32 = 4.0;
@@ -119,7 +110,7 @@ pub struct ParticleTechnique {
     contacts: usize,
     /// Contacts whose particles are balls this frame even with
     /// `particle_capsules` (see [`ParticleTechnique::set_ball_contacts`]).
-    ball_contacts: Vec<u32>,
+    ball_contacts: Vec<ContactId>,
     /// What each contact landed on, which holds its line-of-sight
     /// particles' sides up off the table and is pressed by the flat of the
     /// hand (see `rest`).
@@ -127,34 +118,6 @@ pub struct ParticleTechnique {
     /// Each resting contact's particles on what it rests on, as one body
     /// (see `pad`).
     pads: Pads,
-}
-
-/// One particle to place this frame.
-#[derive(Debug, Clone, Copy)]
-struct Placement {
-    px: [f32; 2],
-    /// This frame's flow at `px` (pixels): where the sample was one frame ago.
-    flow_px: [f32; 2],
-    center: Vec3,
-    /// Unit vector from `center` towards the eye, along the camera ray
-    /// (the axis of a line-of-sight capsule, see `particle_capsules`).
-    up: Vec3,
-    /// Whether it is a line-of-sight capsule (else a ball): with
-    /// `particle_capsules`, on everything but a soft body, which capsules
-    /// do not meet at all ([`Layer::Sight`]): one landing on a soft body is
-    /// a ball and presses it.
-    sight: bool,
-    velocity: Vec3,
-    /// Press (N).
-    weight: f32,
-    /// Inertia (kg).
-    mass: f32,
-    /// The part of `velocity` that gives way to a surface coming at it
-    /// (see `coming` in `placements`).
-    give_way: Vec3,
-    /// The contact whose pad it belongs to: it lands on the object that
-    /// contact rests on (see `pad`).
-    pad: Option<u32>,
 }
 
 impl ParticleTechnique {
@@ -175,7 +138,7 @@ impl ParticleTechnique {
     /// Makes the particles of these contacts balls, not line-of-sight
     /// capsules, from the next `apply` on: Hybrid's gripping contacts,
     /// whose contact from the side is their grips (see `HybridTechnique`).
-    pub(super) fn set_ball_contacts(&mut self, ids: impl IntoIterator<Item = u32>) {
+    pub(super) fn set_ball_contacts(&mut self, ids: impl IntoIterator<Item = ContactId>) {
         self.ball_contacts.clear();
         self.ball_contacts.extend(ids);
     }
@@ -214,7 +177,8 @@ impl ParticleTechnique {
     }
 
     /// Where each particle goes this frame, and where the culled ones sit
-    /// (pure given the frame and world).
+    /// (pure given the frame and world): the frame's shared values, then
+    /// each sample through the steps of `particle_frame`, in sample order.
     fn placements(&mut self, input: &TechniqueInput<'_>, world: &World) -> (Vec<Placement>, Vec<Vec3>) {
         // Stride and edge threshold were applied by the vision stage, which
         // the session configures from `particle_stride` and
@@ -226,19 +190,12 @@ impl ParticleTechnique {
             let n = samples.len();
             samples = (0..keep).map(|k| samples[k * n / keep]).collect();
         }
-        let r = self.config.particle_radius;
-        let share = self.config.particle_stride as f32 * input.sensor.metres_per_pixel() / REFERENCE_SPACING;
         let reach = match self.reach.take() {
             Some(r) => Some(r),
             None if self.config.particle_cull => Some(self.sight_reach(world, input.dt)),
             None => None,
         };
-        let mut out = Vec::with_capacity(samples.len());
-        let mut culled = Vec::new();
-        // Nothing movable reaches above `top`: the part of a line-of-sight
-        // capsule above it cannot be inside anything to clear it out of.
         let top = reach.as_ref().map_or_else(|| highest_top(&world.movable_reach()), SightReach::highest_top);
-        let (length, ball) = (Self::sight_length(world), Ball::new(r));
         // What each hand landed on, and the flat of the hand pressing on it
         // (see `rest`).
         if self.config.particle_rest {
@@ -246,192 +203,37 @@ impl ParticleTechnique {
         } else {
             self.resting.clear();
         }
-        let presses: Vec<EdgeSample> = self
-            .resting
-            .presses()
-            .iter()
-            .map(|p| EdgeSample {
-                px: p.px,
-                flow_px: p.flow_px,
-                magnitude: 0.0,
-                grey: p.grey,
-                contact_id: p.contact_id,
-                has_flow: true,
-            })
-            .collect();
-        // A hand presses no harder for resting on something: a contact with
-        // presses spreads the press its outline alone had over outline and
-        // flat alike. Added on top instead, the extra friction tips a small
-        // box dragged from just behind its leading edge
-        // (`a_fingertip_drags_a_box_from_anywhere_on_its_top`) and the
-        // steering cylinder dragged by its top (`cylinder_top_drag`).
-        let mut counts: HashMap<u32, (u32, u32)> = HashMap::new();
+        let presses: Vec<EdgeSample> = self.resting.presses().iter().map(Press::sample).collect();
+        let mut counts: HashMap<ContactId, (u32, u32)> = HashMap::new();
         for e in &samples {
             counts.entry(e.contact_id).or_default().0 += 1;
         }
         for p in &presses {
             counts.entry(p.contact_id).or_default().1 += 1;
         }
-        let spread =
-            |id: u32| counts.get(&id).map_or(1.0, |&(n, m)| if n == 0 { 1.0 } else { n as f32 / (n + m) as f32 });
-        let outline = samples.into_iter().map(|e| (e, false));
-        for (e, interior) in outline.chain(presses.iter().map(|e| (e, true))) {
-            let here = table_point(input.sensor, e.px);
-            let Some(mut hit) = world.cast_contact_ray(here) else { continue };
-            let mut next = table_point(input.sensor, [e.px[0] + e.flow_px[0], e.px[1] + e.flow_px[1]]);
-            let hand_speed = (next - here).length() / input.dt;
-            // A step climbed within the frame: where this outline point was
-            // a frame ago its ray met a lower surface, so the hand crossed a
-            // wall on its way here. Start the particle down there, moving
-            // to where the point is now, so that it meets the wall in the
-            // step as the hand did. Placed where the point is now, it would
-            // sit on the top and only rub it: a fingertip going from rest
-            // to 1.6 m/s in one frame (half a box's width) would leave the
-            // box it flicks almost where it was (`surfacelab behaviours`,
-            // flick_from_rest).
-            let mut start = here;
-            if !interior && e.flow_px[0].hypot(e.flow_px[1]) > MIN_SWEEP_PX {
-                let before = table_point(input.sensor, [e.px[0] - e.flow_px[0], e.px[1] - e.flow_px[1]]);
-                if let Some(low) = world.cast_contact_ray(before)
-                    && low.point.z < hit.point.z - 2.0 * r
-                {
-                    hit = low;
-                    next = here;
-                    start = before;
-                }
+        let frame = Frame {
+            config: &self.config,
+            sensor: input.sensor,
+            world,
+            dt: input.dt,
+            resting: &self.resting,
+            ball_contacts: &self.ball_contacts,
+            reach,
+            top,
+            length: Self::sight_length(world),
+            ball: Ball::new(self.config.particle_radius),
+            share: self.config.particle_stride as f32 * input.sensor.metres_per_pixel() / REFERENCE_SPACING,
+            counts,
+        };
+        let mut out = Vec::with_capacity(samples.len());
+        let mut culled = Vec::new();
+        let outline = samples.into_iter().map(|e| (*e, false));
+        for (e, interior) in outline.chain(presses.iter().map(|e| (*e, true))) {
+            match Draft::cast(&frame, e, interior).map(|d| settle(&frame, d)) {
+                Some(Settled::Placed(p)) => out.push(p),
+                Some(Settled::Culled(center)) => culled.push(center),
+                None => {}
             }
-            // A hand resting on something it landed on holds its sides up
-            // there (see `rest`): a line-of-sight particle whose ray meets
-            // something lower starts a pad's depth below that height, in the
-            // air on its own ray, and moves as the hand does over the table.
-            let rest = self.resting.height(e.contact_id).map(|z| z - PAD);
-            let lifted = self.config.particle_capsules
-                && !interior
-                && hit.soft.is_none()
-                && !self.ball_contacts.contains(&e.contact_id)
-                && rest.is_some_and(|z| hit.point.z < z);
-            let mut v = if lifted {
-                (next - start).extend(0.0) / input.dt
-            } else {
-                let p_next = project_flow(world, &hit, next);
-                // Tangential only: the plane projection already removed the normal part.
-                let v = (p_next - hit.point) / input.dt;
-                v - hit.normal * v.dot(hit.normal)
-            };
-            // Never faster than the hand over the table (plus perspective's
-            // scale-up): on a face the camera sees edge-on, like a ball's
-            // far side, the projection turns a millimetre of flow into a
-            // centimetre of slide down the face, and a particle driven down
-            // into the wedge under a ball would shoot it backwards.
-            v = v.clamp_length_max(hand_speed * MAX_SURFACE_SPEEDUP);
-            let vt = clamp_len(Vec2::new(v.x, v.y), self.config.max_contact_speed);
-            let vz = if v.z.abs() > self.config.max_contact_speed {
-                v.z.signum() * self.config.max_contact_speed
-            } else {
-                v.z
-            };
-            let mut center = hit.point + hit.normal * (r - 0.0001);
-            let up = (world.eye() - center).normalize_or(Vec3::Z);
-            if let Some(z) = rest.filter(|_| lifted) {
-                center += up * ((z + r - center.z) / up.z.max(0.1));
-            }
-            let sight = self.config.particle_capsules
-                && !interior
-                && hit.soft.is_none()
-                && !self.ball_contacts.contains(&e.contact_id);
-            // Along the touched surface's normal, the particle moves at least
-            // as fast as that surface does where it touches it: a surface
-            // coming towards it pushes it back, so it presses by its weight
-            // alone (one going away is not followed: gravity brings the
-            // particle down after it). The tangent-plane velocity assumed a
-            // still surface, so whatever moved into a particle was pressed
-            // with any impulse the solver needed: a ball rolling into a
-            // light fingertip on its far flank would be pressed by many times
-            // the particles' weight and roll back within a step (variants of
-            // `ball_light_touch` in `tests/techniques.rs`).
-            let coming = if lifted {
-                0.0
-            } else {
-                hit.object.map_or(0.0, |id| world.object_point_velocity(id, hit.point).dot(hit.normal))
-            };
-            let give_way = hit.normal * coming.max(0.0);
-            let mut velocity = Vec3::new(vt.x, vt.y, vz) + give_way;
-            // Where the hand's skin sticks to the object under it, the
-            // particles on that object take up the hand's slip over it
-            // within the step (see `rest`): friction, capped by the solver
-            // at the particles' press, pulls the stuck point back under the
-            // hand, as a fingertip's stretched skin does.
-            if self.config.particle_stick
-                && !lifted
-                && let Some(slip) = hit.object.and_then(|o| self.resting.slip(e.contact_id, o))
-            {
-                velocity += (slip / input.dt).extend(0.0);
-            }
-            let pad = hit
-                .object
-                .filter(|&o| {
-                    self.config.particle_pad && !lifted && hit.soft.is_none() && self.resting.rests_on(e.contact_id, o)
-                })
-                .map(|_| e.contact_id);
-            // No flow measured: the vision stage found it out of reach of
-            // everything movable (see `flow_interest`).
-            let travel = velocity.length() * input.dt;
-            let out_of_reach = !e.has_flow
-                || reach.as_ref().is_some_and(|r| {
-                    if sight { !r.may_touch(start, travel) } else { !r.ball_may_touch(center, travel) }
-                });
-            if self.config.particle_cull && hit.soft.is_none() && out_of_reach {
-                culled.push(center);
-                continue;
-            }
-            // Never created inside something movable, which the solver would
-            // shove it out of, and the object with it: a fingertip's outline
-            // crossing a box's edge lands on the table against the box's
-            // side, so a fingertip dragging a 100 g box from 1 cm behind its
-            // leading edge would brake it with the particles beside that edge
-            // and carry it a fraction of the way
-            // (`a_fingertip_drags_a_box_from_anywhere_on_its_top`). What it is placed on it
-            // stays 0.1 mm into on purpose (see below), even on a slope; a
-            // capsule is tested only up to the highest movable top.
-            if hit.soft.is_none() {
-                let rise = ((top - center.z).max(0.0) / up.z.max(0.1)).min(length);
-                let shift = if sight && rise > 0.0 {
-                    let turn = glam::Quat::from_rotation_arc(Vec3::Z, up);
-                    let capsule = Capsule::new_z(0.5 * rise, r);
-                    world.clearance(
-                        &capsule,
-                        Pose::from_parts(center + turn * Vec3::new(0.0, 0.0, 0.5 * rise), turn),
-                        hit.object,
-                    )
-                } else {
-                    world.clearance(&ball, Pose::from_translation(center), hit.object)
-                };
-                center += shift;
-            }
-            let weight = pressure_weight(&self.config, self.config.particle_weight, f32::from(e.grey))
-                * share
-                * spread(e.contact_id);
-            out.push(Placement {
-                px: e.px,
-                flow_px: e.flow_px,
-                // Just touching (0.1 mm in). rapier's soft contact (30 Hz) does
-                // not give a new contact its full press in one step: particles
-                // resting on a box get well under half the normal impulse
-                // their weight calls for in their first step; pooled ones,
-                // re-placed like this, all of it within a few steps
-                // (warm-started). Created afresh every step (the paper's
-                // variant) they overshoot as the box under them sinks into
-                // its own soft contact (tests/particle_press.rs).
-                center,
-                up,
-                sight,
-                velocity,
-                weight,
-                // On a soft body a particle weighs what it presses (see `soft_mass`).
-                mass: if hit.soft.is_some() { soft_mass(weight) } else { self.config.particle_mass * share },
-                give_way,
-                pad,
-            });
         }
         (out, culled)
     }
@@ -598,7 +400,7 @@ impl Technique for ParticleTechnique {
         self.sensed_only = culled;
         // A resting contact's particles on what it rests on move as one pad
         // (see `pad`), by contact in id order (deterministic).
-        let mut pads: BTreeMap<u32, Vec<PadParticle>> = BTreeMap::new();
+        let mut pads: BTreeMap<ContactId, Vec<PadParticle>> = BTreeMap::new();
         let mut placements = Vec::with_capacity(all.len());
         for p in all {
             match p.pad {

@@ -12,10 +12,10 @@
 use super::hit_test;
 use super::surface_point::{at_height, clamp_len, support_below, table_point, table_velocity};
 use super::{Feedback, HitTest, PressureMode, ProxyShape, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
-use crate::pipeline::vision::Contact;
+use crate::pipeline::vision::{Contact, ContactId};
+use crate::pipeline::world::prelude::*;
 use crate::pipeline::world::{Layer, TechniqueBody, TechniqueWorld, World, WorldError};
 use glam::{Vec2, Vec3};
-use rapier3d::prelude::*;
 use std::collections::BTreeMap;
 
 #[derive(Debug, Clone, Copy)]
@@ -35,7 +35,7 @@ struct Proxy {
 pub struct ProxyTechnique {
     config: TechniqueConfig,
     /// By contact id; a `BTreeMap` keeps creation order deterministic.
-    proxies: BTreeMap<u32, Proxy>,
+    proxies: BTreeMap<ContactId, Proxy>,
     contacts: usize,
 }
 
@@ -202,7 +202,7 @@ impl Technique for ProxyTechnique {
             }
         }
         // Contacts that lifted: their proxies go.
-        let gone: Vec<u32> = self.proxies.keys().copied().filter(|id| !seen.contains(id)).collect();
+        let gone: Vec<ContactId> = self.proxies.keys().copied().filter(|id| !seen.contains(id)).collect();
         for id in gone {
             if let Some(p) = self.proxies.remove(&id) {
                 world.remove_body(p.body);

@@ -61,8 +61,8 @@
 //! Design: docs/design/resting-pad.md.
 
 use super::surface_point::least_squares_turn;
-use crate::pipeline::surface::Sensor;
-use crate::pipeline::vision::{Contact, VisionFrame};
+use crate::pipeline::surface::{PixelPoint, Sensor};
+use crate::pipeline::vision::{Contact, ContactId, EdgeSample, VisionFrame};
 use crate::pipeline::world::{RayHit, World};
 use crate::scene::ObjectId;
 use std::collections::HashMap;
@@ -105,7 +105,7 @@ const GRID: f32 = 0.01;
 /// the hand rests at.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Press {
-    pub contact_id: u32,
+    pub contact_id: ContactId,
     /// Pixel position `[column, row]`.
     pub px: [f32; 2],
     /// The hand's motion there over the last frame (pixels), as an outline
@@ -114,6 +114,21 @@ pub struct Press {
     pub flow_px: [f32; 2],
     /// The contact's mean grey level (its pressure).
     pub grey: u8,
+}
+
+impl Press {
+    /// The press as a sample of its contact, measured flow and all, so
+    /// that it becomes a particle by the same steps as an outline point.
+    pub fn sample(&self) -> EdgeSample {
+        EdgeSample {
+            px: self.px,
+            flow_px: self.flow_px,
+            magnitude: 0.0,
+            grey: self.grey,
+            contact_id: self.contact_id,
+            has_flow: true,
+        }
+    }
 }
 
 /// The object point a resting contact's centre sticks to, and where it and
@@ -143,13 +158,13 @@ impl RigidFlow {
     /// flow, which the vision stage measures to a few hundredths of a pixel
     /// (its tracked turn is smoothed over frames, and lags a hand that
     /// starts or stops turning); `None` with fewer than three samples.
-    fn fit(frame: &VisionFrame, id: u32) -> Option<RigidFlow> {
+    fn fit(frame: &VisionFrame, id: ContactId) -> Option<RigidFlow> {
         let samples: Vec<_> = frame.edges.iter().filter(|e| e.contact_id == id && e.has_flow).collect();
         if samples.len() < 3 {
             return None;
         }
         let n = samples.len() as f32;
-        let mean = |f: &dyn Fn(&&crate::pipeline::vision::EdgeSample) -> f32| samples.iter().map(f).sum::<f32>() / n;
+        let mean = |f: &dyn Fn(&&EdgeSample) -> f32| samples.iter().map(f).sum::<f32>() / n;
         let centre = [mean(&|e| e.px[0]), mean(&|e| e.px[1])];
         let velocity = [mean(&|e| e.flow_px[0]), mean(&|e| e.flow_px[1])];
         let turn = least_squares_turn(samples.iter().map(|e| {
@@ -170,14 +185,14 @@ impl RigidFlow {
 /// this frame.
 #[derive(Debug, Clone, Default)]
 pub struct Resting {
-    on: HashMap<u32, Vec<ObjectId>>,
-    height: HashMap<u32, f32>,
+    on: HashMap<ContactId, Vec<ObjectId>>,
+    height: HashMap<ContactId, f32>,
     presses: Vec<Press>,
     /// Per resting contact, the object point its centre sticks to.
-    anchors: HashMap<u32, Anchor>,
+    anchors: HashMap<ContactId, Anchor>,
     /// Per resting contact, this frame's slip (m, across the table): where
     /// the hand has carried the stuck point less where the point went.
-    slips: HashMap<u32, (ObjectId, glam::Vec2)>,
+    slips: HashMap<ContactId, (ObjectId, glam::Vec2)>,
 }
 
 impl Resting {
@@ -241,7 +256,7 @@ impl Resting {
 
     /// Follows the object point under contact `c`'s centre (see `slip`).
     fn stick(&mut self, c: &Contact, sensor: &Sensor, world: &World) {
-        let centre = glam::Vec2::from(sensor.to_table(c.blob.weighted_centroid));
+        let centre = glam::Vec2::from(sensor.to_table(PixelPoint::from(c.blob.weighted_centroid)));
         let Some((id, point)) = world.cast_contact_ray(centre).and_then(|h| h.object.map(|id| (id, h.point))) else {
             self.anchors.remove(&c.id);
             return;
@@ -276,18 +291,18 @@ impl Resting {
     /// How far (m, across the table) contact `id` has slipped over the
     /// object `on` it sticks to since it last stuck: its particles on that
     /// object take it up as extra speed.
-    pub fn slip(&self, id: u32, on: ObjectId) -> Option<glam::Vec2> {
+    pub fn slip(&self, id: ContactId, on: ObjectId) -> Option<glam::Vec2> {
         self.slips.get(&id).filter(|(o, _)| *o == on).map(|(_, s)| *s)
     }
 
     /// Whether contact `id` rests on object `on` this frame.
-    pub fn rests_on(&self, id: u32, on: ObjectId) -> bool {
+    pub fn rests_on(&self, id: ContactId, on: ObjectId) -> bool {
         self.height.contains_key(&id) && self.on.get(&id).is_some_and(|o| o.contains(&on))
     }
 
     /// The height (m) contact `id` rests at this frame, if it rests on an
     /// object it landed on.
-    pub fn height(&self, id: u32) -> Option<f32> {
+    pub fn height(&self, id: ContactId) -> Option<f32> {
         self.height.get(&id).copied()
     }
 
@@ -315,7 +330,7 @@ fn grid_hits(c: &Contact, sensor: &Sensor, world: &World) -> Vec<([f32; 2], RayH
         let mut x = run.x0.div_ceil(step) * step;
         while x < run.x1 {
             let px = [x as f32, run.y as f32];
-            if let Some(hit) = world.cast_contact_ray(glam::Vec2::from(sensor.to_table(px))) {
+            if let Some(hit) = world.cast_contact_ray(glam::Vec2::from(sensor.to_table(PixelPoint::from(px)))) {
                 out.push((px, hit));
             }
             x += step;
@@ -335,7 +350,7 @@ mod tests {
     use super::*;
     use crate::pipeline::vision::EdgeSample;
 
-    fn sample(contact_id: u32, px: [f32; 2], flow_px: [f32; 2], has_flow: bool) -> EdgeSample {
+    fn sample(contact_id: ContactId, px: [f32; 2], flow_px: [f32; 2], has_flow: bool) -> EdgeSample {
         EdgeSample { px, flow_px, magnitude: 40.0, grey: 200, contact_id, has_flow }
     }
 
@@ -348,15 +363,15 @@ mod tests {
             .map(|k| {
                 let a = k as f32 * std::f32::consts::TAU / 24.0;
                 let (dx, dy) = (20.0 * a.cos(), 20.0 * a.sin());
-                sample(7, [centre[0] + dx, centre[1] + dy], [v[0] - turn * dy, v[1] + turn * dx], true)
+                sample(ContactId::new(7), [centre[0] + dx, centre[1] + dy], [v[0] - turn * dy, v[1] + turn * dx], true)
             })
             .collect();
         // Another contact's outline and unmeasured points do not count.
-        edges.push(sample(8, [100.0, 80.0], [30.0, 30.0], true));
-        edges.push(sample(7, [100.0, 60.0], [-9.0, 9.0], false));
+        edges.push(sample(ContactId::new(8), [100.0, 80.0], [30.0, 30.0], true));
+        edges.push(sample(ContactId::new(7), [100.0, 60.0], [-9.0, 9.0], false));
         let frame =
             VisionFrame { contacts: Vec::new(), edges, timings: crate::pipeline::vision::StageTimings::default() };
-        let fit = RigidFlow::fit(&frame, 7).expect("enough samples");
+        let fit = RigidFlow::fit(&frame, ContactId::new(7)).expect("enough samples");
         assert!((fit.turn - turn).abs() < 1e-5, "{fit:?}");
         // Anywhere, inside the outline too, the flow is the move's.
         for p in [[100.0, 80.0], [110.0, 75.0], [85.0, 95.0]] {
@@ -365,6 +380,6 @@ mod tests {
             let got = fit.at(p);
             assert!((got[0] - want[0]).abs() < 1e-4 && (got[1] - want[1]).abs() < 1e-4, "{p:?}: {got:?} vs {want:?}");
         }
-        assert_eq!(RigidFlow::fit(&frame, 9), None, "no samples");
+        assert_eq!(RigidFlow::fit(&frame, ContactId::new(9)), None, "no samples");
     }
 }

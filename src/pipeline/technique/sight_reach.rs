@@ -15,7 +15,7 @@
 //! its box does, and the projection is exact where a pixel box of eight
 //! projected corners would be a box around a box.
 
-use crate::pipeline::surface::Sensor;
+use crate::pipeline::surface::{Sensor, TablePoint};
 use crate::pipeline::vision::{ConvexRegion, FlowInterest};
 use crate::pipeline::world::{Reach, World, highest_top};
 use glam::{Vec2, Vec3};
@@ -120,7 +120,7 @@ impl SightReach {
             .outlines
             .iter()
             .filter_map(|o| {
-                let px: Vec<Vec2> = o.iter().map(|p| Vec2::from(sensor.to_pixel(p.to_array()))).collect();
+                let px: Vec<Vec2> = o.iter().map(|p| sensor.to_pixel(TablePoint(*p)).0).collect();
                 ConvexRegion::hull_of(&px)
             })
             .collect();
@@ -131,9 +131,9 @@ impl SightReach {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::pipeline::world::parry::query;
+    use crate::pipeline::world::prelude::{Pose, Segment};
     use crate::scene;
-    use rapier3d::parry::query;
-    use rapier3d::prelude::{Pose, Segment};
 
     /// A 6 cm box turned 45° at (-0.25, 0.1) and a 6 cm ball at (0.2, -0.1),
     /// at rest on a table under the default camera.
@@ -254,7 +254,7 @@ position = [0.2, -0.1]
                 // times that, and is kept only where it may touch a body.
                 let flow_px = 4.0;
                 if reach.may_touch(g, SPEEDUP * flow_px * sx) {
-                    let px = sensor.to_pixel(g.to_array());
+                    let px = sensor.to_pixel(TablePoint(g)).to_array();
                     assert!(interest.wants(px, [flow_px, 0.0], 0.0), "{g} kept but its flow was not asked for");
                 }
             }

@@ -1,12 +1,12 @@
 //! From contact-image pixels to points on touched surfaces (paper, Figure 6).
 
-use crate::pipeline::surface::Sensor;
+use crate::pipeline::surface::{PixelPoint, Sensor};
 use crate::pipeline::world::{RayHit, World};
 use glam::{Vec2, Vec3};
 
 /// Table-plane point (m) of a contact-image pixel position.
 pub fn table_point(sensor: &Sensor, px: [f32; 2]) -> Vec2 {
-    Vec2::from(sensor.to_table(px))
+    Vec2::from(sensor.to_table(PixelPoint::from(px)))
 }
 
 /// A table-plane velocity (m/s) from a per-frame pixel displacement.

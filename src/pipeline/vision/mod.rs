@@ -1,6 +1,7 @@
 //! Contact-image analysis: threshold, connected components, Sobel outlines, block-matching flow and contact tracking.
 
 mod components;
+mod contact_id;
 mod contour;
 mod flow;
 mod grid;
@@ -12,6 +13,7 @@ mod threshold;
 mod tracking;
 
 pub use components::{BBox, Blob, Ellipse, Run, find_blobs, find_blobs_in_rows};
+pub use contact_id::ContactId;
 pub use contour::trace_contour;
 pub use flow::{BlockMatcher, MAX_BLOCK};
 pub use hull::{convex_hull, signed_area};

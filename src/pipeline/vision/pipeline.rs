@@ -15,6 +15,7 @@ use std::time::Instant;
 use crate::pipeline::surface::ContactImage;
 
 use super::components::{Blob, find_blobs_in_rows};
+use super::contact_id::ContactId;
 use super::flow::BlockMatcher;
 use super::interest::FlowInterest;
 use super::sobel::find_edges;
@@ -74,7 +75,7 @@ impl Default for VisionParams {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Contact {
     /// Stable across frames (see `tracking` for the rules).
-    pub id: u32,
+    pub id: ContactId,
     pub blob: Blob,
     /// Weighted-centroid motion, pixels per frame.
     pub velocity_px: [f32; 2],
@@ -99,7 +100,7 @@ pub struct EdgeSample {
     pub magnitude: f32,
     /// Grey level at the point.
     pub grey: u8,
-    pub contact_id: u32,
+    pub contact_id: ContactId,
     /// Whether `flow_px` was measured: false where the frame's
     /// [`FlowInterest`] asked for none (it is then zero).
     pub has_flow: bool,

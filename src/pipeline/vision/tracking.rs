@@ -38,6 +38,7 @@
 use std::collections::{HashSet, VecDeque};
 
 use super::components::{BBox, Blob, Run};
+use super::contact_id::ContactId;
 use super::grid::BoxGrid;
 
 /// [`BlobTracker`] settings.
@@ -190,7 +191,7 @@ impl Path {
 /// What tracking says about one blob of the current frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tracked {
-    pub id: u32,
+    pub id: ContactId,
     /// Weighted-centroid motion, pixels per frame.
     pub velocity: [f32; 2],
     /// Turn of the principal axis since the previous frame, radians per
@@ -220,7 +221,7 @@ pub struct Tracked {
 /// An identity carried by a (merged) contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Identity {
-    id: u32,
+    id: ContactId,
     birth: u64,
     /// Its last own centroid relative to the carrying contact's centroid.
     offset: [f32; 2],
@@ -229,7 +230,7 @@ struct Identity {
 /// A contact of the previous frame.
 #[derive(Debug, Clone, PartialEq)]
 struct Live {
-    id: u32,
+    id: ContactId,
     birth: u64,
     centroid: [f32; 2],
     velocity: [f32; 2],
@@ -261,7 +262,7 @@ impl Live {
 /// The result for one new blob while the frame is being resolved.
 #[derive(Debug, Clone)]
 struct Assignment {
-    id: u32,
+    id: ContactId,
     birth: u64,
     velocity: [f32; 2],
     /// Its smoothed axis so far, when the contact continued without a
@@ -355,10 +356,10 @@ impl BlobTracker {
         self.live.clear();
     }
 
-    fn new_id(&mut self) -> u32 {
+    fn new_id(&mut self) -> ContactId {
         let id = self.next_id.max(1);
         self.next_id = id.wrapping_add(1);
-        id
+        ContactId::new(id)
     }
 
     /// Assigns ids to this frame's blobs, in their order.
@@ -381,7 +382,7 @@ impl BlobTracker {
         let (frame, gate) = (self.frame, self.params.max_jump_px);
         let centroid = |j: usize| blobs[j].weighted_centroid;
         // Ids in use, built only if a merge and a split meet in one frame.
-        let mut taken: Option<HashSet<u32>> = None;
+        let mut taken: Option<HashSet<ContactId>> = None;
         for (i, p) in prev.iter().enumerate() {
             if m.split_parts[i].is_empty() {
                 continue;

@@ -23,6 +23,11 @@ mod technique_world;
 #[allow(clippy::module_inception)]
 mod world;
 
+/// The physics engine's vocabulary that techniques build their bodies
+/// with (rigid bodies, colliders, shapes, poses), re-exported so that the
+/// engine is named in this module alone.
+pub use rapier3d::{parry, prelude};
+
 pub use crate::scene::{ObjectId, SoftId};
 pub use config::WorldConfig;
 pub use error::WorldError;

@@ -8,7 +8,7 @@
 //! 1400 particles, most of them on empty table).
 
 use super::world::World;
-use crate::scene::Shape;
+use crate::scene::{Ring, Shape, solid_outline};
 use glam::{Quat, Vec3};
 
 /// Points on a ring that circumscribes a circle: their polygon contains
@@ -69,24 +69,12 @@ impl Bound {
     pub fn corners(&self, grow: f32) -> Vec<Vec3> {
         match *self {
             Bound::Box { center, rotation, half } => {
-                let h = half + Vec3::splat(grow);
-                (0..8)
-                    .map(|k| {
-                        let s = |bit: usize| if k & bit == 0 { -1.0 } else { 1.0 };
-                        center + rotation * Vec3::new(s(1) * h.x, s(2) * h.y, s(4) * h.z)
-                    })
-                    .collect()
+                let box_ = Shape::Box { half_extents: half + Vec3::splat(grow) };
+                solid_outline(box_, center, rotation, Ring::on(RING))
             }
             Bound::Cylinder { center, rotation, radius, half_height } => {
-                let r = (radius + grow) / (std::f32::consts::PI / RING as f32).cos();
-                let z = half_height + grow;
-                (0..2 * RING)
-                    .map(|k| {
-                        let a = (k % RING) as f32 * std::f32::consts::TAU / RING as f32;
-                        let zk = if k < RING { -z } else { z };
-                        center + rotation * Vec3::new(r * a.cos(), r * a.sin(), zk)
-                    })
-                    .collect()
+                let cylinder = Shape::Cylinder { radius: radius + grow, half_height: half_height + grow };
+                solid_outline(cylinder, center, rotation, Ring::around(RING))
             }
         }
     }

@@ -15,8 +15,8 @@
 //! clipping is needed.
 
 use crate::pipeline::world::ObjectPose;
-use crate::scene::Shape;
-use glam::{Vec2, Vec3};
+use crate::scene::{self, Ring, Shape};
+use glam::Vec2;
 
 /// Points per round outline. They sit `1 / cos(π / RING)` out so that
 /// their polygon contains the circle (0.5% of its radius).
@@ -47,48 +47,15 @@ impl Area {
 }
 
 /// Points on the table whose convex hull contains what the object covers
-/// seen from straight above: a box's corners, a round shape's circles.
+/// seen from straight above (see [`scene::footprint`]).
 pub fn footprint(shape: Shape, pose: &ObjectPose) -> Vec<Vec2> {
-    let at = pose.position;
-    let out = 1.0 / (std::f32::consts::PI / RING as f32).cos();
-    let angles = (0..RING).map(|k| k as f32 * std::f32::consts::TAU / RING as f32);
-    match shape {
-        Shape::Box { half_extents: h } => (0..8)
-            .map(|k| {
-                let s = |bit: usize| if k & bit == 0 { -1.0 } else { 1.0 };
-                (at + pose.rotation * Vec3::new(s(1) * h.x, s(2) * h.y, s(4) * h.z)).truncate()
-            })
-            .collect(),
-        // From above a ball covers a disc, however it has turned.
-        Shape::Sphere { radius } => angles.map(|a| at.truncate() + radius * out * Vec2::from_angle(a)).collect(),
-        // A cylinder: its two end circles, turned with it and seen from
-        // above; their hull is its shadow.
-        Shape::Cylinder { radius, half_height } => {
-            let axis = pose.rotation * Vec3::Z * half_height;
-            angles
-                .flat_map(|a| {
-                    let rim = pose.rotation * (radius * out * Vec2::from_angle(a)).extend(0.0);
-                    [(at - axis + rim).truncate(), (at + axis + rim).truncate()]
-                })
-                .collect()
-        }
-        // A capsule: the discs its two round ends cover, however it leans.
-        Shape::Capsule { radius, half_height } => {
-            let axis = pose.rotation * Vec3::Z * half_height;
-            angles
-                .flat_map(|a| {
-                    let rim = radius * out * Vec2::from_angle(a);
-                    [(at - axis).truncate() + rim, (at + axis).truncate() + rim]
-                })
-                .collect()
-        }
-    }
+    scene::footprint(shape, pose.position, pose.rotation, Ring::around(RING))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::Quat;
+    use glam::{Quat, Vec3};
 
     fn pose(x: f32, y: f32, turn_deg: f32) -> ObjectPose {
         ObjectPose {

@@ -7,5 +7,4 @@
 mod containment;
 mod tracker;
 
-pub use containment::{Area, footprint};
 pub use tracker::{GoalTracker, Progress};
