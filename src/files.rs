@@ -8,6 +8,8 @@
 //! node itself. Like `error`, this depends on nothing in the crate; every
 //! layer may use it.
 
+pub(crate) mod fixed_arrays;
+
 use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 

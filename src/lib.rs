@@ -42,7 +42,6 @@ pub mod cli;
 pub mod contact;
 pub mod error;
 pub mod files;
-pub(crate) mod fixed_arrays;
 pub mod harness;
 pub mod input;
 pub mod pipeline;

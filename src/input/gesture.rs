@@ -482,15 +482,15 @@ struct RawHand {
 #[serde(deny_unknown_fields)]
 struct RawKey {
     t: Spanned<f64>,
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     pos: Option<Spanned<[f64; 2]>>,
     angle_deg: Option<Spanned<f64>>,
     spread: Option<Spanned<f64>>,
     scale: Option<Spanned<f64>>,
     pressure: Option<Spanned<f64>>,
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     points: Option<Spanned<Vec<[f64; 2]>>>,
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     holes: Option<Spanned<Vec<Vec<[f64; 2]>>>>,
 }
 

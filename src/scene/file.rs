@@ -38,7 +38,7 @@ pub struct SceneFile {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TableFile {
-    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub size: [f32; 2],
     #[serde(default)]
     pub friction: Option<f32>,
@@ -101,7 +101,7 @@ pub struct ObjectFile {
     pub name: String,
     pub shape: ShapeKind,
     /// Box: full extents [x, y, z].
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub size: Option<[f32; 3]>,
     /// Sphere, cylinder, capsule.
     #[serde(default)]
@@ -119,7 +119,7 @@ pub struct ObjectFile {
     /// [x, y] (resting on the table) or [x, y, z] (centre).
     pub position: Vec<f32>,
     /// Euler angles XYZ in degrees.
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub rotation_deg: Option<[f32; 3]>,
     #[serde(default)]
     pub body: Option<BodyKindFile>,
@@ -132,12 +132,12 @@ pub struct ObjectFile {
     /// many small objects): object i sits at position + i·step.
     #[serde(default)]
     pub count: Option<u32>,
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub step: Option<[f32; 2]>,
     /// Wrap the row every `per_row` objects, moving by `row_step`.
     #[serde(default)]
     pub per_row: Option<u32>,
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub row_step: Option<[f32; 2]>,
 }
 
@@ -188,7 +188,7 @@ pub struct SoftBodyFile {
 #[serde(deny_unknown_fields)]
 pub struct TargetFile {
     pub object: String,
-    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub position: [f32; 2],
     #[serde(default)]
     pub tolerance: Option<f32>,
@@ -198,9 +198,9 @@ pub struct TargetFile {
 #[serde(deny_unknown_fields)]
 pub struct ZoneFile {
     pub color: String,
-    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub min: [f32; 2],
-    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub max: [f32; 2],
 }
 
@@ -265,24 +265,24 @@ pub struct GoalFile {
     pub object: Option<String>,
     #[serde(default)]
     pub platform: Option<String>,
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub waypoints: Vec<[f32; 2]>,
     #[serde(default)]
     pub waypoint_radius: Option<f32>,
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub finish: Option<[f32; 2]>,
     #[serde(default)]
     pub finish_radius: Option<f32>,
     // gather / region
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub center: Option<[f32; 2]>,
     #[serde(default)]
     pub radius: Option<f32>,
     #[serde(default)]
     pub fraction: Option<f32>,
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub min: Option<[f32; 2]>,
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     pub max: Option<[f32; 2]>,
     /// region: the object's centre at most this high (m), so resting on top
     /// of the cavity does not count as inside it.

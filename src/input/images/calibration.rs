@@ -210,16 +210,16 @@ struct RawCalibration {
     format: Option<Spanned<toml::Value>>,
     version: Option<Spanned<toml::Value>>,
     kind: Spanned<String>,
-    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(deserialize_with = "crate::files::fixed_arrays::exactly")]
     image_size: Spanned<[i64; 2]>,
-    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(deserialize_with = "crate::files::fixed_arrays::exactly")]
     image_points: Spanned<Vec<[f64; 2]>>,
-    #[serde(deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(deserialize_with = "crate::files::fixed_arrays::exactly")]
     table_points: Spanned<Vec<[f64; 2]>>,
     background: Option<Spanned<String>>,
     threshold: Option<Spanned<i64>>,
     table_depth_mm: Option<Spanned<f64>>,
-    #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+    #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
     touch_band_mm: Option<Spanned<[f64; 2]>>,
 }
 

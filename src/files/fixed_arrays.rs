@@ -3,11 +3,11 @@
 //! and drops the rest without a word, so `size = [1.0, 0.75, 0.3]` would
 //! pass as a two-number size. A field read with [`exactly`] is refused
 //! instead: "expected an array of 2 values, found 3", with the file, line
-//! and field the reader adds. Like `files`, this depends on nothing in the
-//! crate; every layer's file format may use it.
+//! and field the reader adds. Part of `files`, it depends on nothing in
+//! the crate; every layer's file format may use it.
 //!
 //! ```ignore
-//! #[serde(default, deserialize_with = "crate::fixed_arrays::exactly")]
+//! #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
 //! pub step: Option<[f32; 2]>,
 //! ```
 
