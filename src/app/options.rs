@@ -26,7 +26,7 @@ pub struct DemoOptions {
     /// A gesture replayed as live input from session time 0.
     pub script: Option<Gesture>,
     /// Camera frames seen in place of hands: recorded (from session time
-    /// 0) or live. The window hands it to its [`Lab`](super::lab::Lab).
+    /// 0) or live. The window hands it to its lab (the session and its panel state).
     pub camera: Option<crate::input::CameraInput>,
     /// Save what the window shows once this many seconds have passed.
     pub screenshot_after: Option<Screenshot>,

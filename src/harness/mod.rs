@@ -5,7 +5,7 @@
 //! - [`behaviour`]: the paper's manipulations as cases, measured per technique.
 //! - [`fitts`]: a Fitts' law check of the simulated participants against published drag data.
 //! - [`tradeoff`]: what contact accuracy costs in time.
-//! - [`plot_font`]: the one font the figures use.
+//! - `plot_font`: the one font the figures use.
 
 pub mod behaviour;
 pub mod fitts;

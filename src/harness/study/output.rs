@@ -164,12 +164,12 @@ fn header_line() -> String {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct RunFile {
-    /// [`RUN_FORMAT`].
+    /// `RUN_FORMAT` (`surfacelab-study/2`).
     pub format: String,
     /// The version that created the folder (rows carry their own).
     pub version: String,
     pub design: StudyDesign,
-    /// [`design_hash`] of `design` when the folder was made: resume
+    /// `design_hash` of `design` when the folder was made: resume
     /// refuses a run.toml whose design was edited since (rows of two
     /// designs would share one file). Absent in folders made before it
     /// existed; those resume with a note.
