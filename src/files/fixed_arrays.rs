@@ -6,7 +6,7 @@
 //! and field the reader adds. Part of `files`, it depends on nothing in
 //! the crate; every layer's file format may use it.
 //!
-//! ```ignore
+//! ```text
 //! #[serde(default, deserialize_with = "crate::files::fixed_arrays::exactly")]
 //! pub step: Option<[f32; 2]>,
 //! ```
