@@ -283,3 +283,21 @@ fn a_larger_study_keeps_its_memory_small() {
     assert!(peak_kb > 0, "no memory sample was read");
     assert!(peak_kb < 100 * 1024, "peak resident memory {} MB", peak_kb / 1024);
 }
+
+/// With standard error not a terminal (a log, a pipe, a batch job) and
+/// progress wanted, a study that runs past ten seconds says how far it has
+/// come in plain lines instead of a bar (18 participants take about 30 s
+/// on two cores; a line comes every 10 s).
+#[test]
+fn a_long_study_into_a_log_prints_plain_progress_lines() {
+    let scratch_out = tmp("plain-progress");
+    let o = bin()
+        .args(["study", "--participants", "18", "--time-limit", "10", "--out"])
+        .arg(scratch_out.path().join("run"))
+        .output()
+        .expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let err = String::from_utf8_lossy(&o.stderr);
+    let line = err.lines().find(|l| l.contains(" of 972 trials (")).unwrap_or_else(|| panic!("no progress line: {err}"));
+    assert!(line.starts_with("surfacelab study: ") && line.ends_with(" s left"), "{line}");
+}

@@ -287,6 +287,7 @@ fn execute(
 
     let mut writer = TrialsWriter::open(&csv_path, options.fsync)?;
     let progress = progress_bar(options.progress, todo.len() as u64, already_done);
+    let mut plain = (options.progress && !std::io::stderr().is_terminal()).then(|| PlainProgress::new(todo.len()));
     let mut failed = 0usize;
     let mut written = 0usize;
     if !todo.is_empty() {
@@ -323,6 +324,9 @@ fn execute(
                         written += 1;
                         progress.set_message(format!("P{} {} {}", row.participant, row.task, row.technique));
                         progress.inc(1);
+                        if let Some(plain) = &mut plain {
+                            plain.tick(written);
+                        }
                     }
                 }
                 Ok(())
@@ -493,6 +497,38 @@ fn run_one(session: &mut dyn ParticipantRun, spec: &TrialSpec) -> (TrialRow, Opt
                 .unwrap_or_else(|| "unknown panic".to_owned());
             (TrialRow::failed(spec), Some(format!("panicked: {message}")))
         }
+    }
+}
+
+/// How often a study whose standard error is not a terminal says how far
+/// it has come.
+const PLAIN_EVERY: std::time::Duration = std::time::Duration::from_secs(10);
+
+/// Progress where no bar can be drawn (a log file, a pipe, a batch job's
+/// output): a plain line every [`PLAIN_EVERY`], so that a long study is
+/// never silent for long.
+struct PlainProgress {
+    start: std::time::Instant,
+    next: std::time::Instant,
+    todo: usize,
+}
+
+impl PlainProgress {
+    fn new(todo: usize) -> PlainProgress {
+        let start = std::time::Instant::now();
+        PlainProgress { start, next: start + PLAIN_EVERY, todo }
+    }
+
+    /// `done` of the trials to do have their rows.
+    fn tick(&mut self, done: usize) {
+        let now = std::time::Instant::now();
+        if now < self.next || done >= self.todo {
+            return;
+        }
+        let share = done as f64 / self.todo as f64;
+        let left = self.start.elapsed().as_secs_f64() * (1.0 - share) / share.max(1e-9);
+        eprintln!("surfacelab study: {done} of {} trials ({:.0}%), about {left:.0} s left", self.todo, 100.0 * share);
+        self.next = now + PLAIN_EVERY;
     }
 }
 
