@@ -6,6 +6,8 @@
 //! Needs `xvfb-run` and `xwd` (packages xvfb and x11-apps; `bash .ci/setup`
 //! installs them). Without them the tests fail and say so: they never skip.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
@@ -385,10 +387,7 @@ fn sweeping_blobs(f: i32, t: f64) -> Vec<u8> {
 
 /// `VmRSS` of process `pid` in MiB, `None` once it has gone.
 fn resident_mib(pid: u32) -> Option<f64> {
-    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).ok()?;
-    let kib: f64 =
-        status.lines().find_map(|l| l.strip_prefix("VmRSS:"))?.trim().trim_end_matches("kB").trim().parse().ok()?;
-    Some(kib / 1024.0)
+    common::proc_status_kb(pid, "VmRSS").map(|kb| kb as f64 / 1024.0)
 }
 
 /// The demo over time: sorting under Particle with feedback, two TUIO blobs

@@ -268,12 +268,7 @@ fn a_larger_study_keeps_its_memory_small() {
     // VmHWM, the process's peak resident memory (kB), read until it exits.
     let mut peak_kb = 0_u64;
     while child.try_wait().expect("wait").is_none() {
-        if let Ok(status) = std::fs::read_to_string(format!("/proc/{}/status", child.id()))
-            && let Some(kb) = status
-                .lines()
-                .find_map(|l| l.strip_prefix("VmHWM:"))
-                .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<u64>().ok())
-        {
+        if let Some(kb) = common::proc_status_kb(child.id(), "VmHWM") {
             peak_kb = peak_kb.max(kb);
         }
         std::thread::sleep(std::time::Duration::from_millis(50));
@@ -298,6 +293,7 @@ fn a_long_study_into_a_log_prints_plain_progress_lines() {
         .expect("runs");
     assert!(o.status.success(), "{}", text(&o));
     let err = String::from_utf8_lossy(&o.stderr);
-    let line = err.lines().find(|l| l.contains(" of 972 trials (")).unwrap_or_else(|| panic!("no progress line: {err}"));
+    let line =
+        err.lines().find(|l| l.contains(" of 972 trials (")).unwrap_or_else(|| panic!("no progress line: {err}"));
     assert!(line.starts_with("surfacelab study: ") && line.ends_with(" s left"), "{line}");
 }

@@ -296,15 +296,8 @@ fn path(p: &Path) -> &str {
 fn peak_rss_kb(pid: u32) -> std::thread::JoinHandle<u64> {
     std::thread::spawn(move || {
         let mut peak = 0;
-        while let Ok(status) = std::fs::read_to_string(format!("/proc/{pid}/status")) {
-            let hwm = status
-                .lines()
-                .find_map(|l| l.strip_prefix("VmHWM:"))
-                .and_then(|v| v.trim().trim_end_matches(" kB").parse().ok());
-            match hwm {
-                Some(kb) => peak = std::cmp::max(peak, kb),
-                None => break, // a zombie: the process has ended
-            }
+        while let Some(kb) = common::proc_status_kb(pid, "VmHWM") {
+            peak = std::cmp::max(peak, kb);
             std::thread::sleep(Duration::from_millis(50));
         }
         peak

@@ -58,3 +58,12 @@ pub fn refused(o: &Output, needles: &[&str]) -> String {
     }
     t
 }
+
+/// A memory figure of process `pid` from `/proc/PID/status`, in kB
+/// (`VmRSS`: resident now; `VmHWM`: the most it has held). `None` once
+/// the process has gone or been reaped (a zombie has no memory lines).
+pub fn proc_status_kb(pid: u32, key: &str) -> Option<u64> {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).ok()?;
+    let value = status.lines().find_map(|l| l.strip_prefix(key)?.strip_prefix(':'))?;
+    value.trim().trim_end_matches("kB").trim().parse().ok()
+}
