@@ -20,6 +20,21 @@ const ENGINE_HOME: &str = "src/pipeline/world/";
 /// every layer but each other's rules.
 fn may_read(layer: &str) -> Option<&'static [&'static str]> {
     const BASE: [&str; 4] = ["error", "files", "contact", "scene"];
+    const STACK: [&str; 13] = [
+        "error",
+        "files",
+        "contact",
+        "scene",
+        "input",
+        "pipeline::surface",
+        "pipeline::vision",
+        "pipeline::technique",
+        "pipeline::world",
+        "session",
+        "harness",
+        "render",
+        "app",
+    ];
     Some(match layer {
         "error" => &[],
         "files" => &["error"],
@@ -31,58 +46,12 @@ fn may_read(layer: &str) -> Option<&'static [&'static str]> {
         "pipeline::technique" => {
             &["error", "files", "contact", "scene", "pipeline::surface", "pipeline::vision", "pipeline::world"]
         }
-        "session" => &[
-            "error",
-            "files",
-            "contact",
-            "scene",
-            "input",
-            "pipeline::surface",
-            "pipeline::vision",
-            "pipeline::technique",
-            "pipeline::world",
-        ],
-        "harness" => &[
-            "error",
-            "files",
-            "contact",
-            "scene",
-            "input",
-            "pipeline::surface",
-            "pipeline::vision",
-            "pipeline::technique",
-            "pipeline::world",
-            "session",
-        ],
-        "app" => &[
-            "error",
-            "files",
-            "contact",
-            "scene",
-            "input",
-            "pipeline::surface",
-            "pipeline::vision",
-            "pipeline::technique",
-            "pipeline::world",
-            "session",
-            "harness",
-            "render",
-        ],
-        "cli" => &[
-            "error",
-            "files",
-            "contact",
-            "scene",
-            "input",
-            "pipeline::surface",
-            "pipeline::vision",
-            "pipeline::technique",
-            "pipeline::world",
-            "session",
-            "harness",
-            "render",
-            "app",
-        ],
+        // From the session up, each layer reads everything before it in
+        // this order (render is the app's, not the harness's).
+        "session" => &STACK[..9],
+        "harness" => &STACK[..10],
+        "app" => &STACK[..12],
+        "cli" => &STACK[..13],
         _ => return None,
     })
 }
