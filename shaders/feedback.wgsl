@@ -57,11 +57,6 @@ fn vs_line(@builtin(vertex_index) index: u32, line: LineIn) -> VsOut {
     return out;
 }
 
-struct CubeVertexIn {
-    @location(0) position: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-};
-
 struct CubeIn {
     // xyz: centre; w: half the side.
     @location(2) center_half: vec4<f32>,
@@ -69,7 +64,7 @@ struct CubeIn {
 };
 
 @vertex
-fn vs_cube(v: CubeVertexIn, cube: CubeIn) -> VsOut {
+fn vs_cube(v: MeshVertex, cube: CubeIn) -> VsOut {
     // The unit box has side 1: scale by the full side.
     let world = cube.center_half.xyz + v.position * (2.0 * cube.center_half.w);
     // Unshadowed, mostly flat shading: the faces stay distinguishable but

@@ -5,23 +5,6 @@
 // (The table's grid and rim are drawn over it by the "grid" pipeline.)
 // Prepended by frame.wgsl.
 
-struct VertexIn {
-    @location(0) position: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-};
-
-// The object instance record (see mesh.wgsl); the params are unused.
-struct InstanceIn {
-    @location(2) model_0: vec4<f32>,
-    @location(3) model_1: vec4<f32>,
-    @location(4) model_2: vec4<f32>,
-    @location(5) model_3: vec4<f32>,
-    @location(6) normal_0: vec4<f32>,
-    @location(7) normal_1: vec4<f32>,
-    @location(8) normal_2: vec4<f32>,
-    @location(9) color: vec4<f32>,
-};
-
 struct VsOut {
     @builtin(position) clip: vec4<f32>,
     @location(0) shadow: vec3<f32>,
@@ -32,7 +15,7 @@ struct VsOut {
 };
 
 @vertex
-fn vs_main(v: VertexIn, i: InstanceIn) -> VsOut {
+fn vs_main(v: MeshVertex, i: ObjectInstance) -> VsOut {
     let model = mat4x4<f32>(i.model_0, i.model_1, i.model_2, i.model_3);
     let normal_matrix = mat3x3<f32>(i.normal_0.xyz, i.normal_1.xyz, i.normal_2.xyz);
     let world = model * vec4<f32>(v.position, 1.0);

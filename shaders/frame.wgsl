@@ -29,6 +29,30 @@ struct Frame {
     options: vec4<f32>,
 };
 
+// A mesh vertex (`render::Vertex`, locations 0..=1): every lit mesh, the
+// shadow casters and the feedback cubes share it.
+struct MeshVertex {
+    @location(0) position: vec3<f32>,
+    @location(1) normal: vec3<f32>,
+};
+
+// An object instance (`render::ObjectInstance`, locations 2..=10), read by
+// the "mesh", "flat" and "shadow" pipelines from one instance buffer; each
+// reads the fields it needs.
+struct ObjectInstance {
+    @location(2) model_0: vec4<f32>,
+    @location(3) model_1: vec4<f32>,
+    @location(4) model_2: vec4<f32>,
+    @location(5) model_3: vec4<f32>,
+    // Inverse-transpose of the model's upper 3x3 (non-uniform scales).
+    @location(6) normal_0: vec4<f32>,
+    @location(7) normal_1: vec4<f32>,
+    @location(8) normal_2: vec4<f32>,
+    @location(9) color: vec4<f32>,
+    // y: specular strength (x, z, w unused).
+    @location(10) params: vec4<f32>,
+};
+
 @group(0) @binding(0) var<uniform> frame: Frame;
 @group(0) @binding(1) var shadow_map: texture_depth_2d;
 @group(0) @binding(2) var shadow_sampler: sampler_comparison;

@@ -2,25 +2,6 @@
 // sphere, cylinder, capsule) and the deformables (drawn with an identity
 // transform and culling off). Prepended by frame.wgsl.
 
-struct VertexIn {
-    @location(0) position: vec3<f32>,
-    @location(1) normal: vec3<f32>,
-};
-
-struct InstanceIn {
-    @location(2) model_0: vec4<f32>,
-    @location(3) model_1: vec4<f32>,
-    @location(4) model_2: vec4<f32>,
-    @location(5) model_3: vec4<f32>,
-    // Inverse-transpose of the model's upper 3x3 (non-uniform scales).
-    @location(6) normal_0: vec4<f32>,
-    @location(7) normal_1: vec4<f32>,
-    @location(8) normal_2: vec4<f32>,
-    @location(9) color: vec4<f32>,
-    // y: specular strength (x, z, w unused).
-    @location(10) params: vec4<f32>,
-};
-
 struct VsOut {
     @builtin(position) clip: vec4<f32>,
     // From the surface to the eye (for the highlight).
@@ -32,7 +13,7 @@ struct VsOut {
 };
 
 @vertex
-fn vs_main(v: VertexIn, i: InstanceIn) -> VsOut {
+fn vs_main(v: MeshVertex, i: ObjectInstance) -> VsOut {
     let model = mat4x4<f32>(i.model_0, i.model_1, i.model_2, i.model_3);
     let normal_matrix = mat3x3<f32>(i.normal_0.xyz, i.normal_1.xyz, i.normal_2.xyz);
     let world = model * vec4<f32>(v.position, 1.0);

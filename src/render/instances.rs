@@ -1,12 +1,13 @@
 //! Per-instance GPU records and how draw-list items become them. Pure.
 //!
-//! Each record's layout matches the `InstanceIn`/`DecalIn`/`LineIn`/`CubeIn`
+//! Each record's layout matches the `ObjectInstance`/`DecalIn`/`LineIn`/`CubeIn`
 //! struct of its shader; the `@location`s are listed beside each field.
 
 use bytemuck::{Pod, Zeroable};
 use glam::{Mat3, Mat4, Vec3};
 
 use crate::render::draw_list::{ContactOverlay, Decal, FeedbackDraw, ObjectDraw, Rgba, TableDraw};
+use crate::render::gpu_record::GpuRecord;
 
 /// Thickness of the table slab below z = 0 (metres): enough for its front
 /// edge to read as a solid object, thin enough not to fill the frame.
@@ -15,8 +16,8 @@ pub const TABLE_THICKNESS: f32 = 0.03;
 /// Specular strength of objects; the table is matte.
 const OBJECT_SPECULAR: f32 = 0.35;
 
-/// A mesh instance (`shaders/mesh.wgsl`, locations 2..=10; the table and
-/// shadow shaders read a subset).
+/// A mesh instance (`struct ObjectInstance` in `shaders/frame.wgsl`,
+/// locations 2..=10; the flat and shadow shaders read a subset).
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Pod, Zeroable)]
 pub struct ObjectInstance {
@@ -27,17 +28,15 @@ pub struct ObjectInstance {
     pub params: [f32; 4],
 }
 
-impl ObjectInstance {
-    pub const ATTRIBUTES: [wgpu::VertexAttribute; 9] = wgpu::vertex_attr_array![
+impl GpuRecord for ObjectInstance {
+    const ATTRIBUTES: &'static [wgpu::VertexAttribute] = &wgpu::vertex_attr_array![
         2 => Float32x4, 3 => Float32x4, 4 => Float32x4, 5 => Float32x4,
         6 => Float32x4, 7 => Float32x4, 8 => Float32x4,
         9 => Float32x4, 10 => Float32x4,
     ];
+}
 
-    pub fn layout() -> wgpu::VertexBufferLayout<'static> {
-        instance_layout::<Self>(&Self::ATTRIBUTES)
-    }
-
+impl ObjectInstance {
     pub fn new(model: Mat4, color: Rgba, params: [f32; 4]) -> Self {
         // Normals transform with the inverse transpose; a singular model
         // (a zero scale) gets the plain rotation part instead of NaNs.
@@ -80,14 +79,12 @@ pub struct DecalInstance {
     pub color: [f32; 4],
 }
 
+impl GpuRecord for DecalInstance {
+    const ATTRIBUTES: &'static [wgpu::VertexAttribute] =
+        &wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4];
+}
+
 impl DecalInstance {
-    pub const ATTRIBUTES: [wgpu::VertexAttribute; 3] =
-        wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4];
-
-    pub fn layout() -> wgpu::VertexBufferLayout<'static> {
-        instance_layout::<Self>(&Self::ATTRIBUTES)
-    }
-
     pub fn new(decal: &Decal) -> Self {
         match *decal {
             Decal::Disc { center, z, radius, color, ring } => {
@@ -121,12 +118,8 @@ pub struct StripInstance {
     pub b: [f32; 4],
 }
 
-impl StripInstance {
-    pub const ATTRIBUTES: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4];
-
-    pub fn layout() -> wgpu::VertexBufferLayout<'static> {
-        instance_layout::<Self>(&Self::ATTRIBUTES)
-    }
+impl GpuRecord for StripInstance {
+    const ATTRIBUTES: &'static [wgpu::VertexAttribute] = &wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4];
 }
 
 /// The table top's markings: grid lines through the centre every
@@ -166,13 +159,11 @@ pub struct OverlayRegion {
     pub uv_rect: [f32; 4],
 }
 
+impl GpuRecord for OverlayRegion {
+    const ATTRIBUTES: &'static [wgpu::VertexAttribute] = &wgpu::vertex_attr_array![0 => Float32x4];
+}
+
 impl OverlayRegion {
-    pub const ATTRIBUTES: [wgpu::VertexAttribute; 1] = wgpu::vertex_attr_array![0 => Float32x4];
-
-    pub fn layout() -> wgpu::VertexBufferLayout<'static> {
-        instance_layout::<Self>(&Self::ATTRIBUTES)
-    }
-
     pub fn of(overlay: &ContactOverlay) -> Option<Self> {
         let (w, h) = (overlay.width as usize, overlay.height as usize);
         let (mut lo, mut hi) = ([usize::MAX; 2], [0usize; 2]);
@@ -201,13 +192,9 @@ pub struct LineInstance {
     pub color: [f32; 4],
 }
 
-impl LineInstance {
-    pub const ATTRIBUTES: [wgpu::VertexAttribute; 3] =
-        wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4];
-
-    pub fn layout() -> wgpu::VertexBufferLayout<'static> {
-        instance_layout::<Self>(&Self::ATTRIBUTES)
-    }
+impl GpuRecord for LineInstance {
+    const ATTRIBUTES: &'static [wgpu::VertexAttribute] =
+        &wgpu::vertex_attr_array![0 => Float32x4, 1 => Float32x4, 2 => Float32x4];
 }
 
 /// A feedback cube (`shaders/feedback.wgsl` `vs_cube`, locations 2..=3).
@@ -219,12 +206,8 @@ pub struct CubeInstance {
     pub color: [f32; 4],
 }
 
-impl CubeInstance {
-    pub const ATTRIBUTES: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![2 => Float32x4, 3 => Float32x4];
-
-    pub fn layout() -> wgpu::VertexBufferLayout<'static> {
-        instance_layout::<Self>(&Self::ATTRIBUTES)
-    }
+impl GpuRecord for CubeInstance {
+    const ATTRIBUTES: &'static [wgpu::VertexAttribute] = &wgpu::vertex_attr_array![2 => Float32x4, 3 => Float32x4];
 }
 
 /// Splits feedback into line and cube instances; lines get `line_px` width.
@@ -251,14 +234,6 @@ pub fn feedback_instances(feedback: &[FeedbackDraw], line_px: f32) -> (Vec<LineI
         }
     }
     (lines, cubes)
-}
-
-fn instance_layout<T>(attributes: &'static [wgpu::VertexAttribute]) -> wgpu::VertexBufferLayout<'static> {
-    wgpu::VertexBufferLayout {
-        array_stride: std::mem::size_of::<T>() as wgpu::BufferAddress,
-        step_mode: wgpu::VertexStepMode::Instance,
-        attributes,
-    }
 }
 
 #[cfg(test)]
@@ -321,12 +296,12 @@ mod tests {
     fn records_match_their_vertex_layouts() {
         let size =
             |attrs: &[wgpu::VertexAttribute]| attrs.iter().map(|a| a.offset + a.format.size()).max().unwrap_or(0);
-        assert_eq!(size(&ObjectInstance::ATTRIBUTES), std::mem::size_of::<ObjectInstance>() as u64);
-        assert_eq!(size(&DecalInstance::ATTRIBUTES), std::mem::size_of::<DecalInstance>() as u64);
-        assert_eq!(size(&LineInstance::ATTRIBUTES), std::mem::size_of::<LineInstance>() as u64);
-        assert_eq!(size(&CubeInstance::ATTRIBUTES), std::mem::size_of::<CubeInstance>() as u64);
-        assert_eq!(size(&StripInstance::ATTRIBUTES), std::mem::size_of::<StripInstance>() as u64);
-        assert_eq!(size(&OverlayRegion::ATTRIBUTES), std::mem::size_of::<OverlayRegion>() as u64);
+        assert_eq!(size(ObjectInstance::ATTRIBUTES), std::mem::size_of::<ObjectInstance>() as u64);
+        assert_eq!(size(DecalInstance::ATTRIBUTES), std::mem::size_of::<DecalInstance>() as u64);
+        assert_eq!(size(LineInstance::ATTRIBUTES), std::mem::size_of::<LineInstance>() as u64);
+        assert_eq!(size(CubeInstance::ATTRIBUTES), std::mem::size_of::<CubeInstance>() as u64);
+        assert_eq!(size(StripInstance::ATTRIBUTES), std::mem::size_of::<StripInstance>() as u64);
+        assert_eq!(size(OverlayRegion::ATTRIBUTES), std::mem::size_of::<OverlayRegion>() as u64);
     }
 
     #[test]

@@ -6,6 +6,8 @@
 
 use bytemuck::{Pod, Zeroable};
 use glam::Vec3;
+
+use crate::render::gpu_record::GpuRecord;
 use std::f32::consts::{PI, TAU};
 
 /// One mesh vertex as the vertex shaders read it (`@location(0)`, `@location(1)`).
@@ -16,19 +18,14 @@ pub struct Vertex {
     pub normal: [f32; 3],
 }
 
-impl Vertex {
-    pub const ATTRIBUTES: [wgpu::VertexAttribute; 2] = wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
+impl GpuRecord for Vertex {
+    const ATTRIBUTES: &'static [wgpu::VertexAttribute] = &wgpu::vertex_attr_array![0 => Float32x3, 1 => Float32x3];
+    const STEP: wgpu::VertexStepMode = wgpu::VertexStepMode::Vertex;
+}
 
+impl Vertex {
     pub fn new(position: Vec3, normal: Vec3) -> Self {
         Self { position: position.to_array(), normal: normal.to_array() }
-    }
-
-    pub fn layout() -> wgpu::VertexBufferLayout<'static> {
-        wgpu::VertexBufferLayout {
-            array_stride: std::mem::size_of::<Self>() as wgpu::BufferAddress,
-            step_mode: wgpu::VertexStepMode::Vertex,
-            attributes: &Self::ATTRIBUTES,
-        }
     }
 }
 

@@ -19,6 +19,7 @@ mod draw_list;
 mod error;
 mod frame;
 mod gpu;
+mod gpu_record;
 mod instances;
 mod light;
 mod mesh;

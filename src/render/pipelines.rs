@@ -5,6 +5,7 @@
 //! has no includes, and one shared prelude keeps the lighting identical
 //! across the table, the objects and the decals.
 
+use crate::render::gpu_record::GpuRecord;
 use crate::render::instances::{
     CubeInstance, DecalInstance, LineInstance, ObjectInstance, OverlayRegion, StripInstance,
 };
@@ -410,7 +411,9 @@ impl MainPass<'_> {
         let alpha = Some(wgpu::BlendState::ALPHA_BLENDING);
         let line_buffers = [Some(LineInstance::layout())];
         let cube_buffers = [Some(Vertex::layout()), Some(CubeInstance::layout())];
-        let feedback = |label, vs, fs, buffers, compare, write| {
+        // Lines are quads whose winding depends on the screen direction, so
+        // they are not culled; cubes are.
+        let feedback = |label, vs, fs, buffers, cull, compare, write| {
             build(
                 self.device,
                 self.format,
@@ -421,54 +424,47 @@ impl MainPass<'_> {
                     vs,
                     fs: Some(fs),
                     buffers,
-                    cull: Some(wgpu::Face::Back),
+                    cull,
                     depth: Depth { write, ..Depth::test_only(compare) },
                     blend: alpha,
                     sample_count: self.samples,
                 },
             )
         };
-        // Lines are quads whose winding depends on the screen direction:
-        // no culling.
-        let lines_hidden = build(
-            self.device,
-            self.format,
-            Spec {
-                label: "feedback lines pipeline (hidden parts)",
-                layout: self.layout,
-                module: feedback_module,
-                vs: "vs_line",
-                fs: Some("fs_hidden"),
-                buffers: &line_buffers,
-                cull: None,
-                depth: Depth::test_only(Greater),
-                blend: alpha,
-                sample_count: self.samples,
-            },
+        let back = Some(wgpu::Face::Back);
+        let lines_hidden = feedback(
+            "feedback lines pipeline (hidden parts)",
+            "vs_line",
+            "fs_hidden",
+            &line_buffers,
+            None,
+            Greater,
+            false,
         );
-        let lines_visible = build(
-            self.device,
-            self.format,
-            Spec {
-                label: "feedback lines pipeline (visible parts)",
-                layout: self.layout,
-                module: feedback_module,
-                vs: "vs_line",
-                fs: Some("fs_visible"),
-                buffers: &line_buffers,
-                cull: None,
-                depth: Depth { write: true, ..Depth::test_only(LessEqual) },
-                blend: alpha,
-                sample_count: self.samples,
-            },
+        let lines_visible = feedback(
+            "feedback lines pipeline (visible parts)",
+            "vs_line",
+            "fs_visible",
+            &line_buffers,
+            None,
+            LessEqual,
+            true,
         );
-        let cubes_hidden =
-            feedback("feedback cubes pipeline (hidden parts)", "vs_cube", "fs_hidden", &cube_buffers, Greater, false);
+        let cubes_hidden = feedback(
+            "feedback cubes pipeline (hidden parts)",
+            "vs_cube",
+            "fs_hidden",
+            &cube_buffers,
+            back,
+            Greater,
+            false,
+        );
         let cubes_visible = feedback(
             "feedback cubes pipeline (visible parts)",
             "vs_cube",
             "fs_visible",
             &cube_buffers,
+            back,
             LessEqual,
             true,
         );

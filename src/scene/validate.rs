@@ -865,49 +865,54 @@ impl GoalReader<'_> {
         self.c.positive_upto(&self.span, field, v, bounds::GOAL_LENGTH_M)
     }
 
-    fn positioning(&self, g: GoalFile) -> Result<Goal, SceneError> {
-        if g.targets.is_empty() {
-            return Err(self.err("goal.targets", "a positioning goal needs at least one [[goal.targets]]"));
+    /// Each entry of a goal's non-empty list (`goal.targets`, `goal.zones`),
+    /// checked by `check` with the entry's index and its span in the file.
+    fn each_entry<T, U>(
+        &self,
+        list: Vec<Spanned<T>>,
+        field: &str,
+        needs: &str,
+        check: impl Fn(usize, &Range<usize>, T) -> Result<U, SceneError>,
+    ) -> Result<Vec<U>, SceneError> {
+        if list.is_empty() {
+            return Err(self.err(field, needs));
         }
-        let mut targets = Vec::new();
-        for (i, t) in g.targets.into_iter().enumerate() {
-            let tspan = t.span();
-            let t = t.into_inner();
+        list.into_iter().enumerate().map(|(i, entry)| check(i, &entry.span(), entry.into_inner())).collect()
+    }
+
+    fn positioning(&self, g: GoalFile) -> Result<Goal, SceneError> {
+        let needs = "a positioning goal needs at least one [[goal.targets]]";
+        let targets = self.each_entry(g.targets, "goal.targets", needs, |i, tspan, t| {
             let object = self.objects.iter().position(|o| o.name == t.object).map(ObjectId::new).ok_or_else(|| {
-                self.c.err(&tspan, format!("goal.targets[{i}].object"), format!("no object named `{}`", t.object))
+                self.c.err(tspan, format!("goal.targets[{i}].object"), format!("no object named `{}`", t.object))
             })?;
-            targets.push(Target {
+            Ok(Target {
                 object,
-                position: self.on_table(t.position, &tspan, &format!("goal.targets[{i}].position"))?,
+                position: self.on_table(t.position, tspan, &format!("goal.targets[{i}].position"))?,
                 tolerance: self.c.positive_upto(
-                    &tspan,
+                    tspan,
                     &format!("goal.targets[{i}].tolerance"),
                     t.tolerance.unwrap_or(default::TARGET_TOLERANCE),
                     bounds::GOAL_LENGTH_M,
                 )?,
-            });
-        }
+            })
+        })?;
         Ok(Goal::Positioning { targets, dwell_s: self.dwell_s })
     }
 
     fn sorting(&self, g: GoalFile) -> Result<Goal, SceneError> {
-        if g.zones.is_empty() {
-            return Err(self.err("goal.zones", "a sorting goal needs at least one [[goal.zones]]"));
-        }
-        let mut zones = Vec::new();
-        for (i, z) in g.zones.into_iter().enumerate() {
-            let zspan = z.span();
-            let z = z.into_inner();
-            let min = self.on_table(z.min, &zspan, &format!("goal.zones[{i}].min"))?;
-            let max = self.on_table(z.max, &zspan, &format!("goal.zones[{i}].max"))?;
+        let needs = "a sorting goal needs at least one [[goal.zones]]";
+        let zones = self.each_entry(g.zones, "goal.zones", needs, |i, zspan, z| {
+            let min = self.on_table(z.min, zspan, &format!("goal.zones[{i}].min"))?;
+            let max = self.on_table(z.max, zspan, &format!("goal.zones[{i}].max"))?;
             if min.x >= max.x || min.y >= max.y {
-                return Err(self.c.err(&zspan, format!("goal.zones[{i}]"), "min must be below max on both axes"));
+                return Err(self.c.err(zspan, format!("goal.zones[{i}]"), "min must be below max on both axes"));
             }
             let color = Color::parse(&z.color).ok_or_else(|| {
-                self.c.err(&zspan, format!("goal.zones[{i}].color"), format!("unknown colour `{}`", z.color))
+                self.c.err(zspan, format!("goal.zones[{i}].color"), format!("unknown colour `{}`", z.color))
             })?;
-            zones.push(SortingZone { color, min, max });
-        }
+            Ok(SortingZone { color, min, max })
+        })?;
         Ok(Goal::Sorting { zones, dwell_s: self.dwell_s })
     }
 

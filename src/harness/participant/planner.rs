@@ -285,8 +285,16 @@ impl Planner {
             .is_some_and(|e| e.hands.iter().any(|h| h.phase == Phase::Down && matches!(h.role, Role::Carry { .. })));
         let feedback = (self.feedback && carrying).then(|| session.feedback());
         let delay = self.delay();
-        let gain = DRAG_GAIN.min(0.5 / delay);
-        let speed = self.speed(scene);
+        let sight = Sight {
+            scene,
+            open: &open,
+            observed,
+            now,
+            gain: DRAG_GAIN.min(0.5 / delay),
+            speed: self.speed(scene),
+            delay,
+            feedback: feedback.as_ref(),
+        };
         let mut regrips = 0;
         if let Some(e) = &mut self.episode {
             for h in &mut e.hands {
@@ -294,10 +302,8 @@ impl Planner {
                     continue;
                 }
                 let lifted = match &h.role {
-                    Role::Carry { object } => {
-                        carry(h, *object, scene, &open, observed, now, gain, speed, delay, feedback.as_ref())
-                    }
-                    Role::Push { .. } => push(h, scene, &open, observed, now, gain, speed),
+                    Role::Carry { object } => carry(h, *object, &sight),
+                    Role::Push { .. } => push(h, &sight),
                 };
                 match lifted {
                     Step::Going => {}
@@ -625,19 +631,41 @@ fn couple_hands(hands: &mut [HandCtl], open: &[(ObjectId, Want)], observed: &[Ve
     }
 }
 
-#[allow(clippy::too_many_arguments)]
-fn carry(
-    h: &mut HandCtl,
-    object: ObjectId,
-    scene: &Scene,
-    open: &[(ObjectId, Want)],
-    observed: &[Vec2],
+/// What a hand's next move is decided from: what the participant sees this
+/// decision and how fast it moves.
+struct Sight<'a> {
+    scene: &'a Scene,
+    /// Objects not yet where they belong, with where they belong.
+    open: &'a [(ObjectId, Want)],
+    /// Where the participant sees each object (perceptually late).
+    observed: &'a [Vec2],
     now: f64,
+    /// Closed-loop gain of a drag: speed per metre of error (1/s).
     gain: f32,
+    /// The hand's top speed (m/s).
     speed: f32,
+    /// The participant's perceptual delay (s).
     delay: f32,
-    feedback: Option<&Feedback>,
-) -> Step {
+    /// The technique's feedback, when shown and looked at.
+    feedback: Option<&'a Feedback>,
+}
+
+impl HandCtl {
+    /// Whether progress stalled: `error` did not beat the best so far by
+    /// 5 mm within `patience` seconds. A better error resets the clock.
+    fn stalled(&mut self, error: f32, now: f64, patience: f64) -> bool {
+        if error < self.best - 0.005 {
+            self.best = error;
+            self.best_at = now;
+            false
+        } else {
+            now - self.best_at > patience
+        }
+    }
+}
+
+fn carry(h: &mut HandCtl, object: ObjectId, sight: &Sight) -> Step {
+    let Sight { scene, open, observed, now, gain, speed, delay, feedback } = *sight;
     let Some((_, w)) = open.iter().find(|(i, _)| *i == object) else {
         return Step::Done;
     };
@@ -665,24 +693,14 @@ fn carry(
     if (seen_pressing - obj).length() > reach {
         return Step::Regrip;
     }
-    if err.length() < h.best - 0.005 {
-        h.best = err.length();
-        h.best_at = now;
-    } else if now - h.best_at > f64::from(STUCK_AFTER) {
+    if h.stalled(err.length(), now, f64::from(STUCK_AFTER)) {
         return Step::Regrip;
     }
     Step::Going
 }
 
-fn push(
-    h: &mut HandCtl,
-    scene: &Scene,
-    open: &[(ObjectId, Want)],
-    observed: &[Vec2],
-    now: f64,
-    gain: f32,
-    speed: f32,
-) -> Step {
+fn push(h: &mut HandCtl, sight: &Sight) -> Step {
+    let Sight { scene, open, observed, now, gain, speed, .. } = *sight;
     let Role::Push { objects, lateral, standoff } = &h.role else {
         return Step::Done;
     };
@@ -718,10 +736,7 @@ fn push(
     h.angle = push_angle(h.kind, dir, lateral);
     let v = dir * (gain * dist).min(speed) + off * 2.0;
     h.velocity = v.clamp_length_max(speed);
-    if total < h.best - 0.005 {
-        h.best = total;
-        h.best_at = now;
-    } else if now - h.best_at > f64::from(STUCK_AFTER) * 2.0 {
+    if h.stalled(total, now, f64::from(STUCK_AFTER) * 2.0) {
         return Step::Regrip;
     }
     Step::Going

@@ -95,6 +95,40 @@ pub struct Knob {
     pub scripted: bool,
 }
 
+impl Knob {
+    /// A knob swept over `values`, each labelled by its value and set up by
+    /// `setup`, against the setup at `reference`.
+    fn sweep<T: Copy + std::fmt::Display>(
+        name: &'static str,
+        reference: T,
+        values: &[T],
+        is_default: impl Fn(T) -> bool,
+        setup: impl Fn(T) -> Setup,
+    ) -> Self {
+        Knob {
+            name,
+            reference: setup(reference),
+            values: values.iter().map(|&v| (v.to_string(), is_default(v), setup(v))).collect(),
+            scripted: false,
+        }
+    }
+
+    /// Also times a scripted positioning trial at each value.
+    fn scripted(self, scripted: bool) -> Self {
+        Knob { scripted, ..self }
+    }
+}
+
+/// A sensor resolution, labelled `WxH`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Pixels(u32, u32);
+
+impl std::fmt::Display for Pixels {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}x{}", self.0, self.1)
+    }
+}
+
 fn base() -> anyhow::Result<Setup> {
     Ok(Setup { scene: scene::load(FIXTURE_SCENE)?, options: SessionOptions::default(), kind: TechniqueKind::PARTICLE })
 }
@@ -125,117 +159,48 @@ pub fn knobs(quick: bool) -> anyhow::Result<Vec<Knob>> {
 fn sensing_knobs(b: &Setup, quick: bool) -> Vec<Knob> {
     let defaults = TechniqueConfig::default();
     let dv = VisionParams::default();
-    let mut out = Vec::new();
-
-    let res: &[(u32, u32)] = if quick {
-        &[(160, 120), (320, 240), (640, 480), (960, 720)]
+    let res: &[Pixels] = if quick {
+        &[Pixels(160, 120), Pixels(320, 240), Pixels(640, 480), Pixels(960, 720)]
     } else {
-        &[(160, 120), (320, 240), (480, 360), (640, 480), (960, 720)]
+        &[Pixels(160, 120), Pixels(320, 240), Pixels(480, 360), Pixels(640, 480), Pixels(960, 720)]
     };
-    out.push(Knob {
-        name: "resolution",
-        reference: Setup { options: SessionOptions { sensor_px: (1280, 960), ..b.options.clone() }, ..b.clone() },
-        values: res
-            .iter()
-            .map(|&(w, h)| {
-                (
-                    format!("{w}x{h}"),
-                    (w, h) == (640, 480),
-                    Setup { options: SessionOptions { sensor_px: (w, h), ..b.options.clone() }, ..b.clone() },
-                )
-            })
-            .collect(),
-        scripted: false,
-    });
+    let resolution =
+        |Pixels(w, h)| Setup { options: SessionOptions { sensor_px: (w, h), ..b.options.clone() }, ..b.clone() };
     let strides: &[usize] = if quick { &[1, 2, 3, 6] } else { &[1, 2, 3, 4, 6, 8] };
-    out.push(Knob {
-        name: "particle_stride",
-        reference: with_config(b.clone(), |c| c.particle_stride = 1),
-        values: strides
-            .iter()
-            .map(|&n| (n.to_string(), n == defaults.particle_stride, with_config(b.clone(), |c| c.particle_stride = n)))
-            .collect(),
-        scripted: false,
-    });
+    let stride = |n| with_config(b.clone(), |c| c.particle_stride = n);
     let thresholds: &[f32] = if quick { &[6.0, 12.0, 24.0, 48.0] } else { &[4.0, 6.0, 12.0, 24.0, 36.0, 48.0] };
-    out.push(Knob {
-        name: "edge_threshold",
-        reference: with_config(b.clone(), |c| c.particle_edge_threshold = 4.0),
-        values: thresholds
-            .iter()
-            .map(|&t| {
-                (
-                    t.to_string(),
-                    t == defaults.particle_edge_threshold,
-                    with_config(b.clone(), |c| c.particle_edge_threshold = t),
-                )
-            })
-            .collect(),
-        scripted: false,
-    });
+    let threshold = |t| with_config(b.clone(), |c| c.particle_edge_threshold = t);
     let blocks: &[usize] = if quick { &[3, 5, 7, 11] } else { &[3, 5, 7, 9, 11, 15] };
-    out.push(Knob {
-        name: "flow_block",
-        reference: with_vision(b.clone(), |v| v.block_size = 15),
-        values: blocks
-            .iter()
-            .map(|&n| (n.to_string(), n == dv.block_size, with_vision(b.clone(), |v| v.block_size = n)))
-            .collect(),
-        scripted: false,
-    });
+    let block = |n| with_vision(b.clone(), |v| v.block_size = n);
     let radii: &[usize] = if quick { &[1, 2, 3, 5] } else { &[1, 2, 3, 4, 6, 8] };
-    out.push(Knob {
-        name: "flow_radius",
-        reference: with_vision(b.clone(), |v| v.search_radius = 8),
-        values: radii
-            .iter()
-            .map(|&n| (n.to_string(), n == dv.search_radius, with_vision(b.clone(), |v| v.search_radius = n)))
-            .collect(),
-        scripted: false,
-    });
-    out
+    let radius = |n| with_vision(b.clone(), |v| v.search_radius = n);
+    vec![
+        Knob::sweep("resolution", Pixels(1280, 960), res, |p| p == Pixels(640, 480), resolution),
+        Knob::sweep("particle_stride", 1, strides, |n| n == defaults.particle_stride, stride),
+        Knob::sweep("edge_threshold", 4.0, thresholds, |t| t == defaults.particle_edge_threshold, threshold),
+        Knob::sweep("flow_block", 15, blocks, |n| n == dv.block_size, block),
+        Knob::sweep("flow_radius", 8, radii, |n| n == dv.search_radius, radius),
+    ]
 }
 
 /// The knobs of the physics step: solver and PGS iterations, timestep.
 fn physics_knobs(b: &Setup, quick: bool) -> Vec<Knob> {
     let dp = b.scene.physics;
-    let mut out = Vec::new();
+    let with_physics = |set: &dyn Fn(&mut scene::PhysicsSpec)| {
+        let mut s = b.clone();
+        set(&mut s.scene.physics);
+        s
+    };
     let iters: &[usize] = if quick { &[1, 2, 4, 8] } else { &[1, 2, 4, 8, 16] };
-    let solver = |n: usize| {
-        let mut s = b.clone();
-        s.scene.physics.solver_iterations = n;
-        s
-    };
-    out.push(Knob {
-        name: "solver_iterations",
-        reference: solver(32),
-        values: iters.iter().map(|&n| (n.to_string(), n == dp.solver_iterations, solver(n))).collect(),
-        scripted: !quick,
-    });
-    let pgs = |n: usize| {
-        let mut s = b.clone();
-        s.scene.physics.pgs_iterations = n;
-        s
-    };
-    out.push(Knob {
-        name: "pgs_iterations",
-        reference: pgs(8),
-        values: [1usize, 2, 4].iter().map(|&n| (n.to_string(), n == dp.pgs_iterations, pgs(n))).collect(),
-        scripted: false,
-    });
+    let solver = |n| with_physics(&|p| p.solver_iterations = n);
+    let pgs = |n| with_physics(&|p| p.pgs_iterations = n);
     let rates: &[f32] = if quick { &[30.0, 60.0, 120.0] } else { &[30.0, 60.0, 90.0, 120.0, 240.0] };
-    let rate = |hz: f32| {
-        let mut s = b.clone();
-        s.scene.physics.dt = 1.0 / hz;
-        s
-    };
-    out.push(Knob {
-        name: "timestep_hz",
-        reference: rate(480.0),
-        values: rates.iter().map(|&hz| (hz.to_string(), (1.0 / hz - dp.dt).abs() < 1e-6, rate(hz))).collect(),
-        scripted: !quick,
-    });
-    out
+    let rate = |hz: f32| with_physics(&|p| p.dt = 1.0 / hz);
+    vec![
+        Knob::sweep("solver_iterations", 32, iters, |n| n == dp.solver_iterations, solver).scripted(!quick),
+        Knob::sweep("pgs_iterations", 8, &[1, 2, 4], |n| n == dp.pgs_iterations, pgs),
+        Knob::sweep("timestep_hz", 480.0, rates, |hz: f32| (1.0 / hz - dp.dt).abs() < 1e-6, rate).scripted(!quick),
+    ]
 }
 
 /// Switches whose "off" is the paper's way, which is also the reference.

@@ -273,6 +273,21 @@ struct Assignment {
     members: Vec<Identity>,
 }
 
+impl Assignment {
+    /// A blob that continues previous contact `p` alone: same id, history
+    /// and members; its velocity is how far the centroid moved.
+    fn continuing(p: &Live, centroid: [f32; 2]) -> Self {
+        Assignment {
+            id: p.id,
+            birth: p.birth,
+            velocity: [centroid[0] - p.centroid[0], centroid[1] - p.centroid[1]],
+            axis: p.axis,
+            path: p.path.clone(),
+            members: p.members.clone(),
+        }
+    }
+}
+
 /// Keeps contact ids from frame to frame.
 #[derive(Debug, Clone, Default)]
 pub struct BlobTracker {
@@ -611,14 +626,7 @@ fn continue_and_merge(prev: &[Live], blobs: &[Blob], m: &Matching, out: &mut [Op
         };
         let p = &prev[keeper];
         *slot = Some(if owners.len() == 1 {
-            Assignment {
-                id: p.id,
-                birth: p.birth,
-                velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
-                axis: p.axis,
-                path: p.path.clone(),
-                members: p.members.clone(),
-            }
+            Assignment::continuing(p, centroid(j))
         } else {
             let c = centroid(j);
             let members = owners
@@ -673,14 +681,7 @@ fn jump(prev: &[Live], blobs: &[Blob], m: &Matching, gate: f32, out: &mut [Optio
         if out[j].is_none() && !used[i] {
             used[i] = true;
             let p = &prev[i];
-            out[j] = Some(Assignment {
-                id: p.id,
-                birth: p.birth,
-                velocity: [centroid(j)[0] - p.centroid[0], centroid(j)[1] - p.centroid[1]],
-                axis: p.axis,
-                path: p.path.clone(),
-                members: p.members.clone(),
-            });
+            out[j] = Some(Assignment::continuing(p, centroid(j)));
         }
     }
 }
