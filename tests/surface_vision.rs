@@ -4,8 +4,8 @@
 use std::path::{Path, PathBuf};
 
 use surfacelab::pipeline::surface::{
-    ContactImage, Footprint, Hand, HandKind, Patch, PixelPoint, RasterParams, Sensor, TablePoint, rasterize,
-    rasterize_into, rasterize_patches, rasterize_rows,
+    ContactImage, Footprint, Hand, HandKind, Patch, PixelPoint, PixelVector, RasterParams, Sensor, TablePoint,
+    rasterize, rasterize_into, rasterize_patches, rasterize_rows,
 };
 
 use surfacelab::input::{Button, Gesture, GestureRecorder, Modifiers, Mouse, MouseEvent};
@@ -164,7 +164,7 @@ impl FlowCase {
 fn flow_recovers_a_known_translation_of_a_flat_hand() {
     let s = sensor();
     let a = Hand::new(1, HandKind::FlatHand, 0.05, -0.02).with_angle(0.2);
-    let shift = s.vector_to_table([3.3, -2.1]);
+    let shift = s.vector_to_table(PixelVector::new(3.3, -2.1)).to_array();
     let mut b = a.clone();
     b.pose.x += shift[0];
     b.pose.y += shift[1];

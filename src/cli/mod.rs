@@ -2,23 +2,8 @@
 //! arguments are parsed once into a validated struct; the work lives in the
 //! library modules, this layer only wires them together.
 
-/// `print!` for a command's results: a write that fails (EPIPE once the
-/// reader of a pipe has gone, ENOSPC) is a run-time [`Failure`] naming
-/// standard output, returned with `?`, where `print!` would panic.
-macro_rules! out {
-    ($($arg:tt)*) => {{
-        use std::io::Write as _;
-        write!(std::io::stdout().lock(), $($arg)*).map_err($crate::cli::stdout_failure)
-    }};
-}
-
-/// `println!` for a command's results; see [`out!`].
-macro_rules! outln {
-    ($($arg:tt)*) => {{
-        use std::io::Write as _;
-        writeln!(std::io::stdout().lock(), $($arg)*).map_err($crate::cli::stdout_failure)
-    }};
-}
+#[macro_use]
+mod stdout;
 
 mod args;
 mod behaviours;
@@ -45,8 +30,3 @@ pub use args::{
 pub(crate) use entry::headless_main;
 pub use entry::{command, main, main_with};
 pub use failure::{CommandResult, EXIT_USAGE, Failure};
-
-/// A failed write to standard output, as the run-time failure it is.
-fn stdout_failure(e: std::io::Error) -> Failure {
-    Failure::from(anyhow::Error::new(e).context("writing standard output"))
-}

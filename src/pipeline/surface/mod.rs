@@ -15,4 +15,4 @@ pub use hand::{Hand, HandKind, Pose};
 pub use image::ContactImage;
 pub use outline::{MAX_OUTLINE_POINTS, MIN_RING_POINTS, Outline, OutlineError};
 pub use raster::{Noise, RasterParams, rasterize, rasterize_into, rasterize_patches, rasterize_rows};
-pub use sensor::{PixelPoint, Sensor, TablePoint};
+pub use sensor::{PixelPoint, PixelVector, Sensor, TablePoint, TableVector};

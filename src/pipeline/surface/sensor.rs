@@ -4,60 +4,67 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-/// A position in the contact image: `[column, row]`, integers at pixel
-/// centres (see [`Sensor`]). A distinct type from [`TablePoint`] so that
-/// the compiler refuses a pixel where metres are meant.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct PixelPoint(pub Vec2);
+/// A newtype over `Vec2` for one kind of coordinate, so that the compiler
+/// refuses one kind where another is meant.
+macro_rules! coordinates {
+    ($(#[$doc:meta])* $name:ident($a:ident, $b:ident)) => {
+        $(#[$doc])*
+        #[derive(Debug, Clone, Copy, PartialEq, Default)]
+        pub struct $name(pub Vec2);
 
-/// A point on the table, metres from its centre, x to the right and y
-/// away from the viewer (see [`Sensor`]).
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct TablePoint(pub Vec2);
+        impl $name {
+            pub const fn new($a: f32, $b: f32) -> $name {
+                $name(Vec2::new($a, $b))
+            }
 
-impl PixelPoint {
-    pub const fn new(column: f32, row: f32) -> PixelPoint {
-        PixelPoint(Vec2::new(column, row))
-    }
+            pub fn to_array(self) -> [f32; 2] {
+                self.0.to_array()
+            }
+        }
 
-    pub fn to_array(self) -> [f32; 2] {
-        self.0.to_array()
-    }
+        impl From<[f32; 2]> for $name {
+            fn from(p: [f32; 2]) -> $name {
+                $name(Vec2::from(p))
+            }
+        }
+
+        impl From<Vec2> for $name {
+            fn from(p: Vec2) -> $name {
+                $name(p)
+            }
+        }
+
+        impl From<$name> for Vec2 {
+            fn from(p: $name) -> Vec2 {
+                p.0
+            }
+        }
+    };
 }
 
-impl TablePoint {
-    pub const fn new(x: f32, y: f32) -> TablePoint {
-        TablePoint(Vec2::new(x, y))
-    }
+coordinates!(
+    /// A position in the contact image: `[column, row]`, integers at pixel
+    /// centres (see [`Sensor`]).
+    PixelPoint(column, row)
+);
 
-    pub fn to_array(self) -> [f32; 2] {
-        self.0.to_array()
-    }
-}
+coordinates!(
+    /// A point on the table, metres from its centre, x to the right and y
+    /// away from the viewer (see [`Sensor`]).
+    TablePoint(x, y)
+);
 
-impl From<[f32; 2]> for PixelPoint {
-    fn from(p: [f32; 2]) -> PixelPoint {
-        PixelPoint(Vec2::from(p))
-    }
-}
+coordinates!(
+    /// A displacement or velocity in the contact image, pixels (per frame):
+    /// columns grow to the right, rows downwards.
+    PixelVector(columns, rows)
+);
 
-impl From<[f32; 2]> for TablePoint {
-    fn from(p: [f32; 2]) -> TablePoint {
-        TablePoint(Vec2::from(p))
-    }
-}
-
-impl From<Vec2> for TablePoint {
-    fn from(p: Vec2) -> TablePoint {
-        TablePoint(p)
-    }
-}
-
-impl From<TablePoint> for Vec2 {
-    fn from(p: TablePoint) -> Vec2 {
-        p.0
-    }
-}
+coordinates!(
+    /// A displacement or velocity on the table, metres (per frame): x to the
+    /// right, y away from the viewer.
+    TableVector(x, y)
+);
 
 /// The mapping between contact-image pixels and table coordinates.
 ///
@@ -95,7 +102,12 @@ impl Sensor {
     }
 
     /// Pixel position (`[column, row]`, integers at pixel centres) to table
-    /// metres.
+    /// metres. A table point where a pixel is meant does not compile:
+    ///
+    /// ```compile_fail
+    /// use surfacelab::pipeline::surface::{Sensor, TablePoint};
+    /// Sensor::default().to_table(TablePoint::new(0.1, 0.2));
+    /// ```
     pub fn to_table(&self, px: PixelPoint) -> TablePoint {
         let [sx, sy] = self.pixel_size();
         let PixelPoint(Vec2 { x: c, y: r }) = px;
@@ -114,16 +126,16 @@ impl Sensor {
     /// A displacement or velocity in pixels (rows grow downwards) to metres
     /// on the table (y grows away from the viewer). Angles measured in the
     /// image (from +column towards +row) change sign the same way.
-    pub fn vector_to_table(&self, v: [f32; 2]) -> [f32; 2] {
+    pub fn vector_to_table(&self, v: PixelVector) -> TableVector {
         let [sx, sy] = self.pixel_size();
-        [v[0] * sx, -v[1] * sy]
+        TableVector::new(v.0.x * sx, -v.0.y * sy)
     }
 
     /// A table displacement in metres to pixels; inverse of
     /// [`Sensor::vector_to_table`].
-    pub fn vector_to_pixel(&self, v: [f32; 2]) -> [f32; 2] {
+    pub fn vector_to_pixel(&self, v: TableVector) -> PixelVector {
         let [sx, sy] = self.pixel_size();
-        [v[0] / sx, -v[1] / sy]
+        PixelVector::new(v.0.x / sx, -v.0.y / sy)
     }
 
     /// Size of one pixel on the table along x and y, metres.
@@ -163,7 +175,9 @@ mod tests {
             let q = s.to_pixel(s.to_table(PixelPoint::from(p))).to_array();
             assert!((q[0] - p[0]).abs() < 1e-4 && (q[1] - p[1]).abs() < 1e-4);
         }
-        let v = s.vector_to_pixel(s.vector_to_table([3.0, -2.0]));
+        // 2 cm by 1 cm pixels; rows grow downwards, table y away from the viewer.
+        assert_eq!(s.vector_to_table(PixelVector::new(1.0, 1.0)), TableVector::new(0.02, -0.01));
+        let v = s.vector_to_pixel(s.vector_to_table(PixelVector::new(3.0, -2.0))).to_array();
         assert!((v[0] - 3.0).abs() < 1e-5 && (v[1] + 2.0).abs() < 1e-5);
     }
 }

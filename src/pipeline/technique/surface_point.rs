@@ -1,6 +1,6 @@
 //! From contact-image pixels to points on touched surfaces (paper, Figure 6).
 
-use crate::pipeline::surface::{PixelPoint, Sensor};
+use crate::pipeline::surface::{PixelPoint, PixelVector, Sensor};
 use crate::pipeline::world::{RayHit, World};
 use glam::{Vec2, Vec3};
 
@@ -11,7 +11,7 @@ pub fn table_point(sensor: &Sensor, px: [f32; 2]) -> Vec2 {
 
 /// A table-plane velocity (m/s) from a per-frame pixel displacement.
 pub fn table_velocity(sensor: &Sensor, px_per_frame: [f32; 2], dt: f32) -> Vec2 {
-    Vec2::from(sensor.vector_to_table(px_per_frame)) / dt
+    Vec2::from(sensor.vector_to_table(PixelVector::from(px_per_frame))) / dt
 }
 
 /// The least-squares turn (rad per unit of time) of points moving about
