@@ -11,7 +11,7 @@ use super::view::{self, ViewFrame};
 use super::window_surface::WindowSurface;
 use super::{DemoOptions, Screenshot};
 use crate::input::{Button, Modifiers, MouseEvent, SourceEvent};
-use crate::render::{Alpha, GpuContext, Readback, Renderer, RendererOptions, readable, save_png};
+use crate::render::{Alpha, GpuContext, Readback, Renderer, RendererOptions, readable, save_png, texture_2d};
 use anyhow::{Context, anyhow, bail};
 use glam::Vec2;
 use std::sync::Arc;
@@ -146,18 +146,9 @@ fn view_texture(
     format: wgpu::TextureFormat,
     size: [u32; 2],
 ) -> (wgpu::Texture, wgpu::TextureView) {
-    let texture = device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("table view"),
-        size: wgpu::Extent3d { width: size[0], height: size[1], depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-            | wgpu::TextureUsages::TEXTURE_BINDING
-            | wgpu::TextureUsages::COPY_SRC,
-        view_formats: &[],
-    });
+    let usage =
+        wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_SRC;
+    let texture = texture_2d(device, "table view", size, format, usage);
     let view = texture.create_view(&wgpu::TextureViewDescriptor { label: Some("table view"), ..Default::default() });
     (texture, view)
 }
@@ -702,16 +693,8 @@ fn redraw_panel(
 }
 
 fn twin_texture(device: &wgpu::Device, config: &wgpu::SurfaceConfiguration) -> wgpu::Texture {
-    device.create_texture(&wgpu::TextureDescriptor {
-        label: Some("window capture"),
-        size: wgpu::Extent3d { width: config.width, height: config.height, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: config.format,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC | wgpu::TextureUsages::COPY_DST,
-        view_formats: &[],
-    })
+    let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC | wgpu::TextureUsages::COPY_DST;
+    texture_2d(device, "window capture", [config.width, config.height], config.format, usage)
 }
 
 impl ApplicationHandler for App {

@@ -2,6 +2,7 @@
 //! study runs. The same [`Renderer`] as the window draws into an RGBA8
 //! texture, which is read back (see `readback`).
 
+use crate::render::texture::texture_2d;
 use std::path::Path;
 
 use image::RgbaImage;
@@ -61,16 +62,8 @@ impl Capture {
             return Err(RenderError::TargetSize { width, height, max });
         }
         let renderer = Renderer::new(&gpu.device, &gpu.queue, format, options)?;
-        let texture = gpu.device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("capture target"),
-            size: wgpu::Extent3d { width, height, depth_or_array_layers: 1 },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[],
-        });
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC;
+        let texture = texture_2d(&gpu.device, "capture target", [width, height], format, usage);
         let view = texture
             .create_view(&wgpu::TextureViewDescriptor { label: Some("capture target view"), ..Default::default() });
         let readback = Readback::new(&gpu.device, [width, height], format, "capture readback");

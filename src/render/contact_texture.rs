@@ -2,6 +2,7 @@
 //! is shown, recreated when its size changes.
 
 use crate::render::draw_list::ContactOverlay;
+use crate::render::texture::texture_2d;
 
 #[derive(Debug)]
 pub struct ContactTexture {
@@ -12,16 +13,8 @@ pub struct ContactTexture {
 
 impl ContactTexture {
     pub fn new(device: &wgpu::Device, layout: &wgpu::BindGroupLayout, sampler: &wgpu::Sampler, size: [u32; 2]) -> Self {
-        let texture = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("contact image"),
-            size: wgpu::Extent3d { width: size[0], height: size[1], depth_or_array_layers: 1 },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: wgpu::TextureFormat::R8Unorm,
-            usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
-            view_formats: &[],
-        });
+        let usage = wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST;
+        let texture = texture_2d(device, "contact image", size, wgpu::TextureFormat::R8Unorm, usage);
         let view = texture
             .create_view(&wgpu::TextureViewDescriptor { label: Some("contact image view"), ..Default::default() });
         let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {

@@ -32,6 +32,7 @@ pub mod samples;
 mod shadow_map;
 mod snapshot;
 mod targets;
+mod texture;
 mod uniforms;
 
 pub use camera::CameraMatrices;
@@ -47,3 +48,4 @@ pub use palette::{FEEDBACK_RED, TARGET_RED, WAYPOINT_BLUE};
 pub use readback::{Alpha, Readback, padded_bytes_per_row, readable};
 pub use renderer::{Renderer, RendererOptions};
 pub use snapshot::{SnapshotDir, Tolerance, compare};
+pub use texture::texture_2d;

@@ -10,6 +10,7 @@
 //! millisecond on lavapipe (see `benches/render.rs`).
 
 use crate::render::targets::DEPTH_FORMAT;
+use crate::render::texture::texture_2d;
 
 #[derive(Debug)]
 pub struct ShadowMap {
@@ -19,16 +20,8 @@ pub struct ShadowMap {
 
 impl ShadowMap {
     pub fn new(device: &wgpu::Device, size: u32) -> Self {
-        let texture = device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("shadow map"),
-            size: wgpu::Extent3d { width: size, height: size, depth_or_array_layers: 1 },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: DEPTH_FORMAT,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
-            view_formats: &[],
-        });
+        let usage = wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING;
+        let texture = texture_2d(device, "shadow map", [size, size], DEPTH_FORMAT, usage);
         let view =
             texture.create_view(&wgpu::TextureViewDescriptor { label: Some("shadow map view"), ..Default::default() });
         let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
