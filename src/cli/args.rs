@@ -29,6 +29,8 @@ pub enum Command {
     Contact(ContactArgs),
     /// Measure what accuracy costs in time and write the trade-off report.
     Tradeoff(TradeoffArgs),
+    /// Measure how cost grows with the work: scaling.csv, scaling.md and scaling.png.
+    Bench(BenchArgs),
     /// Run the paper's manipulations (the behaviour suite) and print the behaviour × technique table.
     Behaviours(BehavioursArgs),
     /// Check the simulated participants against human data (`participants fitts`).
@@ -430,6 +432,37 @@ pub struct TradeoffArgs {
     /// A smaller sweep that finishes in under two minutes.
     #[arg(long)]
     pub quick: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    #[arg(long, default_value = "out/bench")]
+    pub out: PathBuf,
+    /// Fewer frames per point and no 10,000-object point (about a minute).
+    #[arg(long)]
+    pub quick: bool,
+    /// Studies of these sizes for the participants curve, each in its own
+    /// process on one worker with 5 s trials ("none" leaves the curve out).
+    #[arg(long, value_name = "N,N,..", default_value = "6,60", value_parser = parse_participants)]
+    pub participants: Participants,
+}
+
+/// The participants curve's study sizes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Participants(pub Vec<u32>);
+
+fn parse_participants(s: &str) -> Result<Participants, String> {
+    if s == "none" {
+        return Ok(Participants(Vec::new()));
+    }
+    let max = crate::scene::bounds::MAX_PARTICIPANTS;
+    s.split(',')
+        .map(|n| match n.trim().parse::<u32>() {
+            Ok(n) if (1..=max).contains(&n) => Ok(n),
+            _ => Err(format!("`{n}` is not a participant count from 1 to {max}")),
+        })
+        .collect::<Result<Vec<u32>, String>>()
+        .map(Participants)
 }
 
 #[derive(Debug, Args)]

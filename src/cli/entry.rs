@@ -3,8 +3,8 @@
 //! the dispatch from a parsed command to its subcommand.
 
 use super::{
-    Cli, Command, CommandResult, DemoArgs, StudyArgs, behaviours, calibrate, contact, demo, doctor, participants, run,
-    screenshot, study, synth_images, tradeoff,
+    Cli, Command, CommandResult, DemoArgs, StudyArgs, behaviours, bench, calibrate, contact, demo, doctor,
+    participants, run, screenshot, study, synth_images, tradeoff,
 };
 use crate::pipeline::technique::{TechniqueKind, TechniqueRegistry};
 use clap::{CommandFactory, FromArgMatches};
@@ -135,6 +135,7 @@ fn run(command: Command) -> CommandResult {
         Command::Screenshot(args) => screenshot::run(&args),
         Command::Contact(args) => contact::run(&args),
         Command::Tradeoff(args) => tradeoff::run(&args),
+        Command::Bench(args) => bench::run(&args),
         Command::Behaviours(args) => behaviours::run(&args),
         Command::Calibrate(args) => calibrate::run(&args),
         Command::SynthImages(args) => synth_images::run(&args),

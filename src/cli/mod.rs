@@ -7,6 +7,7 @@ mod stdout;
 
 mod args;
 mod behaviours;
+mod bench;
 mod calibrate;
 mod contact;
 mod demo;
@@ -24,7 +25,7 @@ mod synth_images;
 mod tradeoff;
 
 pub use args::{
-    BehavioursArgs, CalibrateArgs, Cli, Command, ContactArgs, DemoArgs, FittsArgs, ParticipantsAction,
+    BehavioursArgs, BenchArgs, CalibrateArgs, Cli, Command, ContactArgs, DemoArgs, FittsArgs, ParticipantsAction,
     ParticipantsArgs, RunArgs, ScreenshotAfter, ScreenshotArgs, StudyAction, StudyArgs, SynthImagesArgs, TradeoffArgs,
 };
 pub(crate) use entry::headless_main;

@@ -6,6 +6,7 @@
 use super::pareto::{Point, pareto_front};
 use super::row::Row;
 use super::{geometry, pipeline};
+use crate::harness::csv_file::write_csv;
 use crate::harness::plot_font::{FONT, ensure_font};
 use crate::input::Gesture;
 use anyhow::Context;
@@ -95,15 +96,6 @@ fn group_of(r: &Row) -> String {
         Some((_, n)) if r.knob == "contact_method" => format!("{} n={n}", r.knob),
         _ => r.knob.clone(),
     }
-}
-
-fn write_csv(path: &Path, rows: &[Row]) -> anyhow::Result<()> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    for r in rows {
-        w.serialize(r)?;
-    }
-    let bytes = w.into_inner().map_err(|e| anyhow::anyhow!("{}", e.error()))?;
-    crate::files::write_output(path, &bytes).with_context(|| format!("writing {}", path.display()))
 }
 
 /// The Markdown table of docs/performance.md: what each knob costs and buys.
