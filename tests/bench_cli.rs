@@ -56,4 +56,23 @@ fn a_bad_participant_list_is_refused() {
         let o = bin().args(["bench", "--participants", bad]).output().expect("runs");
         refused(&o, &["--participants", "participant count"]);
     }
+    for (bad, why) in [("objects", "CURVE=X"), ("fingers=2", "not a frame curve"), ("image_side=10000", "64 to 2048")] {
+        let o = bin().args(["bench", "--point", bad]).output().expect("runs");
+        refused(&o, &["--point", why]);
+    }
+}
+
+#[test]
+fn one_point_is_measured_alone() {
+    let dir = tmp("bench-point");
+    let out = dir.path().join("p");
+    let o = bin().args(["bench", "--point", "objects=20", "--out"]).arg(&out).output().expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    let rows: Vec<ScalingRow> = csv::Reader::from_path(out.join("scaling.csv"))
+        .expect("scaling.csv")
+        .deserialize()
+        .collect::<Result<_, _>>()
+        .expect("rows read back");
+    assert_eq!(rows.len(), 1, "{rows:?}");
+    assert_eq!((rows[0].curve, rows[0].x), (Curve::Objects, 20.0));
 }

@@ -2,6 +2,7 @@
 //! subcommand's module takes, the parsers of argument values beside them.
 
 use super::{calibrate, demo, screenshot, study};
+use crate::harness::scaling::Curve;
 use crate::harness::study::Shard;
 use crate::pipeline::technique::TechniqueKind;
 use clap::{Args, Parser, Subcommand};
@@ -445,6 +446,25 @@ pub struct BenchArgs {
     /// process on one worker with 5 s trials ("none" leaves the curve out).
     #[arg(long, value_name = "N,N,..", default_value = "6,60", value_parser = parse_participants)]
     pub participants: Participants,
+    /// Measure one frame point alone (to run under a profiler), e.g.
+    /// `objects=10000`; the curve is one of the four frame curves.
+    #[arg(long, value_name = "CURVE=X", value_parser = parse_point)]
+    pub point: Option<(Curve, f64)>,
+}
+
+fn parse_point(s: &str) -> Result<(Curve, f64), String> {
+    let frame_curves = [Curve::Hands, Curve::Objects, Curve::RateHz, Curve::ImageSide];
+    let names = frame_curves.map(Curve::name).join(", ");
+    let (name, x) = s.split_once('=').ok_or_else(|| format!("`{s}` is not CURVE=X (curves: {names})"))?;
+    let curve = frame_curves
+        .into_iter()
+        .find(|c| c.name() == name)
+        .ok_or_else(|| format!("`{name}` is not a frame curve (curves: {names})"))?;
+    let (lo, hi) = curve.point_range();
+    match x.parse::<f64>() {
+        Ok(x) if (lo..=hi).contains(&x) && x.fract() == 0.0 => Ok((curve, x)),
+        _ => Err(format!("{name} = `{x}`: not a whole number from {lo} to {hi}")),
+    }
 }
 
 /// The participants curve's study sizes.

@@ -11,6 +11,7 @@ pub fn run(args: &BenchArgs) -> super::CommandResult {
         quick: args.quick,
         participants: args.participants.0.clone(),
         progress: true,
+        point: args.point,
     })?;
     outln!("| curve | log-log slope | at the largest x | dominant stage there |")?;
     outln!("|---|---|---|---|")?;

@@ -33,6 +33,19 @@ impl Curve {
         }
     }
 
+    /// The points `surfacelab bench --point` measures: wide enough to go past
+    /// the curve's own ends, bounded so that one point stays a frame (a
+    /// 2048² image is 4 MB, 20,000 boxes are twice the 10,000-box point).
+    pub fn point_range(self) -> (f64, f64) {
+        match self {
+            Curve::Hands => (1.0, 16.0),
+            Curve::Objects => (1.0, 20_000.0),
+            Curve::RateHz => (30.0, 1000.0),
+            Curve::ImageSide => (64.0, 2048.0),
+            Curve::Participants => (1.0, f64::from(crate::scene::bounds::MAX_PARTICIPANTS)),
+        }
+    }
+
     /// The measured quantity whose growth the curve's slope gives.
     pub fn cost(self) -> &'static str {
         match self {

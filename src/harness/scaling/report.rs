@@ -21,6 +21,8 @@ pub struct BenchOptions {
     pub participants: Vec<u32>,
     /// Print each point to standard error as it is measured.
     pub progress: bool,
+    /// Measure this one frame point alone (for a profiler), no study.
+    pub point: Option<(Curve, f64)>,
 }
 
 /// One curve's fit: its log-log slope and what costs most at its large end.
@@ -50,8 +52,15 @@ pub fn run_bench(options: &BenchOptions) -> anyhow::Result<(Vec<ScalingRow>, Vec
     std::fs::create_dir_all(&options.out).with_context(|| format!("creating {}", options.out.display()))?;
     let (warmup, frames) = if options.quick { (10, 40) } else { (30, 150) };
     let mut rows = Vec::new();
-    for curve in [Curve::Hands, Curve::Objects, Curve::RateHz, Curve::ImageSide] {
-        for &x in frame_points(curve, options.quick) {
+    let points: Vec<(Curve, f64)> = match options.point {
+        Some(point) => vec![point],
+        None => [Curve::Hands, Curve::Objects, Curve::RateHz, Curve::ImageSide]
+            .into_iter()
+            .flat_map(|c| frame_points(c, options.quick).iter().map(move |&x| (c, x)))
+            .collect(),
+    };
+    {
+        for (curve, x) in points {
             let m =
                 Workload::at(curve, x)?.measure(warmup, frames).with_context(|| format!("{} = {x}", curve.name()))?;
             let row = ScalingRow::frame(curve, x, m);
@@ -62,7 +71,8 @@ pub fn run_bench(options: &BenchOptions) -> anyhow::Result<(Vec<ScalingRow>, Vec
         }
     }
     let exe = std::env::current_exe().context("finding this program to run the studies")?;
-    for &n in &options.participants {
+    let studies = if options.point.is_some() { &[][..] } else { &options.participants[..] };
+    for &n in studies {
         let (wall, peak) = measure_study(&exe, n, &options.out)?;
         if options.progress {
             eprintln!("surfacelab bench: participants = {n}: {wall:.1} s, peak {peak:.1} MB");
