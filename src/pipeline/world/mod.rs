@@ -15,6 +15,7 @@ mod overlap;
 mod pile_projection;
 mod ray;
 mod reach;
+mod scene_index;
 mod soft;
 mod soft_access;
 mod stats;

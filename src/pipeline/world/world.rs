@@ -7,6 +7,7 @@ use super::groups::Layer;
 use super::magnified::MagnifiedDispatcher;
 use super::pile_projection;
 use super::ray::{RayHit, cylinder_hit};
+use super::scene_index::{SceneColliders, SceneIndex};
 use super::soft::{self, SOFT_TAG, SoftBodies};
 use super::stats::WorldStats;
 use crate::scene::{BodyKind, Effect, EffectSet, ObjectId, Scene, Shape};
@@ -14,6 +15,10 @@ use glam::{Quat, Vec2, Vec3};
 use rapier3d::parry::bounding_volume::Aabb;
 use rapier3d::parry::query::{RayCast, RayIntersection};
 use rapier3d::prelude::*;
+
+/// A rigid scene collider: its handle, its object index (`None` for the
+/// table and its walls) and its cached world AABB.
+type SceneCollider = (ColliderHandle, Option<usize>, Aabb);
 
 /// `user_data` tag of environment colliders (table, walls).
 const ENV_TAG: u128 = u128::MAX;
@@ -50,7 +55,9 @@ pub struct World {
     /// the technique's particles, which sit exactly where contact rays go,
     /// and walking past hundreds of them per ray cost more than the physics
     /// (measured with `cargo bench --bench frame`).
-    scene_colliders: Vec<(ColliderHandle, Option<usize>, Aabb)>,
+    scene_colliders: Vec<SceneCollider>,
+    /// Which of `scene_colliders` lie near a point of the table.
+    scene_index: SceneIndex,
     /// By object index: whether it is in a jammed pile this step, where
     /// hands give way (`give_way`).
     jammed: Vec<bool>,
@@ -104,12 +111,14 @@ impl World {
             objects,
             soft: SoftBodies::default(),
             scene_colliders,
+            scene_index: SceneIndex::default(),
             jammed: Vec::new(),
             pushes: Vec::new(),
             time: 0.0,
             stats: WorldStats::default(),
         };
         world.soft = SoftBodies::spawn(&world.scene.soft_bodies, &world.config, &mut world.physics);
+        world.reindex();
         // Build the query structures now: a contact on the very first frame
         // must be able to ray-cast onto the scene before anything has stepped.
         world.physics.detect_collisions(&(), &());
@@ -250,7 +259,7 @@ impl World {
     }
 
     /// The rigid scene colliders with their object index and cached AABB.
-    pub(super) fn scene_colliders(&self) -> &[(ColliderHandle, Option<usize>, Aabb)] {
+    pub(super) fn scene_colliders(&self) -> &[SceneCollider] {
         &self.scene_colliders
     }
 
@@ -352,6 +361,17 @@ impl World {
                 *aabb = c.compute_aabb();
             }
         }
+        self.reindex();
+    }
+
+    fn reindex(&mut self) {
+        self.scene_index = SceneIndex::new(self.scene_colliders.iter().map(|(_, o, aabb)| (o.is_some(), *aabb)));
+    }
+
+    /// The rigid scene colliders that may meet `ray` within `max_toi`, in
+    /// list order.
+    fn scene_colliders_along(&self, ray: &Ray, max_toi: f32) -> SceneColliders<'_, SceneCollider> {
+        SceneColliders::new(&self.scene_colliders, self.scene_index.along_ray(ray, max_toi))
     }
 
     /// Deepest current contact penetration between scene objects and the
@@ -501,7 +521,7 @@ impl World {
         let ray = Ray::new(origin, dir);
         // Rigid scene colliders, directly (see `scene_colliders`).
         let mut best: Option<(ColliderHandle, RayIntersection)> = None;
-        for (h, object, aabb) in &self.scene_colliders {
+        for (h, object, aabb) in self.scene_colliders_along(&ray, max_toi) {
             if object.is_some_and(|i| !self.objects[i].active) {
                 continue;
             }
