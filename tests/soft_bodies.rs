@@ -117,28 +117,7 @@ fn soft_bodies_exist_only_when_their_effect_is_declared() {
 /// the contact ray lands on the cloth, naming the particle under it.
 #[test]
 fn rigid_bodies_rest_on_cloth_and_rays_land_on_it() {
-    let text = r#"
-name = "box_on_cloth"
-effects = ["gravity", "friction", "cloth"]
-[table]
-size = [1.0, 0.75]
-[[soft_bodies]]
-name = "cloth"
-kind = "cloth"
-size = [0.2, 0.2]
-position = [0.0, 0.0]
-mass = 0.05
-thickness = 0.003
-color = "blue"
-[[objects]]
-name = "box"
-shape = "box"
-size = [0.04, 0.04, 0.02]
-mass = 0.01
-color = "red"
-position = [0.0, 0.0, 0.0165]
-"#;
-    let s = scene::parse(text, "box_on_cloth").expect("scene");
+    let s = scene::parse(include_str!("scenes/box_on_cloth.toml"), "box_on_cloth").expect("scene");
     let mut w = World::new(&s);
     let hit = w.cast_contact_ray(Vec2::new(0.06, 0.05)).expect("hit");
     let (h, particle) = hit.soft.expect("the ray lands on the cloth");
