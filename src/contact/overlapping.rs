@@ -234,8 +234,9 @@ mod tests {
     use crate::contact::circle::{CircleFit, discretize_circle};
     use crate::contact::entrance_block::pair_tolerance;
     use crate::contact::polygon::ConvexPolygon;
+    use crate::contact::random_ellipse;
     use crate::contact::report::Relation;
-    use crate::contact::test_support::{agrees_with_the_walk, grid_pair, random_ellipse, random_pair};
+    use crate::contact::test_support::{agrees_with_the_walk, grid_pair, random_pair};
     use crate::contact::vec2::Vec2;
     use proptest::prelude::*;
     use rand::SeedableRng;

@@ -57,24 +57,6 @@ pub(crate) fn hull(mut pts: Vec<Vec2>) -> Vec<Vec2> {
     chain
 }
 
-/// `n` points at distinct random angles on an ellipse with random axes
-/// (0.5 to 1.5), turn and centre near `at`, counter-clockwise: the random
-/// convex polygons of the contact benchmark.
-pub(crate) fn random_ellipse(rng: &mut impl rand::Rng, n: usize, at: Vec2) -> Vec<Vec2> {
-    let (ax, ay) = (rng.random_range(0.5..1.5), rng.random_range(0.5..1.5));
-    let turn: f64 = rng.random_range(0.0..std::f64::consts::TAU);
-    let mut angles: Vec<f64> = (0..n).map(|_| rng.random_range(0.0..std::f64::consts::TAU)).collect();
-    angles.sort_by(f64::total_cmp);
-    angles.dedup();
-    angles
-        .iter()
-        .map(|t| {
-            let (x, y) = (ax * t.cos(), ay * t.sin());
-            at + Vec2::new(x * turn.cos() - y * turn.sin(), x * turn.sin() + y * turn.cos())
-        })
-        .collect()
-}
-
 /// An early exit's report, where it answered, against the full walk's:
 /// the same relation, the distance to 1e-12 of the pair's size, and the
 /// same features where the exits agree. Whether it answered.
