@@ -7,30 +7,21 @@
 
 mod common;
 
-use common::asset;
+use common::filmed;
 use std::process::Command;
 use std::time::{Duration, Instant};
-use surfacelab::input::Gesture;
 use surfacelab::input::camera::{CameraFeed, ChannelCamera, PixelFormat, RawFormat, encode};
-use surfacelab::input::images::{CameraImage, CameraKind, ImageSequence, Synthesizer, write_sequence};
-use surfacelab::pipeline::surface::Sensor;
+use surfacelab::input::images::{CameraImage, CameraKind};
 use surfacelab::pipeline::technique::TechniqueKind;
-use surfacelab::scene;
 use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
 
 /// The box's final position after `gesture` filmed by a `kind` camera:
 /// read from the PNG files, and streamed through the camera path.
 fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2, glam::Vec2, f32) {
-    let scene = scene::load(&asset("tasks/cases/one_box.toml")).expect("scene");
-    let g = Gesture::load(asset(&format!("assets/gestures/{gesture}.toml"))).expect("gesture");
+    let mut film = filmed::one_box(gesture, kind, 5);
+    let (scene, sensor, dt, files) = (&film.scene, &film.sensor, film.dt, &mut film.frames);
     let options = SessionOptions::default();
-    let sensor = Sensor::new(options.sensor_px.0, options.sensor_px.1, scene.table.width, scene.table.depth);
-    let dir = tempfile::tempdir().expect("dir");
-    let synth = Synthesizer::new(kind, &sensor, [640, 480], 5).expect("camera");
-    let dt = f64::from(scene.physics.dt);
-    write_sequence(&g, &sensor, &options.raster, dt, &synth, dir.path()).expect("frames");
-    let mut files = ImageSequence::open(dir.path(), &dir.path().join("calibration.toml")).expect("sequence");
 
     // Rows padded to a multiple of 64 bytes, as drivers align them.
     let row = 640 * pixel.bytes_per_pixel();
