@@ -228,8 +228,7 @@ fn cloth_under_a_flat_hand_stays_finite_for_ten_thousand_steps() {
 /// (Proxy) of its rest volume (`thresholds::SQUISHED_VOLUME_*`).
 #[test]
 fn a_squished_soft_block_keeps_its_volume() {
-    let scene = task("soft");
-    let g = gesture("squish");
+    let (scene, g) = (task("soft"), gesture("squish"));
     for kind in [TechniqueKind::PARTICLE, TechniqueKind::PROXY] {
         let mut s = session(&scene, kind);
         let rest_z = centre_z(&s);
@@ -336,8 +335,7 @@ fn a_flat_hand_stops_a_rolling_ball() {
 /// src/pipeline/technique/particle.rs).
 #[test]
 fn a_fingertip_sweeping_over_a_ball_never_launches_it_backwards() {
-    let scene = task("ball");
-    let g = gesture("ball_stop");
+    let (scene, g) = (task("ball"), gesture("ball_stop"));
     for kind in [TechniqueKind::PARTICLE, TechniqueKind::PROXY] {
         let mut s = session(&scene, kind);
         let start = s.world().object_pose(ObjectId::new(0)).position.x;
@@ -359,8 +357,7 @@ fn a_fingertip_sweeping_over_a_ball_never_launches_it_backwards() {
 /// Joint only grabs, so its tilt is reported).
 #[test]
 fn a_card_pressed_on_one_side_tilts() {
-    let scene = task("cards");
-    let g = gesture("card_tilt");
+    let (scene, g) = (task("cards"), gesture("card_tilt"));
     let white = scene.object_id("card_white").expect("card");
     for kind in [TechniqueKind::PARTICLE, TechniqueKind::PROXY, TechniqueKind::JOINT] {
         let mut s = session(&scene, kind);
@@ -410,8 +407,7 @@ fn a_ruler_pushes_the_blocks_into_line() {
 /// bit-identical particles, tear included.
 #[test]
 fn tearing_is_deterministic() {
-    let scene = task("tear");
-    let g = gesture("tear_two_hands");
+    let (scene, g) = (task("tear"), gesture("tear_two_hands"));
     let run = || {
         let s = replay(&scene, TechniqueKind::PROXY, &g, 0.0);
         assert!(s.world().soft_piece_masses(SoftId::new(0)).len() >= 2);
@@ -532,8 +528,7 @@ fn a_block_perched_on_the_slot_walls_is_not_in_the_slot() {
 /// (reported).
 #[test]
 fn a_joint_squeezes_the_jelly_into_the_slot() {
-    let scene = task("soft");
-    let g = gesture("squeeze_into_slot");
+    let (scene, g) = (task("soft"), gesture("squeeze_into_slot"));
     for kind in [TechniqueKind::JOINT, TechniqueKind::PARTICLE, TechniqueKind::PROXY] {
         let mut s = session(&scene, kind);
         let (_, rest) = s.world().soft_volume(SoftId::new(0));
