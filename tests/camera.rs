@@ -30,13 +30,13 @@ fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2
     let mut feed = CameraFeed::start(Box::new(camera), Some(files.calibration().clone())).expect("starts");
 
     let box_at = |s: &Session| s.world().object_pose(ObjectId::new(0)).position.truncate();
-    let mut read = Session::new(&scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
-    let mut streamed = Session::new(&scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
+    let mut read = Session::new(scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
+    let mut streamed = Session::new(scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
     let until = files.duration(dt) + 0.5;
     let mut sent = None;
     while read.time() + 0.5 * dt < until {
         let t = read.time();
-        read.step_image(files.image_at(t, dt, &sensor).expect("frame")).expect("step");
+        read.step_image(files.image_at(t, dt, sensor).expect("frame")).expect("step");
         // The camera delivers the frame due now, if it is a new one; the
         // step then runs at an instant after it arrived.
         let due = files.frames().at(t, dt);
@@ -49,7 +49,7 @@ fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2
             let deadline = Instant::now() + Duration::from_secs(10);
             loop {
                 let shown = feed.counts().0;
-                feed.image_at(Instant::now(), &sensor).expect("frame");
+                feed.image_at(Instant::now(), sensor).expect("frame");
                 if feed.counts().0 > shown {
                     break;
                 }
@@ -57,10 +57,10 @@ fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2
                 std::thread::sleep(Duration::from_micros(200));
             }
         }
-        streamed.step_image(feed.image_at(Instant::now(), &sensor).expect("frame")).expect("step");
+        streamed.step_image(feed.image_at(Instant::now(), sensor).expect("frame")).expect("step");
     }
     let (a, b) = (box_at(&read), box_at(&streamed));
-    let travel = (a - box_at(&Session::new(&scene, TechniqueKind::PARTICLE, options).expect("session"))).length();
+    let travel = (a - box_at(&Session::new(scene, TechniqueKind::PARTICLE, options).expect("session"))).length();
     (a, b, travel)
 }
 

@@ -25,12 +25,12 @@ fn paths(gesture: &str, kind: CameraKind, technique: TechniqueKind) -> (Vec<glam
     let until = frames.duration(dt) + SETTLE_S;
     let box_at = |s: &Session| s.world().object_pose(ObjectId::new(0)).position.truncate();
 
-    let mut seen = Session::new(&scene, technique, SessionOptions::default()).expect("session");
-    let mut filmed = Session::new(&scene, technique, SessionOptions::default()).expect("session");
+    let mut seen = Session::new(scene, technique, SessionOptions::default()).expect("session");
+    let mut filmed = Session::new(scene, technique, SessionOptions::default()).expect("session");
     let (mut a, mut b) = (Vec::new(), Vec::new());
     while seen.time() + 0.5 * dt < until {
         seen.step(&g.sample(seen.time())).expect("step");
-        let image = frames.image_at(filmed.time(), dt, &sensor).expect("frame");
+        let image = frames.image_at(filmed.time(), dt, sensor).expect("frame");
         filmed.step_image(image).expect("step");
         a.push(box_at(&seen));
         b.push(box_at(&filmed));

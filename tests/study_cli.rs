@@ -227,7 +227,7 @@ fn the_manners_ablation_runs_each_repertoire_and_tabulates_the_findings() {
     assert!(md.contains("| Proxy and Particle are faster than Joint for sorting | not tested | not tested |"), "{md}");
 
     // A restriction that could leave a participant idle is refused.
-    let o = run_cli_on("study --manners pinch --participants 1 --out", &scratch.path().join("never"));
+    let o = run_cli_on("study --manners pinch --participants 1 --out", scratch.path().join("never"));
     let t = text(&o);
     assert_eq!(o.status.code(), Some(2), "{t}");
     assert!(t.contains("--manners") && t.contains("`pinch` leaves no manner"), "{t}");
@@ -266,7 +266,7 @@ fn a_larger_study_keeps_its_memory_small() {
 #[test]
 fn a_long_study_into_a_log_prints_plain_progress_lines() {
     let scratch_out = tmp("plain-progress");
-    let o = run_cli_on("study --participants 18 --time-limit 10 --out", &scratch_out.path().join("run"));
+    let o = run_cli_on("study --participants 18 --time-limit 10 --out", scratch_out.path().join("run"));
     assert!(o.status.success(), "{}", text(&o));
     let err = String::from_utf8_lossy(&o.stderr);
     let line =
