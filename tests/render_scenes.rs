@@ -37,7 +37,7 @@ fn assert_golden(name: &str, img: &RgbaImage) {
         .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
 }
 
-/// Session `s` drawn at [`SIZE`] with `view`.
+/// `s` drawn at [`SIZE`] with `view`.
 fn rendered(gpu: &GpuContext, s: &Session, view: ViewOptions) -> RgbaImage {
     render::render_to_image(gpu, &draw_list(s, view), SIZE.0, SIZE.1).expect("render")
 }

@@ -12,7 +12,7 @@ use surfacelab::session::SessionOptions;
 pub struct Filmed {
     pub scene: Scene,
     pub gesture: Gesture,
-    /// The default session's contact sensor over the scene's table.
+    /// The contact sensor of the default options, over the scene's table.
     pub sensor: Sensor,
     /// The scene's step (s).
     pub dt: f64,
