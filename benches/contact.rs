@@ -23,7 +23,7 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use surfacelab::contact::{
     CachedBlock, CircleFit, ConvexPolygon, EntranceBlock, Relation, Vec2, brute_force_report, contact_report,
-    discretize_circle, log_log_slope,
+    discretize_circle, log_log_slope, random_ellipse,
 };
 
 const SIZES: [usize; 10] = [8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
@@ -54,23 +54,6 @@ const RANDOM_SIZES: [usize; 8] = [8, 16, 32, 64, 128, 256, 512, 1024];
 /// geometry decides a timing.
 const RANDOM_PAIRS: usize = 32;
 
-/// `n` random points, counter-clockwise, on an ellipse with random axes,
-/// turn and centre near `at`: a random convex polygon (no three collinear).
-fn random_points(rng: &mut ChaCha8Rng, n: usize, at: [f64; 2]) -> Vec<Vec2> {
-    let (ax, ay) = (rng.random_range(0.5..1.5), rng.random_range(0.5..1.5));
-    let turn: f64 = rng.random_range(0.0..std::f64::consts::TAU);
-    let mut angles: Vec<f64> = (0..n).map(|_| rng.random_range(0.0..std::f64::consts::TAU)).collect();
-    angles.sort_by(f64::total_cmp);
-    angles.dedup();
-    angles
-        .iter()
-        .map(|t| {
-            let (x, y) = (ax * t.cos(), ay * t.sin());
-            Vec2::new(at[0] + x * turn.cos() - y * turn.sin(), at[1] + x * turn.sin() + y * turn.cos())
-        })
-        .collect()
-}
-
 /// Random convex pairs of `n` vertices each: overlapping (centres 0.5
 /// apart) or separated (4 apart, beyond the largest axes), as raw points.
 fn random_pairs(n: usize, separated: bool) -> Vec<(Vec<Vec2>, Vec<Vec2>)> {
@@ -79,7 +62,10 @@ fn random_pairs(n: usize, separated: bool) -> Vec<(Vec<Vec2>, Vec<Vec2>)> {
     (0..RANDOM_PAIRS)
         .map(|_| {
             let dir: f64 = rng.random_range(0.0..std::f64::consts::TAU);
-            (random_points(&mut rng, n, [0.0, 0.0]), random_points(&mut rng, n, [d * dir.cos(), d * dir.sin()]))
+            (
+                random_ellipse(&mut rng, n, Vec2::ZERO),
+                random_ellipse(&mut rng, n, Vec2::new(d * dir.cos(), d * dir.sin())),
+            )
         })
         .collect()
 }

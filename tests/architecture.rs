@@ -126,17 +126,21 @@ fn engine_mentions(source: &str) -> Vec<String> {
         .collect()
 }
 
-fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
-    let Ok(entries) = fs::read_dir(dir) else { return };
-    let mut entries: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
-    entries.sort();
-    for path in entries {
-        if path.is_dir() {
-            rust_files(&path, out);
-        } else if path.extension().is_some_and(|e| e == "rs") {
-            out.push(path);
+/// Every `.rs` file under `dir`, in path order (none where it cannot be
+/// read).
+fn rust_files(dir: &Path) -> Vec<PathBuf> {
+    let (mut files, mut dirs) = (Vec::new(), vec![dir.to_path_buf()]);
+    while let Some(dir) = dirs.pop() {
+        for path in fs::read_dir(&dir).into_iter().flatten().filter_map(|e| e.ok().map(|e| e.path())) {
+            if path.is_dir() {
+                dirs.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                files.push(path);
+            }
         }
     }
+    files.sort();
+    files
 }
 
 fn root() -> &'static Path {
@@ -146,8 +150,7 @@ fn root() -> &'static Path {
 #[test]
 fn no_module_reads_a_layer_below_its_own() {
     let src = root().join("src");
-    let mut files = Vec::new();
-    rust_files(&src, &mut files);
+    let files = rust_files(&src);
     let mut found = Vec::new();
     for file in &files {
         let module = module_of(file, &src);
@@ -166,10 +169,8 @@ fn no_module_reads_a_layer_below_its_own() {
 
 #[test]
 fn only_the_world_names_the_physics_engine() {
-    let mut files = Vec::new();
-    for dir in ["src", "tests", "benches", "examples"] {
-        rust_files(&root().join(dir), &mut files);
-    }
+    let files: Vec<PathBuf> =
+        ["src", "tests", "benches", "examples"].iter().flat_map(|d| rust_files(&root().join(d))).collect();
     let home = root().join(ENGINE_HOME);
     let mut found = Vec::new();
     for file in files.iter().filter(|f| !f.starts_with(&home)) {

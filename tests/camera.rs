@@ -7,30 +7,21 @@
 
 mod common;
 
-use common::asset;
+use common::filmed;
 use std::process::Command;
 use std::time::{Duration, Instant};
-use surfacelab::input::Gesture;
 use surfacelab::input::camera::{CameraFeed, ChannelCamera, PixelFormat, RawFormat, encode};
-use surfacelab::input::images::{CameraImage, CameraKind, ImageSequence, Synthesizer, write_sequence};
-use surfacelab::pipeline::surface::Sensor;
+use surfacelab::input::images::{CameraImage, CameraKind};
 use surfacelab::pipeline::technique::TechniqueKind;
-use surfacelab::scene;
 use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
 
 /// The box's final position after `gesture` filmed by a `kind` camera:
 /// read from the PNG files, and streamed through the camera path.
 fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2, glam::Vec2, f32) {
-    let scene = scene::load(&asset("tasks/cases/one_box.toml")).expect("scene");
-    let g = Gesture::load(asset(&format!("assets/gestures/{gesture}.toml"))).expect("gesture");
+    let mut film = filmed::one_box(gesture, kind, 5);
+    let (scene, sensor, dt, files) = (&film.scene, &film.sensor, film.dt, &mut film.frames);
     let options = SessionOptions::default();
-    let sensor = Sensor::new(options.sensor_px.0, options.sensor_px.1, scene.table.width, scene.table.depth);
-    let dir = tempfile::tempdir().expect("dir");
-    let synth = Synthesizer::new(kind, &sensor, [640, 480], 5).expect("camera");
-    let dt = f64::from(scene.physics.dt);
-    write_sequence(&g, &sensor, &options.raster, dt, &synth, dir.path()).expect("frames");
-    let mut files = ImageSequence::open(dir.path(), &dir.path().join("calibration.toml")).expect("sequence");
 
     // Rows padded to a multiple of 64 bytes, as drivers align them.
     let row = 640 * pixel.bytes_per_pixel();
@@ -39,13 +30,13 @@ fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2
     let mut feed = CameraFeed::start(Box::new(camera), Some(files.calibration().clone())).expect("starts");
 
     let box_at = |s: &Session| s.world().object_pose(ObjectId::new(0)).position.truncate();
-    let mut read = Session::new(&scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
-    let mut streamed = Session::new(&scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
+    let mut read = Session::new(scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
+    let mut streamed = Session::new(scene, TechniqueKind::PARTICLE, SessionOptions::default()).expect("session");
     let until = files.duration(dt) + 0.5;
     let mut sent = None;
     while read.time() + 0.5 * dt < until {
         let t = read.time();
-        read.step_image(files.image_at(t, dt, &sensor).expect("frame")).expect("step");
+        read.step_image(files.image_at(t, dt, sensor).expect("frame")).expect("step");
         // The camera delivers the frame due now, if it is a new one; the
         // step then runs at an instant after it arrived.
         let due = files.frames().at(t, dt);
@@ -58,7 +49,7 @@ fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2
             let deadline = Instant::now() + Duration::from_secs(10);
             loop {
                 let shown = feed.counts().0;
-                feed.image_at(Instant::now(), &sensor).expect("frame");
+                feed.image_at(Instant::now(), sensor).expect("frame");
                 if feed.counts().0 > shown {
                     break;
                 }
@@ -66,10 +57,10 @@ fn both_ways(gesture: &str, kind: CameraKind, pixel: PixelFormat) -> (glam::Vec2
                 std::thread::sleep(Duration::from_micros(200));
             }
         }
-        streamed.step_image(feed.image_at(Instant::now(), &sensor).expect("frame")).expect("step");
+        streamed.step_image(feed.image_at(Instant::now(), sensor).expect("frame")).expect("step");
     }
     let (a, b) = (box_at(&read), box_at(&streamed));
-    let travel = (a - box_at(&Session::new(&scene, TechniqueKind::PARTICLE, options).expect("session"))).length();
+    let travel = (a - box_at(&Session::new(scene, TechniqueKind::PARTICLE, options).expect("session"))).length();
     (a, b, travel)
 }
 

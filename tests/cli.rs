@@ -2,32 +2,26 @@
 
 mod common;
 
-use common::{bin, refused, text, thresholds, tmp};
+use common::{bin, cli, cli_text, refused, replayed_study, run_cli, run_cli_on, text, thresholds, tmp};
 use std::path::Path;
-use std::process::{Command, Stdio};
+use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
+
+/// The JSON report of `surfacelab LINE --report FILE`, the run having
+/// succeeded.
+fn report_of(line: &str) -> serde_json::Value {
+    let scratch = tmp("report");
+    let report = scratch.path().join("r.json");
+    let o = run_cli_on(&format!("{line} --report"), &report);
+    assert!(o.status.success(), "{}", text(&o));
+    serde_json::from_str(&std::fs::read_to_string(&report).expect("report")).expect("json")
+}
 
 #[test]
 fn run_writes_the_documented_report() {
-    let scratch_dir = tmp("run");
-    let dir = scratch_dir.path().to_path_buf();
-    let report = dir.join("r.json");
-    let o = bin()
-        .args([
-            "run",
-            "--task",
-            "tasks/cases/one_box.toml",
-            "--technique",
-            "proxy",
-            "--gesture",
-            "assets/gestures/fingertip_drag.toml",
-            "--report",
-        ])
-        .arg(&report)
-        .output()
-        .expect("runs");
-    assert!(o.status.success(), "{}", text(&o));
-    let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&report).expect("report")).expect("json");
+    let r = report_of(
+        "run --task tasks/cases/one_box.toml --technique proxy --gesture assets/gestures/fingertip_drag.toml",
+    );
     for key in
         ["steps", "wall_time_s", "objects", "max_speed", "max_penetration", "nan_count", "completion", "stage_means_us"]
     {
@@ -56,17 +50,7 @@ fn run_writes_the_documented_report() {
 /// pieces with its goal met, the rigid scene with none.
 #[test]
 fn run_reports_the_state_of_soft_bodies() {
-    let scratch_dir = tmp("soft_report");
-    let dir = scratch_dir.path().to_path_buf();
-    let report = dir.join("tear.json");
-    let o = bin()
-        .args(["run", "--task", "tear", "--technique", "particle", "--gesture", "assets/gestures/tear_two_hands.toml"])
-        .arg("--report")
-        .arg(&report)
-        .output()
-        .expect("runs");
-    assert!(o.status.success(), "{}", text(&o));
-    let r: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&report).expect("report")).expect("json");
+    let r = report_of("run --task tear --technique particle --gesture assets/gestures/tear_two_hands.toml");
     let paper = &r["soft_bodies"][0];
     assert_eq!(paper["name"], "paper", "{r}");
     assert_eq!(paper["kind"], "cloth");
@@ -81,22 +65,11 @@ fn run_reports_the_state_of_soft_bodies() {
 /// the paper, and each trial's completion lands in `trials.csv`.
 #[test]
 fn study_replays_the_soft_scenes_and_times_them() {
-    let scratch_dir = tmp("soft_study");
-    let dir = scratch_dir.path().to_path_buf();
-    let gestures = dir.join("gestures");
-    std::fs::create_dir_all(&gestures).expect("dir");
-    for (task, gesture) in [("cloth", "flatten"), ("tear", "tear_two_hands")] {
-        std::fs::copy(format!("assets/gestures/{gesture}.toml"), gestures.join(format!("{task}.toml"))).expect("copy");
-    }
-    let out = dir.join("run");
-    let o = bin()
-        .args(["study", "--tasks", "cloth,tear", "--techniques", "particle,proxy", "--participants", "1"])
-        .args(["--reps", "1", "--no-practice", "--no-progress", "--replay"])
-        .arg(&gestures)
-        .arg("--out")
-        .arg(&out)
-        .output()
-        .expect("runs");
+    let dir = tmp("soft_study");
+    let tasks = [("cloth", "flatten"), ("tear", "tear_two_hands")];
+    let line =
+        "study --tasks cloth,tear --techniques particle,proxy --participants 1 --reps 1 --no-practice --no-progress";
+    let (out, o) = replayed_study(dir.path(), &tasks, line);
     assert!(o.status.success(), "{}", text(&o));
     let csv = std::fs::read_to_string(out.join("trials.csv")).expect("trials.csv");
     let rows: Vec<Vec<&str>> = csv.lines().skip(1).map(|l| l.split(',').collect()).collect();
@@ -114,7 +87,7 @@ fn study_replays_the_soft_scenes_and_times_them() {
 fn tradeoff_errors_grow_as_each_knob_saves_time() {
     let scratch_out = tmp("tradeoff");
     let out = scratch_out.path().to_path_buf();
-    let o = bin().args(["tradeoff", "--quick", "--out"]).arg(&out).output().expect("runs");
+    let o = run_cli_on("tradeoff --quick --out", &out);
     assert!(o.status.success(), "{}", text(&o));
     let csv = std::fs::read_to_string(out.join("tradeoff.csv")).expect("tradeoff.csv");
     let errors = |knob: &str| -> Vec<f64> {
@@ -167,27 +140,17 @@ fn bad_inputs_exit_2_and_name_the_file_and_field() {
     let scratch_dir = tmp("bad");
     let dir = scratch_dir.path().to_path_buf();
     let scene = dir.join("broken.toml");
-    std::fs::write(&scene, "name = \"x\"\neffects = [\"gravity\"]\n[table]\nsize = [1.0, 0.75]\n[[objects]]\nname = \"a\"\nshape = \"box\"\nsize = [0.1, 0.1, 0.1]\nmass = -1.0\ncolor = \"red\"\nposition = [0.0, 0.0]\n").expect("write");
-    let o = bin()
-        .args(["run", "--technique", "joint", "--gesture", "assets/gestures/flick.toml", "--task"])
-        .arg(&scene)
-        .output()
-        .expect("runs");
+    std::fs::write(&scene, include_str!("scenes/box_and_ball.toml").replace("mass = 1.0", "mass = -1.0"))
+        .expect("write");
+    let o = run_cli_on("run --technique joint --gesture assets/gestures/flick.toml --task", &scene);
     refused(&o, &["broken.toml", "objects[0].mass"]);
 
     let gesture = dir.join("g.toml");
     std::fs::write(&gesture, "format = \"surfacelab-gesture\"\nversion = 1\n[[hands]]\nid = 1\nkind = \"tentacle\"\n[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\n").expect("write");
-    let o = bin()
-        .args(["run", "--task", "positioning", "--technique", "joint", "--gesture"])
-        .arg(&gesture)
-        .output()
-        .expect("runs");
+    let o = run_cli_on("run --task positioning --technique joint --gesture", &gesture);
     refused(&o, &["g.toml", "tentacle"]);
 
-    let o = bin()
-        .args(["run", "--task", "positioning", "--technique", "telekinesis", "--gesture", "x"])
-        .output()
-        .expect("runs");
+    let o = run_cli("run --task positioning --technique telekinesis --gesture x");
     refused(&o, &[]);
 
     let mut child = bin()
@@ -206,13 +169,17 @@ fn bad_inputs_exit_2_and_name_the_file_and_field() {
     refused(&o, &["polygon `a`"]);
 }
 
+/// `surfacelab LINE FILE` run to its end, FILE holding the contact query `query`.
+fn contact_query(line: &str, query: &str) -> Output {
+    let scratch = tmp("contact");
+    let f = scratch.path().join("q.json");
+    std::fs::write(&f, query).expect("write");
+    run_cli_on(line, &f)
+}
+
 #[test]
 fn contact_answers_one_line_of_json() {
-    let scratch_dir = tmp("contact");
-    let dir = scratch_dir.path().to_path_buf();
-    let f = dir.join("q.json");
-    std::fs::write(&f, r#"{"a": [[0,0],[1,0],[1,1],[0,1]], "b": [[0.5,0.5],[2,0.5],[2,2],[0.5,2]]}"#).expect("write");
-    let o = bin().arg("contact").arg(&f).output().expect("runs");
+    let o = contact_query("contact", r#"{"a": [[0,0],[1,0],[1,1],[0,1]], "b": [[0.5,0.5],[2,0.5],[2,2],[0.5,2]]}"#);
     assert!(o.status.success(), "{}", text(&o));
     let out = String::from_utf8_lossy(&o.stdout);
     assert_eq!(out.trim().lines().count(), 1);
@@ -231,51 +198,27 @@ fn contact_refuses_a_concave_polygon_over_the_decomposition_limit() {
             [r * t.cos(), r * t.sin()]
         })
         .collect();
-    let scratch_dir = tmp("contact-concave");
-    let dir = scratch_dir.path().to_path_buf();
-    let f = dir.join("q.json");
     let q = serde_json::json!({"a": [[0.5, 0.5], [0.7, 0.5], [0.7, 0.7], [0.5, 0.7]], "b": star});
-    std::fs::write(&f, q.to_string()).expect("write");
-    let o = bin().args(["contact", "--concave"]).arg(&f).output().expect("runs");
+    let o = contact_query("contact --concave", &q.to_string());
     refused(&o, &["polygon `b`: is concave with 8000 vertices"]);
 }
 
 #[test]
 fn screenshot_writes_a_png_headless() {
-    let scratch_dir = tmp("shot");
-    let dir = scratch_dir.path().to_path_buf();
-    let png = dir.join("s.png");
-    let o = bin()
-        .args(["screenshot", "--task", "steering", "--technique", "proxy", "--feedback", "--size", "320x240", "--out"])
-        .arg(&png)
-        .output()
-        .expect("runs");
+    let scratch = tmp("shot");
+    let png = scratch.path().join("s.png");
+    let o = run_cli_on("screenshot --task steering --technique proxy --feedback --size 320x240 --out", &png);
     assert!(o.status.success(), "needs a GPU adapter (apt-get install mesa-vulkan-drivers libvulkan1): {}", text(&o));
     let img = image::open(&png).expect("png").to_rgba8();
     assert_eq!(img.dimensions(), (320, 240));
-    let o = bin().args(["screenshot", "--size", "big", "--out"]).arg(&png).output().expect("runs");
+    let o = run_cli_on("screenshot --size big --out", &png);
     refused(&o, &[]);
 }
 
 fn study_args(out: &Path) -> Command {
-    let mut c = bin();
-    c.args([
-        "study",
-        "--participants",
-        "2",
-        "--reps",
-        "1",
-        "--no-practice",
-        "--tasks",
-        "steering",
-        "--no-progress",
-        "--jobs",
-        "1",
-        "--seed",
-        "7",
-        "--out",
-    ])
-    .arg(out);
+    let mut c =
+        cli("study --participants 2 --reps 1 --no-practice --tasks steering --no-progress --jobs 1 --seed 7 --out");
+    c.arg(out);
     c
 }
 
@@ -305,7 +248,7 @@ fn a_study_killed_with_sigkill_resumes_to_the_same_trials() {
     let _ = child.wait();
     let partial = std::fs::read_to_string(run.join("trials.csv")).unwrap_or_default();
     assert!(partial.lines().count() < expected.lines().count(), "the kill came too late to test anything");
-    let o = bin().args(["study", "--no-progress", "--resume"]).arg(&run).output().expect("runs");
+    let o = run_cli_on("study --no-progress --resume", &run);
     assert!(o.status.success(), "{}", text(&o));
     assert_eq!(
         std::fs::read_to_string(run.join("trials.csv")).expect("trials"),
@@ -322,25 +265,10 @@ fn study_frames_writes_every_frame_of_every_trial() {
     let scratch_dir = tmp("frames");
     let dir = scratch_dir.path().to_path_buf();
     let out = dir.join("run");
-    let o = bin()
-        .args([
-            "study",
-            "--participants",
-            "1",
-            "--reps",
-            "1",
-            "--no-practice",
-            "--tasks",
-            "steering",
-            "--techniques",
-            "joint",
-            "--no-progress",
-            "--frames",
-            "--out",
-        ])
-        .arg(&out)
-        .output()
-        .expect("runs");
+    let o = run_cli_on(
+        "study --participants 1 --reps 1 --no-practice --tasks steering --techniques joint --no-progress --frames --out",
+        &out,
+    );
     assert!(o.status.success(), "{}", text(&o));
     let trials = std::fs::read_to_string(out.join("trials.csv")).expect("trials");
     for (k, row) in trials.lines().skip(1).enumerate() {
@@ -358,19 +286,14 @@ fn study_frames_writes_every_frame_of_every_trial() {
 fn behaviours_prints_the_table_and_checks_it() {
     // One case under one technique: the markdown header, its row, and the
     // measured lift (Joint's prisms never lift the ball: under 5 mm).
-    let o = bin()
-        .args(["behaviours", "--case", "flat_hand_beside_ball", "--techniques", "joint", "--check"])
-        .output()
-        .expect("runs");
-    let out = text(&o);
-    assert!(o.status.success(), "{out}");
+    let out = cli_text("behaviours --case flat_hand_beside_ball --techniques joint --check");
     assert!(out.contains("| behaviour | measure | works when | joint |"), "{out}");
     let row = out.lines().find(|l| l.starts_with("| flat_hand_beside_ball | max lift (mm)")).expect("the case's row");
     let cell = row.split('|').nth(4).expect("joint cell").trim();
     let lift: f32 = cell.split_whitespace().next().expect("value").parse().expect("a number");
     assert!(lift <= 5.0 && cell.ends_with("ok"), "{row}");
     // An unknown case is bad input.
-    let o = bin().args(["behaviours", "--case", "no_such_case"]).output().expect("runs");
+    let o = run_cli("behaviours --case no_such_case");
     refused(&o, &["--case"]);
 }
 
@@ -472,42 +395,24 @@ fn inputs_past_a_bound_exit_2_instead_of_hanging_or_aborting() {
     };
     let o = run(&["--settle", "1e30"]);
     refused(&o, &["--settle", "0..=600"]);
-    let o = bin()
-        .args(["screenshot", "--gesture", "assets/gestures/flick.toml", "--at", "1e30", "--out"])
-        .arg(dir.join("x.png"))
-        .output()
-        .expect("runs");
+    let o = run_cli_on("screenshot --gesture assets/gestures/flick.toml --at 1e30 --out", dir.join("x.png"));
     refused(&o, &["--at", "0..=600"]);
-    let o = bin()
-        .args(["study", "--no-progress", "--time-limit", "1e9", "--out"])
-        .arg(dir.join("never"))
-        .output()
-        .expect("runs");
+    let o = run_cli_on("study --no-progress --time-limit 1e9 --out", dir.join("never"));
     refused(&o, &["--time-limit"]);
 
     // A gesture key a billion seconds in, and a file that never ends.
     let g = dir.join("late.toml");
     std::fs::write(&g, "format = \"surfacelab-gesture\"\nversion = 1\n[[hands]]\nid = 1\nkind = \"fist\"\n[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\n[[hands.keys]]\nt = 1e9\n").expect("write");
-    let o = bin()
-        .args(["run", "--task", "positioning", "--technique", "joint", "--gesture"])
-        .arg(&g)
-        .output()
-        .expect("runs");
+    let o = run_cli_on("run --task positioning --technique joint --gesture", &g);
     refused(&o, &["late.toml:10", "hands[0].keys[1].t", "0..=600"]);
-    let o = bin()
-        .args(["run", "--task", "positioning", "--technique", "joint", "--gesture", "/dev/urandom"])
-        .output()
-        .expect("runs");
+    let o = run_cli("run --task positioning --technique joint --gesture /dev/urandom");
     refused(&o, &["/dev/urandom", "64 MiB"]);
 
     // A cylinder of 1e30 m reached parry and panicked in epa3.rs.
     let scene = dir.join("huge.toml");
-    std::fs::write(&scene, "name = \"x\"\neffects = [\"gravity\"]\n[table]\nsize = [1.0, 0.75]\n[[objects]]\nname = \"a\"\nshape = \"cylinder\"\nradius = 1e30\nheight = 0.1\nmass = 1.0\ncolor = \"red\"\nposition = [0.0, 0.0]\n").expect("write");
-    let o = bin()
-        .args(["run", "--technique", "joint", "--gesture", "assets/gestures/flick.toml", "--task"])
-        .arg(&scene)
-        .output()
-        .expect("runs");
+    let puck = include_str!("scenes/steering_puck.toml");
+    std::fs::write(&scene, puck.replace("radius = 0.025", "radius = 1e30")).expect("write");
+    let o = run_cli_on("run --technique joint --gesture assets/gestures/flick.toml --task", &scene);
     refused(&o, &["huge.toml:8: field `objects[0].radius`: 1e30 is out of range (0.001..=10)"]);
     assert!(!text(&o).contains("panicked"), "{}", text(&o));
 }
@@ -520,12 +425,10 @@ fn a_report_that_cannot_be_written_exits_1_and_leaves_the_folder_clean() {
     let scratch_dir = tmp("atomic");
     let dir = scratch_dir.path().to_path_buf();
     let run = |report: &Path| {
-        bin()
-            .args(["run", "--task", "cases/one_box", "--technique", "joint", "--gesture", "assets/gestures/flick.toml"])
-            .args(["--settle", "0", "--report"])
-            .arg(report)
-            .output()
-            .expect("runs")
+        run_cli_on(
+            "run --task cases/one_box --technique joint --gesture assets/gestures/flick.toml --settle 0 --report",
+            report,
+        )
     };
     let report = dir.join("r.json");
     let o = run(&report);
@@ -551,9 +454,7 @@ fn a_report_that_cannot_be_written_exits_1_and_leaves_the_folder_clean() {
 /// Every flag of `run --help` says what it does, `--feedback` included.
 #[test]
 fn run_help_describes_feedback() {
-    let out = bin().args(["run", "--help"]).output().expect("runs");
-    let help = text(&out);
-    assert!(out.status.success(), "{help}");
+    let help = cli_text("run --help");
     let lines: Vec<&str> = help.lines().collect();
     let at = lines.iter().position(|l| l.trim_start().starts_with("--feedback")).expect("a --feedback line");
     // The description follows on the same line, or on the next when clap wraps.
@@ -596,14 +497,12 @@ fn gestures_resolve_by_built_in_name_from_any_folder() {
 
 #[test]
 fn run_list_names_the_built_in_scenes_gestures_and_techniques() {
-    let o = bin().args(["run", "--list"]).output().expect("runs");
-    let t = text(&o);
-    assert!(o.status.success(), "{t}");
+    let t = cli_text("run --list");
     assert!(t.contains("scenes (--task): ball, cards, cloth, gather, positioning,"), "{t}");
     assert!(t.contains("cases/one_box") && t.contains("fingertip_drag") && t.contains("behaviours/NAME"), "{t}");
     assert!(t.contains("techniques (--technique): direct, joint, proxy, particle, hybrid"), "{t}");
     // --list stands alone.
-    let o = bin().args(["run", "--list", "--task", "positioning"]).output().expect("runs");
+    let o = run_cli("run --list --task positioning");
     refused(&o, &[]);
 }
 

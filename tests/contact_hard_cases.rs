@@ -32,6 +32,13 @@ fn answer(a: &ConvexPolygon, b: &ConvexPolygon) -> ContactReport {
     answer_at(a, b, Vec2::ZERO, 1.0)
 }
 
+/// [`answer`], asserted to be of `relation`.
+fn answer_is(a: &ConvexPolygon, b: &ConvexPolygon, relation: Relation) -> ContactReport {
+    let r = answer(a, b);
+    assert_eq!(r.relation, relation, "{r:?}");
+    r
+}
+
 fn sorted(features: &[Feature]) -> Vec<Feature> {
     let mut f = features.to_vec();
     f.sort_by_key(|x| format!("{x:?}"));
@@ -46,8 +53,7 @@ fn close(v: Vec2, x: f64, y: f64, eps: f64) -> bool {
 fn exactly_touching_edge_on_edge() {
     let a = rect(0.0, 0.0, 1.0, 1.0);
     let b = rect(1.0, 0.25, 3.0, 0.75);
-    let r = answer(&a, &b);
-    assert_eq!(r.relation, Relation::Touching);
+    let r = answer_is(&a, &b, Relation::Touching);
     assert_eq!(r.distance, 0.0);
     assert_eq!(r.exit, Vec2::ZERO);
     // B's left edge lies on A's right edge (A's vertices 1 → 2): its two
@@ -66,8 +72,7 @@ fn exactly_touching_edge_on_edge() {
 fn exactly_touching_vertex_on_edge() {
     let a = poly(&[[-1.0, -1.0], [1.0, -1.0], [0.0, 0.0]]);
     let b = rect(-2.0, 0.0, 2.0, 1.0);
-    let r = answer(&a, &b);
-    assert_eq!(r.relation, Relation::Touching);
+    let r = answer_is(&a, &b, Relation::Touching);
     assert_eq!(r.distance, 0.0);
     assert_eq!(r.features.as_slice(), &[Feature::AngleEdge { a_vertex: 2, b_edge: [0, 1] }]);
     assert_eq!(r.witness, [Vec2::ZERO, Vec2::ZERO]);
@@ -87,15 +92,13 @@ fn overlapping_parallel_edges_report_both_ends_of_the_overlap() {
         Feature::EdgeAngle { a_edge: [1, 2], b_vertex: 0 },
         Feature::AngleEdge { a_vertex: 2, b_edge: [3, 0] },
     ]);
-    let r = answer(&a, &b);
-    assert_eq!(r.relation, Relation::Touching);
+    let r = answer_is(&a, &b, Relation::Touching);
     assert_eq!(sorted(&r.features), ends);
     assert!(close(r.witness[1], 1.0, 0.75, 1e-15), "{r:?}");
 
     // Pushed 0.1 into each other: the shortest exit is straight back.
     let b = rect(0.9, 0.5, 2.0, 1.5);
-    let r = answer(&a, &b);
-    assert_eq!(r.relation, Relation::Intersecting);
+    let r = answer_is(&a, &b, Relation::Intersecting);
     assert!((r.distance + 0.1).abs() < 1e-15, "{r:?}");
     assert!(close(r.exit, -0.1, 0.0, 1e-15), "{r:?}");
     assert_eq!(sorted(&r.features), ends);
@@ -103,15 +106,13 @@ fn overlapping_parallel_edges_report_both_ends_of_the_overlap() {
 
 #[test]
 fn vertex_on_vertex() {
-    let r = answer(&rect(0.0, 0.0, 1.0, 1.0), &rect(1.0, 1.0, 2.0, 2.0));
-    assert_eq!(r.relation, Relation::Touching);
+    let r = answer_is(&rect(0.0, 0.0, 1.0, 1.0), &rect(1.0, 1.0, 2.0, 2.0), Relation::Touching);
     assert_eq!(r.features.as_slice(), &[Feature::AngleAngle { a_vertex: 2, b_vertex: 0 }]);
 
     let diamond = [[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]];
     let a = poly(&diamond);
     let b = poly(&diamond.map(|[x, y]| [x + 2.0, y]));
-    let r = answer(&a, &b);
-    assert_eq!(r.relation, Relation::Touching);
+    let r = answer_is(&a, &b, Relation::Touching);
     assert_eq!(r.features.as_slice(), &[Feature::AngleAngle { a_vertex: 0, b_vertex: 2 }]);
     assert_eq!(r.witness, [Vec2::new(1.0, 0.0), Vec2::new(1.0, 0.0)]);
 }
@@ -120,8 +121,7 @@ fn vertex_on_vertex() {
 fn deep_penetration() {
     let a = rect(0.1, 0.4, 0.3, 0.6);
     let b = rect(0.0, 0.0, 10.0, 10.0);
-    let r = answer(&a, &b);
-    assert_eq!(r.relation, Relation::Intersecting);
+    let r = answer_is(&a, &b, Relation::Intersecting);
     assert!((r.distance + 0.3).abs() < 1e-15, "{r:?}");
     assert!(close(r.exit, -0.3, 0.0, 1e-15), "{r:?}");
     let after = answer_at(&a, &b, r.exit, 1.0);
@@ -133,8 +133,7 @@ fn identical_polygons() {
     // A regular hexagon of circumradius 1 is √3 wide between opposite edges:
     // that is the shortest way out of itself.
     let hexagon = discretize_circle(Vec2::new(0.3, -0.2), 1.0, 6, CircleFit::Inscribed, 0.0).expect("hexagon");
-    let r = answer(&hexagon, &hexagon);
-    assert_eq!(r.relation, Relation::Intersecting);
+    let r = answer_is(&hexagon, &hexagon, Relation::Intersecting);
     assert!((r.distance + 3f64.sqrt()).abs() < 1e-12, "{r:?}");
     let after = answer_at(&hexagon, &hexagon, r.exit, 1.0);
     assert_eq!(after.relation, Relation::Touching, "{after:?}");
@@ -147,8 +146,7 @@ fn nested_polygons() {
     let small = rect(4.0, 4.0, 5.0, 6.0);
     let big = rect(0.0, 0.0, 10.0, 10.0);
     // Small inside big: out through the left side, 5 away.
-    let r = answer(&small, &big);
-    assert_eq!(r.relation, Relation::Intersecting);
+    let r = answer_is(&small, &big, Relation::Intersecting);
     assert_eq!(r.distance, -5.0);
     assert_eq!(r.exit, Vec2::new(-5.0, 0.0));
     // Big around small: big moves right by 5 to clear it.
@@ -209,8 +207,7 @@ fn triangle_against_a_4096_gon() {
     assert_eq!(circle.len(), 4096);
     let triangle = poly(&[[1.5, 0.0], [2.5, -0.5], [2.5, 0.5]]);
     // The apex faces the circle's vertex 0 at (1, 0).
-    let r = answer(&triangle, &circle);
-    assert_eq!(r.relation, Relation::Separated);
+    let r = answer_is(&triangle, &circle, Relation::Separated);
     assert!((r.distance - 0.5).abs() < 1e-12, "{r:?}");
     assert_eq!(r.features.as_slice(), &[Feature::AngleAngle { a_vertex: 0, b_vertex: 0 }]);
     // Pushed 0.6 left, the apex is 0.1 inside, between the two edges that
@@ -238,8 +235,7 @@ fn nearly_collinear_vertices() {
     // is 4.9e-9 from the bulge.
     let bulge = poly(&[[0.0, 0.0], [0.5, -1e-10], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
     assert_eq!(bulge.len(), 5);
-    let r = answer(&bulge, &rect(0.0, -2.0, 1.0, -5e-9));
-    assert_eq!(r.relation, Relation::Separated);
+    let r = answer_is(&bulge, &rect(0.0, -2.0, 1.0, -5e-9), Relation::Separated);
     assert!((r.distance - 4.9e-9).abs() < 1e-17, "{r:?}");
     assert_eq!(r.features.as_slice(), &[Feature::AngleEdge { a_vertex: 1, b_edge: [2, 3] }]);
 

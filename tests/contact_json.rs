@@ -73,30 +73,21 @@ fn bad_input_names_the_polygon_and_the_problem() {
         "polygon `b`: is missing (expected an array of [x, y] pairs)"
     );
     assert_eq!(err(r#"{"a": 3, "b": []}"#, false), "polygon `a`: must be an array of [x, y] pairs");
+    // A query of polygons `a` and `b`, and the unit triangle.
+    let q = |a: &str, b: &str| format!(r#"{{"a": {a}, "b": {b}}}"#);
+    let tri = "[[0,0],[1,0],[0,1]]";
     // (input, concave allowed, the message)
     for (input, concave, want) in [
+        (q("[[0,0],[1,0],[0,1,2]]", tri), false, "polygon `a`: vertex 2 is not an [x, y] pair of numbers"),
+        (q(tri, "[[0,0],[1,1],[2,2]]"), false, "polygon `b`: has zero area (its vertices lie on one line)"),
+        (q("[[0,0],[1,0],[0,0]]", tri), true, "polygon `a`: needs at least 3 distinct vertices, got 2"),
         (
-            r#"{"a": [[0,0],[1,0],[0,1,2]], "b": [[0,0],[1,0],[0,1]]}"#,
-            false,
-            "polygon `a`: vertex 2 is not an [x, y] pair of numbers",
-        ),
-        (
-            r#"{"a": [[0,0],[1,0],[0,1]], "b": [[0,0],[1,1],[2,2]]}"#,
-            false,
-            "polygon `b`: has zero area (its vertices lie on one line)",
-        ),
-        (
-            r#"{"a": [[0,0],[1,0],[0,0]], "b": [[0,0],[1,0],[0,1]]}"#,
-            true,
-            "polygon `a`: needs at least 3 distinct vertices, got 2",
-        ),
-        (
-            r#"{"a": [[0,0],[2,2],[2,0],[0,2]], "b": [[0,0],[1,0],[0,1]]}"#,
+            q("[[0,0],[2,2],[2,0],[0,2]]", tri),
             true,
             "polygon `a`: edges starting at vertices 0 and 2 cross (not a simple polygon)",
         ),
     ] {
-        assert_eq!(err(input, concave), want, "{input}");
+        assert_eq!(err(&input, concave), want, "{input}");
     }
     // Numbers beyond f64 are a JSON error, reported as such.
     assert!(

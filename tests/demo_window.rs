@@ -218,34 +218,7 @@ fn participant_mode_writes_study_rows_and_the_gestures_to_replay() {
     let dir = work_dir("demo_participant");
     std::fs::write(dir.join("sweep.toml"), SWEEP).expect("gesture file");
     // The box starts inside its region: each trial completes after the dwell.
-    std::fs::write(
-        dir.join("box.toml"),
-        r#"name = "box"
-description = "A box already in its region."
-hint = "Nothing to do: wait."
-effects = ["gravity", "friction"]
-time_limit_s = 20
-
-[table]
-size = [1.0, 0.75]
-
-[[objects]]
-name = "box"
-shape = "box"
-size = [0.06, 0.06, 0.04]
-mass = 0.15
-color = "orange"
-position = [0.3, 0.2]
-
-[goal]
-kind = "region"
-object = "box"
-min = [0.2, 0.1]
-max = [0.4, 0.3]
-dwell_s = 0.5
-"#,
-    )
-    .expect("scene file");
+    std::fs::write(dir.join("box.toml"), include_str!("scenes/box_in_region.toml")).expect("scene file");
     let script = format!(
         "'{BIN}' demo --participant 7 --condition proxy:on --task box.toml --reps 2 --trials-csv trials.csv \
          --script sweep.toml --out out --quit-after 60"

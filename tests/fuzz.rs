@@ -201,18 +201,7 @@ fn fuzz_scene_files() {
 }
 
 /// A version-2 gesture with a contour hand: points, holes, a held outline.
-const CONTOUR_GESTURE: &str = r#"format = "surfacelab-gesture"
-version = 2
-
-[[hands]]
-id = 7
-kind = "contour"
-keys = [
-  { t = 0.0, points = [[-0.1, -0.05], [0.0, -0.05], [0.0, 0.05], [-0.1, 0.05]], pressure = 0.9 },
-  { t = 0.5, points = [[0.0, -0.05], [0.1, -0.05], [0.1, 0.05], [0.0, 0.05]], holes = [[[0.04, -0.01], [0.06, -0.01], [0.05, 0.01]]] },
-  { t = 1.0, pressure = 0.5 },
-]
-"#;
+const CONTOUR_GESTURE: &str = include_str!("gestures/contour_held.toml");
 
 #[test]
 fn fuzz_gesture_files() {

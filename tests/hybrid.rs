@@ -66,8 +66,7 @@ fn grasp(task: &str, gesture: &str, kind: TechniqueKind) -> Grasp {
 
 #[test]
 fn two_flat_hands_closing_on_a_box_carry_it_with_hybrid() {
-    let task = "tasks/cases/small_box.toml";
-    let gesture = "assets/gestures/grasp_two_hands.toml";
+    let (task, gesture) = ("tasks/cases/small_box.toml", "assets/gestures/grasp_two_hands.toml");
     let h = grasp(task, gesture, TechniqueKind::HYBRID);
     assert_eq!(h.nan, 0);
     // The grasp threshold: at least 90% of the hands' travel.
@@ -94,8 +93,7 @@ fn is_grasp(g: &Grasp) -> bool {
 
 #[test]
 fn a_pinch_grasps_a_ball_with_hybrid_and_lets_it_go() {
-    let task = "tasks/cases/ball.toml";
-    let gesture = "assets/gestures/grasp_pinch.toml";
+    let (task, gesture) = ("tasks/cases/ball.toml", "assets/gestures/grasp_pinch.toml");
     let h = grasp(task, gesture, TechniqueKind::HYBRID);
     assert_eq!(h.nan, 0);
     assert!(

@@ -6,13 +6,10 @@
 
 mod common;
 
-use common::asset;
+use common::filmed;
 use common::thresholds::{self, Threshold};
-use surfacelab::input::Gesture;
-use surfacelab::input::images::{CameraKind, ImageSequence, Synthesizer, write_sequence};
-use surfacelab::pipeline::surface::Sensor;
+use surfacelab::input::images::CameraKind;
 use surfacelab::pipeline::technique::TechniqueKind;
-use surfacelab::scene;
 use surfacelab::scene::ObjectId;
 use surfacelab::session::{Session, SessionOptions};
 
@@ -21,26 +18,19 @@ const SETTLE_S: f64 = 0.5;
 /// The box's path, one position per step, under the gesture and under its
 /// filmed frames; the frames' folder is written with the synthetic camera.
 fn paths(gesture: &str, kind: CameraKind, technique: TechniqueKind) -> (Vec<glam::Vec2>, Vec<glam::Vec2>) {
-    let scene = scene::load(&asset("tasks/cases/one_box.toml")).expect("scene");
-    let g = Gesture::load(asset(&format!("assets/gestures/{gesture}.toml"))).expect("gesture");
-    let options = SessionOptions::default();
-    let sensor = Sensor::new(options.sensor_px.0, options.sensor_px.1, scene.table.width, scene.table.depth);
-    let dir = tempfile::tempdir().expect("dir");
-    let synth = Synthesizer::new(kind, &sensor, [640, 480], 11).expect("camera");
-    let dt = f64::from(scene.physics.dt);
-    let written = write_sequence(&g, &sensor, &options.raster, dt, &synth, dir.path()).expect("frames");
-    assert!(written.frames > 100, "{} frames", written.frames);
+    let mut film = filmed::one_box(gesture, kind, 11);
+    assert!(film.written > 100, "{} frames", film.written);
+    let (scene, g, sensor, dt, frames) = (&film.scene, &film.gesture, &film.sensor, film.dt, &mut film.frames);
 
-    let mut frames = ImageSequence::open(dir.path(), &dir.path().join("calibration.toml")).expect("sequence");
     let until = frames.duration(dt) + SETTLE_S;
     let box_at = |s: &Session| s.world().object_pose(ObjectId::new(0)).position.truncate();
 
-    let mut seen = Session::new(&scene, technique, SessionOptions::default()).expect("session");
-    let mut filmed = Session::new(&scene, technique, SessionOptions::default()).expect("session");
+    let mut seen = Session::new(scene, technique, SessionOptions::default()).expect("session");
+    let mut filmed = Session::new(scene, technique, SessionOptions::default()).expect("session");
     let (mut a, mut b) = (Vec::new(), Vec::new());
     while seen.time() + 0.5 * dt < until {
         seen.step(&g.sample(seen.time())).expect("step");
-        let image = frames.image_at(filmed.time(), dt, &sensor).expect("frame");
+        let image = frames.image_at(filmed.time(), dt, sensor).expect("frame");
         filmed.step_image(image).expect("step");
         a.push(box_at(&seen));
         b.push(box_at(&filmed));

@@ -3,23 +3,24 @@
 
 mod common;
 
-use common::{bin, refused, text};
-use std::path::Path;
+use common::{bin, cli, refused, run_cli, text};
+use std::path::{Path, PathBuf};
 use std::process::Output;
 
-fn synth(dir: &Path, kind: &str) {
-    let o = bin()
-        .args(["synth-images", "--task", "tasks/cases/one_box.toml", "--gesture", "assets/gestures/edge_push.toml"])
-        .args(["--kind", kind, "--out"])
-        .arg(dir)
-        .output()
-        .expect("runs");
+/// A scratch folder (removed when dropped) and, in it, the frames of the
+/// edge push over the one-box case filmed by a synthetic `kind` camera
+/// (`ir` or `depth`), in a folder named after the kind.
+fn synthesized(kind: &str) -> (tempfile::TempDir, PathBuf) {
+    let tmp = tempfile::tempdir().expect("dir");
+    let frames = tmp.path().join(kind);
+    let line = "synth-images --task tasks/cases/one_box.toml --gesture assets/gestures/edge_push.toml --kind";
+    let o = cli(line).args([kind, "--out"]).arg(&frames).output().expect("runs");
     assert!(o.status.success(), "{}", text(&o));
+    (tmp, frames)
 }
 
 fn run_images(dir: &Path, calibration: &Path, report: &Path) -> Output {
-    bin()
-        .args(["run", "--task", "tasks/cases/one_box.toml", "--technique", "joint", "--images"])
+    cli("run --task tasks/cases/one_box.toml --technique joint --images")
         .arg(dir)
         .arg("--calibration")
         .arg(calibration)
@@ -38,9 +39,7 @@ fn box_y(report: &Path) -> f64 {
 /// library test, tests/images.rs, bounds the gap to the gesture at 10%).
 #[test]
 fn synthesized_frames_run_and_push_the_box() {
-    let tmp = tempfile::tempdir().expect("dir");
-    let frames = tmp.path().join("depth");
-    synth(&frames, "depth");
+    let (tmp, frames) = synthesized("depth");
     let n = std::fs::read_dir(&frames)
         .expect("dir")
         .filter(|e| e.as_ref().is_ok_and(|e| e.file_name().to_string_lossy().starts_with("frame_")));
@@ -56,9 +55,7 @@ fn synthesized_frames_run_and_push_the_box() {
 /// same frames then move the box to the same place.
 #[test]
 fn calibrate_writes_a_file_run_reads() {
-    let tmp = tempfile::tempdir().expect("dir");
-    let frames = tmp.path().join("ir");
-    synth(&frames, "ir");
+    let (tmp, frames) = synthesized("ir");
     let out = frames.join("mine.toml");
     let o = bin()
         .args(["calibrate", "--images"])
@@ -98,9 +95,7 @@ fn calibrate_writes_a_file_run_reads() {
 /// Bad frames and bad calibrations exit 2 naming the file; nothing is written.
 #[test]
 fn bad_frames_are_named_and_exit_2() {
-    let tmp = tempfile::tempdir().expect("dir");
-    let frames = tmp.path().join("ir");
-    synth(&frames, "ir");
+    let (tmp, frames) = synthesized("ir");
     let calibration = frames.join("calibration.toml");
     let report = tmp.path().join("r.json");
     let expect_2 = |dir: &Path, cal: &Path, want: &str| {
@@ -153,17 +148,14 @@ fn bad_frames_are_named_and_exit_2() {
 
 #[test]
 fn gesture_and_images_are_one_choice() {
-    let both = bin()
-        .args(["run", "--task", "one_box", "--technique", "joint", "--gesture", "assets/gestures/edge_push.toml"])
-        .args(["--images", "x", "--calibration", "c.toml"])
-        .output()
-        .expect("runs");
+    let both = run_cli(
+        "run --task one_box --technique joint --gesture assets/gestures/edge_push.toml --images x --calibration c.toml",
+    );
     assert_eq!(both.status.code(), Some(2), "{}", text(&both));
     assert!(text(&both).contains("cannot be used with"), "{}", text(&both));
-    let neither = bin().args(["run", "--task", "one_box", "--technique", "joint"]).output().expect("runs");
+    let neither = run_cli("run --task one_box --technique joint");
     assert_eq!(neither.status.code(), Some(2), "{}", text(&neither));
-    let no_calibration =
-        bin().args(["run", "--task", "one_box", "--technique", "joint", "--images", "x"]).output().expect("runs");
+    let no_calibration = run_cli("run --task one_box --technique joint --images x");
     assert_eq!(no_calibration.status.code(), Some(2), "{}", text(&no_calibration));
     assert!(text(&no_calibration).contains("--calibration"), "{}", text(&no_calibration));
 }

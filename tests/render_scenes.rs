@@ -9,6 +9,7 @@
 mod common;
 
 use common::{asset, gestures};
+use image::RgbaImage;
 use surfacelab::app::{ViewOptions, draw_list};
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::TechniqueKind;
@@ -29,8 +30,16 @@ fn gpu() -> GpuContext {
         .unwrap_or_else(|e| panic!("these tests need a GPU adapter: {}", surfacelab::error::chain(&e)))
 }
 
-fn snapshots() -> SnapshotDir {
+/// `img` matches golden image `name` in `tests/snapshots/`.
+fn assert_golden(name: &str, img: &RgbaImage) {
     SnapshotDir::new(asset("tests/snapshots"))
+        .check(name, img, TOLERANCE)
+        .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
+}
+
+/// `s` drawn at [`SIZE`] with `view`.
+fn rendered(gpu: &GpuContext, s: &Session, view: ViewOptions) -> RgbaImage {
+    render::render_to_image(gpu, &draw_list(s, view), SIZE.0, SIZE.1).expect("render")
 }
 
 /// A fingertip landing on the sorting scene's big red box (5 cm tall, so
@@ -66,11 +75,8 @@ fn each_task_scene_matches_its_golden_image() {
     let gpu = gpu();
     for task in ["positioning", "sorting", "steering"] {
         let s = session_at(&format!("tasks/{task}.toml"), TechniqueKind::PROXY, None, 0.25);
-        let img =
-            render::render_to_image(&gpu, &draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1).expect("render");
-        snapshots()
-            .check(&format!("task_{task}"), &img, TOLERANCE)
-            .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
+        let img = rendered(&gpu, &s, ViewOptions::default());
+        assert_golden(&format!("task_{task}"), &img);
     }
 }
 
@@ -80,13 +86,7 @@ fn feedback_on_and_off_differ_exactly_by_red_feedback_for_every_technique() {
     for kind in TechniqueKind::BUILT_IN {
         // Mid-gesture: a fingertip dragging a box.
         let s = session_at("tasks/sorting.toml", kind, Some(&drag_red_box()), 0.6);
-        let off = render::render_to_image(
-            &gpu,
-            &draw_list(&s, ViewOptions { feedback: false, contact_overlay: false }),
-            SIZE.0,
-            SIZE.1,
-        )
-        .expect("render");
+        let off = rendered(&gpu, &s, ViewOptions { feedback: false, contact_overlay: false });
         let on_list = draw_list(&s, ViewOptions { feedback: true, contact_overlay: false });
         assert!(
             !on_list.feedback.is_empty() || kind == TechniqueKind::DIRECT,
@@ -108,9 +108,7 @@ fn feedback_on_and_off_differ_exactly_by_red_feedback_for_every_technique() {
             assert!(differing > 20, "{kind}: feedback changed only {differing} pixels");
             assert!(red * 100 >= differing * 90, "{kind}: {red} of {differing} changed pixels are red");
         }
-        snapshots()
-            .check(&format!("feedback_{kind}"), &on, TOLERANCE)
-            .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
+        assert_golden(&format!("feedback_{kind}"), &on);
     }
 }
 
@@ -119,14 +117,8 @@ fn the_contact_overlay_shadows_where_the_hands_are() {
     let gpu = gpu();
     let s =
         session_at("tasks/sorting.toml", TechniqueKind::PARTICLE, Some("assets/gestures/flat_hand_sweep.toml"), 0.5);
-    let plain = render::render_to_image(&gpu, &draw_list(&s, ViewOptions::default()), SIZE.0, SIZE.1).expect("render");
-    let shadow = render::render_to_image(
-        &gpu,
-        &draw_list(&s, ViewOptions { feedback: false, contact_overlay: true }),
-        SIZE.0,
-        SIZE.1,
-    )
-    .expect("render");
+    let plain = rendered(&gpu, &s, ViewOptions::default());
+    let shadow = rendered(&gpu, &s, ViewOptions { feedback: false, contact_overlay: true });
     // Darker where the surface senses a hand, unchanged elsewhere.
     let img = s.image();
     let mut darker = 0;
@@ -145,9 +137,7 @@ fn the_contact_overlay_shadows_where_the_hands_are() {
         }
     }
     assert!(sensed > 100 && darker * 100 >= sensed * 60, "{darker} of {sensed} sensed pixels darker");
-    snapshots()
-        .check("contact_overlay", &shadow, TOLERANCE)
-        .unwrap_or_else(|e| panic!("{}", surfacelab::error::chain(&e)));
+    assert_golden("contact_overlay", &shadow);
 }
 
 /// The hands are on the glass, so a fingertip pressing on a box is drawn
@@ -157,15 +147,7 @@ fn a_fingertip_on_a_box_is_drawn_over_the_box() {
     let gpu = gpu();
     let s =
         session_at("tasks/cases/one_box.toml", TechniqueKind::JOINT, Some("assets/gestures/fingertip_drag.toml"), 0.5);
-    let draw = |overlay: bool| {
-        render::render_to_image(
-            &gpu,
-            &draw_list(&s, ViewOptions { feedback: false, contact_overlay: overlay }),
-            SIZE.0,
-            SIZE.1,
-        )
-        .expect("render")
-    };
+    let draw = |overlay: bool| rendered(&gpu, &s, ViewOptions { feedback: false, contact_overlay: overlay });
     let (plain, shadow) = (draw(false), draw(true));
     let img = s.image();
     let lum = |v: &image::Rgba<u8>| u32::from(v.0[0]) + u32::from(v.0[1]) + u32::from(v.0[2]);

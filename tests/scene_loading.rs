@@ -52,31 +52,8 @@ fn loading_by_path_works_too() {
     assert_eq!(scene::load(path).expect("by path").name, "sorting");
 }
 
-const GOOD: &str = r#"
-name = "t"
-effects = ["gravity"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "a"
-shape = "box"
-size = [0.1, 0.1, 0.1]
-mass = 1.0
-color = "red"
-position = [0.0, 0.0]
-[goal]
-kind = "positioning"
-[[goal.targets]]
-object = "a"
-position = [0.2, 0.1]
-"#;
-
-fn bad(text: &str) -> String {
-    match scene::parse(text, "bad.toml") {
-        Ok(_) => panic!("should not load:\n{text}"),
-        Err(e) => e.to_string(),
-    }
-}
+/// A positioning scene that loads (shared with `tests/scene_validation.rs`).
+const GOOD: &str = include_str!("scenes/box_and_ball.toml");
 
 #[test]
 fn the_good_template_loads() {
@@ -84,51 +61,34 @@ fn the_good_template_loads() {
     assert_eq!(s.objects[0].position.z, 0.05, "an [x, y] position rests on the table");
 }
 
+/// Each class of bad input, made by replacing one line of [`GOOD`]: the
+/// message starts with the file (and the line, where given) and names every
+/// one of the needles.
 #[test]
-fn unknown_shape_names_line_and_field() {
-    let e = bad(&GOOD.replace("shape = \"box\"", "shape = \"pyramid\""));
-    assert!(e.contains("bad.toml"), "{e}");
-    assert!(e.starts_with("bad.toml:8:") && e.contains("pyramid"), "{e}");
-}
-
-#[test]
-fn negative_mass_names_line_and_field() {
-    let e = bad(&GOOD.replace("mass = 1.0", "mass = -2.0"));
-    assert!(e.starts_with("bad.toml:10:") && e.contains("objects[0].mass") && e.contains("-2"), "{e}");
-}
-
-#[test]
-fn nan_mass_is_rejected() {
-    let e = bad(&GOOD.replace("mass = 1.0", "mass = nan"));
-    assert!(e.contains("objects[0].mass") && e.contains("finite"), "{e}");
-}
-
-#[test]
-fn missing_field_is_named() {
-    let e = bad(&GOOD.replace("mass = 1.0\n", ""));
-    assert!(e.contains("objects[0].mass") && e.contains("needs"), "{e}");
-    let e = bad(&GOOD.replace("name = \"t\"\n", ""));
-    assert!(e.contains("missing field `name`"), "{e}");
-}
-
-#[test]
-fn unknown_effect_names_line() {
-    let e = bad(&GOOD.replace("[\"gravity\"]", "[\"gravity\", \"magnetism\"]"));
-    assert!(e.starts_with("bad.toml:3:") && e.contains("magnetism"), "{e}");
-}
-
-#[test]
-fn target_off_the_table_names_field() {
-    let e = bad(&GOOD.replace("position = [0.2, 0.1]", "position = [0.9, 0.1]"));
-    assert!(e.contains("goal.targets[0].position") && e.contains("off the table"), "{e}");
-}
-
-#[test]
-fn unknown_field_and_unknown_object_are_named() {
-    let e = bad(&GOOD.replace("mass = 1.0", "mass = 1.0\nmas = 2.0"));
-    assert!(e.contains("mas"), "{e}");
-    let e = bad(&GOOD.replace("object = \"a\"", "object = \"b\""));
-    assert!(e.contains("goal.targets[0].object") && e.contains("`b`"), "{e}");
+fn bad_input_names_the_file_the_line_and_the_field() {
+    let cases: &[(&str, &str, &str, &[&str])] = &[
+        ("shape = \"box\"", "shape = \"pyramid\"", "bad.toml:7:", &["pyramid"]),
+        ("mass = 1.0", "mass = -2.0", "bad.toml:9:", &["objects[0].mass", "-2"]),
+        ("mass = 1.0", "mass = nan", "bad.toml", &["objects[0].mass", "finite"]),
+        ("mass = 1.0\n", "", "bad.toml", &["objects[0].mass", "needs"]),
+        ("name = \"t\"\n", "", "bad.toml", &["missing field `name`"]),
+        ("[\"gravity\"]", "[\"gravity\", \"magnetism\"]", "bad.toml:2:", &["magnetism"]),
+        ("position = [0.2, 0.1]", "position = [0.9, 0.1]", "bad.toml", &["goal.targets[0].position", "off the table"]),
+        ("mass = 1.0", "mass = 1.0\nmas = 2.0", "bad.toml", &["mas"]),
+        ("object = \"a\"", "object = \"b\"", "bad.toml", &["goal.targets[0].object", "`b`"]),
+    ];
+    for (from, to, prefix, needles) in cases {
+        assert!(GOOD.contains(from), "`{from}` is not in the template");
+        let text = GOOD.replacen(from, to, 1);
+        let e = match scene::parse(&text, "bad.toml") {
+            Ok(_) => panic!("should not load:\n{text}"),
+            Err(e) => e.to_string(),
+        };
+        assert!(e.starts_with(prefix), "`{from}` → `{to}`: expected `{prefix}` first: {e}");
+        for n in *needles {
+            assert!(e.contains(n), "`{from}` → `{to}`: no `{n}` in: {e}");
+        }
+    }
 }
 
 #[test]
@@ -143,39 +103,7 @@ fn missing_scene_file_lists_where_it_looked() {
 fn sorting_matches_zones_to_objects_by_colour_value_not_spelling() {
     // The object is `#ff0000`, its zone `#FF0000`: the same colour. The
     // green box has no zone, so the goal concerns one object.
-    let text = r##"
-name = "hex_sorting"
-effects = ["gravity", "friction", "sleeping"]
-time_limit_s = 10
-
-[table]
-size = [1.0, 0.75]
-
-[[objects]]
-name = "red_box"
-shape = "box"
-size = [0.04, 0.04, 0.03]
-mass = 0.05
-color = "#ff0000"
-position = [-0.4, 0.0]
-
-[[objects]]
-name = "green_box"
-shape = "box"
-size = [0.04, 0.04, 0.03]
-mass = 0.05
-color = "#00ff00"
-position = [0.2, 0.0]
-
-[goal]
-kind = "sorting"
-dwell_s = 0.5
-
-[[goal.zones]]
-color = "#FF0000"
-min = [-0.5, -0.375]
-max = [-0.28, 0.375]
-"##;
+    let text = include_str!("scenes/hex_sorting.toml");
     let s = scene::parse(text, "hex_sorting.toml").expect("loads");
     assert_eq!(s.objects[0].color, Color::parse("#FF0000").expect("hex"));
     let mut session = Session::new(&s, TechniqueKind::JOINT, SessionOptions::default()).expect("session");

@@ -7,75 +7,32 @@ use std::fmt::Write as _;
 use surfacelab::scene;
 
 /// A positioning scene that loads; every test breaks one thing in it.
-const OBJECTS: &str = r#"name = "t"
-effects = ["gravity"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "a"
-shape = "box"
-size = [0.1, 0.1, 0.1]
-mass = 1.0
-color = "red"
-position = [0.0, 0.0]
-[[objects]]
-name = "ball"
-shape = "sphere"
-radius = 0.03
-mass = 0.1
-color = "blue"
-position = [0.2, 0.0]
-[goal]
-kind = "positioning"
-[[goal.targets]]
-object = "a"
-position = [0.2, 0.1]
-"#;
+const OBJECTS: &str = include_str!("scenes/box_and_ball.toml");
 
 /// A cloth that may tear, with a goal on it.
-const SOFT: &str = r#"name = "s"
-effects = ["gravity", "cloth", "tearing"]
-[table]
-size = [1.0, 0.75]
-[[soft_bodies]]
-name = "paper"
-kind = "cloth"
-size = [0.3, 0.2]
-resolution = [16, 11]
-position = [0.0, 0.0]
-mass = 0.03
-tear_strain = 0.25
-color = "white"
-[goal]
-kind = "torn"
-body = "paper"
-"#;
+const SOFT: &str = include_str!("scenes/tearing_cloth.toml");
 
 /// A steering scene: an object, a platform, waypoints and a finish.
-const STEER: &str = r#"name = "st"
-effects = ["gravity"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "puck"
-shape = "cylinder"
-radius = 0.025
-height = 0.02
-mass = 0.05
-color = "red"
-position = [0.3, 0.2]
-[goal]
-kind = "steering"
-object = "puck"
-waypoints = [[0.1, 0.18]]
-finish = [-0.3, -0.2]
-"#;
+const STEER: &str = include_str!("scenes/steering_puck.toml");
+
+/// The positioning goal's one target in [`OBJECTS`].
+const TARGETS: &str = "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n";
 
 /// `text` with `from` replaced by `to`; `from` must occur, so a test cannot
 /// silently stop breaking anything.
 fn with(text: &str, from: &str, to: &str) -> String {
     assert!(text.contains(from), "`{from}` is not in the template");
     text.replacen(from, to, 1)
+}
+
+/// [`OBJECTS`] with its positioning goal turned into a sorting goal of one
+/// zone, `zone` being the zone's lines after its header.
+fn sorting(zone: &str) -> String {
+    with(
+        &with(OBJECTS, TARGETS, ""),
+        "kind = \"positioning\"\n",
+        &format!("kind = \"sorting\"\n[[goal.zones]]\n{zone}"),
+    )
 }
 
 fn error(text: &str) -> String {
@@ -144,9 +101,8 @@ fn a_missing_field_a_shape_or_body_needs_is_named() {
 fn a_missing_field_a_goal_needs_is_named() {
     breaks(STEER, "finish = [-0.3, -0.2]\n", "", Some(13), "goal.finish", "a steering goal needs `finish`");
     breaks(STEER, "object = \"puck\"\n", "", Some(13), "goal.object", "this goal needs `goal.object`");
-    let targets = "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n";
-    breaks(OBJECTS, targets, "", Some(19), "goal.targets", "at least one [[goal.targets]]");
-    let no_targets = with(OBJECTS, targets, "");
+    breaks(OBJECTS, TARGETS, "", Some(19), "goal.targets", "at least one [[goal.targets]]");
+    let no_targets = with(OBJECTS, TARGETS, "");
     let positioning = "kind = \"positioning\"";
     breaks(&no_targets, positioning, "kind = \"sorting\"", Some(19), "goal.zones", "at least one [[goal.zones]]");
     breaks(&no_targets, positioning, "kind = \"gather\"", Some(19), "goal.center", "a gather goal needs `center`");
@@ -369,23 +325,13 @@ fn an_unknown_colour_is_named() {
         "soft_bodies[0].color",
         "unknown colour `#12345`",
     );
-    let zone = "kind = \"sorting\"\n[[goal.zones]]\ncolor = \"mauvish\"\nmin = [0.1, 0.1]\nmax = [0.3, 0.3]\n";
-    let e = error(&with(
-        &with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", ""),
-        "kind = \"positioning\"\n",
-        zone,
-    ));
+    let e = error(&sorting("color = \"mauvish\"\nmin = [0.1, 0.1]\nmax = [0.3, 0.3]\n"));
     assert_names(&e, Some(22), "goal.zones[0].color", "unknown colour `mauvish`");
 }
 
 #[test]
 fn an_inverted_zone_is_named() {
-    let zone = "kind = \"sorting\"\n[[goal.zones]]\ncolor = \"red\"\nmin = [0.3, 0.1]\nmax = [0.1, 0.3]\n";
-    let e = error(&with(
-        &with(OBJECTS, "[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", ""),
-        "kind = \"positioning\"\n",
-        zone,
-    ));
+    let e = error(&sorting("color = \"red\"\nmin = [0.3, 0.1]\nmax = [0.1, 0.3]\n"));
     assert_names(&e, Some(21), "goal.zones[0]", "min must be below max on both axes");
 }
 
@@ -588,8 +534,7 @@ fn a_number_past_its_documented_bound_is_named_with_the_bound() {
 
 #[test]
 fn too_many_objects_or_copies_at_one_spot_are_refused_before_anything_is_built() {
-    let no_goal =
-        with(OBJECTS, "[goal]\nkind = \"positioning\"\n[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n", "");
+    let no_goal = with(OBJECTS, &format!("[goal]\nkind = \"positioning\"\n{TARGETS}"), "");
     let many = |count: u32, step: &str| {
         with(
             &with(&no_goal, "mass = 1.0\n", &format!("mass = 1.0\ncount = {count}\n")),
@@ -649,7 +594,7 @@ fn a_bad_value_in_a_table_is_named_at_its_own_line() {
 fn region(extra: &str) -> String {
     with(
         OBJECTS,
-        "kind = \"positioning\"\n[[goal.targets]]\nobject = \"a\"\nposition = [0.2, 0.1]\n",
+        &format!("kind = \"positioning\"\n{TARGETS}"),
         &format!("kind = \"region\"\nobject = \"a\"\nmin = [0.1, 0.1]\nmax = [0.3, 0.3]\nmax_height = 0.06\n{extra}"),
     )
 }

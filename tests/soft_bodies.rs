@@ -117,28 +117,7 @@ fn soft_bodies_exist_only_when_their_effect_is_declared() {
 /// the contact ray lands on the cloth, naming the particle under it.
 #[test]
 fn rigid_bodies_rest_on_cloth_and_rays_land_on_it() {
-    let text = r#"
-name = "box_on_cloth"
-effects = ["gravity", "friction", "cloth"]
-[table]
-size = [1.0, 0.75]
-[[soft_bodies]]
-name = "cloth"
-kind = "cloth"
-size = [0.2, 0.2]
-position = [0.0, 0.0]
-mass = 0.05
-thickness = 0.003
-color = "blue"
-[[objects]]
-name = "box"
-shape = "box"
-size = [0.04, 0.04, 0.02]
-mass = 0.01
-color = "red"
-position = [0.0, 0.0, 0.0165]
-"#;
-    let s = scene::parse(text, "box_on_cloth").expect("scene");
+    let s = scene::parse(include_str!("scenes/box_on_cloth.toml"), "box_on_cloth").expect("scene");
     let mut w = World::new(&s);
     let hit = w.cast_contact_ray(Vec2::new(0.06, 0.05)).expect("hit");
     let (h, particle) = hit.soft.expect("the ray lands on the cloth");
@@ -249,8 +228,7 @@ fn cloth_under_a_flat_hand_stays_finite_for_ten_thousand_steps() {
 /// (Proxy) of its rest volume (`thresholds::SQUISHED_VOLUME_*`).
 #[test]
 fn a_squished_soft_block_keeps_its_volume() {
-    let scene = task("soft");
-    let g = gesture("squish");
+    let (scene, g) = (task("soft"), gesture("squish"));
     for kind in [TechniqueKind::PARTICLE, TechniqueKind::PROXY] {
         let mut s = session(&scene, kind);
         let rest_z = centre_z(&s);
@@ -357,8 +335,7 @@ fn a_flat_hand_stops_a_rolling_ball() {
 /// src/pipeline/technique/particle.rs).
 #[test]
 fn a_fingertip_sweeping_over_a_ball_never_launches_it_backwards() {
-    let scene = task("ball");
-    let g = gesture("ball_stop");
+    let (scene, g) = (task("ball"), gesture("ball_stop"));
     for kind in [TechniqueKind::PARTICLE, TechniqueKind::PROXY] {
         let mut s = session(&scene, kind);
         let start = s.world().object_pose(ObjectId::new(0)).position.x;
@@ -380,8 +357,7 @@ fn a_fingertip_sweeping_over_a_ball_never_launches_it_backwards() {
 /// Joint only grabs, so its tilt is reported).
 #[test]
 fn a_card_pressed_on_one_side_tilts() {
-    let scene = task("cards");
-    let g = gesture("card_tilt");
+    let (scene, g) = (task("cards"), gesture("card_tilt"));
     let white = scene.object_id("card_white").expect("card");
     for kind in [TechniqueKind::PARTICLE, TechniqueKind::PROXY, TechniqueKind::JOINT] {
         let mut s = session(&scene, kind);
@@ -431,8 +407,7 @@ fn a_ruler_pushes_the_blocks_into_line() {
 /// bit-identical particles, tear included.
 #[test]
 fn tearing_is_deterministic() {
-    let scene = task("tear");
-    let g = gesture("tear_two_hands");
+    let (scene, g) = (task("tear"), gesture("tear_two_hands"));
     let run = || {
         let s = replay(&scene, TechniqueKind::PROXY, &g, 0.0);
         assert!(s.world().soft_piece_masses(SoftId::new(0)).len() >= 2);
@@ -553,8 +528,7 @@ fn a_block_perched_on_the_slot_walls_is_not_in_the_slot() {
 /// (reported).
 #[test]
 fn a_joint_squeezes_the_jelly_into_the_slot() {
-    let scene = task("soft");
-    let g = gesture("squeeze_into_slot");
+    let (scene, g) = (task("soft"), gesture("squeeze_into_slot"));
     for kind in [TechniqueKind::JOINT, TechniqueKind::PARTICLE, TechniqueKind::PROXY] {
         let mut s = session(&scene, kind);
         let (_, rest) = s.world().soft_volume(SoftId::new(0));

@@ -21,6 +21,9 @@ use surfacelab::session::{Session, SessionOptions};
 
 const STEPS: usize = 10_000;
 
+/// The techniques that hold rigid objects: every one but Direct.
+const HOLDING: [TechniqueKind; 3] = [TechniqueKind::PROXY, TechniqueKind::PARTICLE, TechniqueKind::JOINT];
+
 struct Case<'a> {
     task: &'a str,
     kind: TechniqueKind,
@@ -45,6 +48,11 @@ impl<'a> Case<'a> {
             config: None,
             sensor_px: (640, 480),
         }
+    }
+
+    /// One case of `task` under each technique of `kinds`.
+    fn each(task: &'a str, kinds: &'a [TechniqueKind], speed_limit: Threshold) -> impl Iterator<Item = Case<'a>> {
+        kinds.iter().map(move |&kind| Case::new(task, kind, speed_limit))
     }
 }
 
@@ -191,15 +199,14 @@ fn deeply_overlapping_objects_recover_calmly() {
 
 #[test]
 fn a_100_to_1_mass_ratio_stack_pushed_on_top() {
-    for kind in [TechniqueKind::PROXY, TechniqueKind::PARTICLE, TechniqueKind::JOINT] {
-        let case = Case::new("tasks/cases/mass_ratio.toml", kind, thresholds::SPEED_HELD);
+    for case in Case::each("tasks/cases/mass_ratio.toml", &HOLDING, thresholds::SPEED_HELD) {
         let s = run(&case, STEPS, |k, s| {
             // A fingertip drags the light box around on the heavy block for 3 s.
             let top = s.world().screen_point(Vec3::new(0.0, 0.0, 0.07));
             if k < 180 { vec![tip(1, top + lerp(Vec2::ZERO, Vec2::new(0.03, 0.02), k, 180))] } else { Vec::new() }
         });
         let light = s.world().object_pose(ObjectId::new(0)).position;
-        assert!(light.z > 0.05, "{kind}: the light box fell off or sank: {light}");
+        assert!(light.z > 0.05, "{}: the light box fell off or sank: {light}", case.kind);
     }
 }
 
@@ -221,11 +228,10 @@ fn proxies_losing_and_regaining_tracking_every_frame() {
 
 #[test]
 fn a_tracked_contact_teleporting_across_the_table() {
-    for kind in [TechniqueKind::PROXY, TechniqueKind::JOINT, TechniqueKind::PARTICLE] {
-        // The contact jumps 60 cm every half second between two spots beside
-        // the 14 cm box: whatever the technique makes of the jump, the box
-        // is never touched and stays at rest.
-        let case = Case::new("tasks/cases/one_box.toml", kind, thresholds::SPEED_AT_REST);
+    // The contact jumps 60 cm every half second between two spots beside
+    // the 14 cm box: whatever the technique makes of the jump, the box
+    // is never touched and stays at rest.
+    for case in Case::each("tasks/cases/one_box.toml", &HOLDING, thresholds::SPEED_AT_REST) {
         run(&case, STEPS, |k, _| {
             let side = if (k / 30) % 2 == 0 { -0.3 } else { 0.3 };
             vec![tip(1, Vec2::new(side, 0.0))]
@@ -243,8 +249,7 @@ fn a_capsule_particle_wedged_under_an_object() {
 
 #[test]
 fn the_steering_cylinder_pinned_between_two_hands() {
-    for kind in [TechniqueKind::PROXY, TechniqueKind::PARTICLE, TechniqueKind::JOINT] {
-        let case = Case::new("tasks/steering.toml", kind, thresholds::SPEED_HELD);
+    for case in Case::each("tasks/steering.toml", &HOLDING, thresholds::SPEED_HELD) {
         let s = run(&case, STEPS, |k, s| {
             // Two hand edges close in on the cylinder from both sides and hold.
             let c = s.world().screen_point(Vec3::new(0.34, 0.22, 0.07));

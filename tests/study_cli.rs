@@ -3,8 +3,8 @@
 
 mod common;
 
-use common::{bin, refused, text, tmp};
-use std::path::Path;
+use common::{cli, refused, replayed_study, run_cli_on, text, tmp};
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// Column `name` of every row of a CSV file.
@@ -15,22 +15,27 @@ fn column(path: &Path, name: &str) -> Vec<String> {
 }
 
 fn tiny(out: &Path) -> Command {
-    let mut c = bin();
-    c.args(["study", "--participants", "1", "--reps", "1", "--no-practice", "--tasks", "positioning"])
-        .args(["--time-limit", "5", "--no-progress", "--jobs", "2", "--out"])
-        .arg(out);
+    let mut c = cli("study --participants 1 --reps 1 --no-practice --tasks positioning --time-limit 5 --no-progress");
+    c.args(["--jobs", "2", "--out"]).arg(out);
     c
+}
+
+/// A [`tiny`] study run to its end in scratch folder `name`: the folder
+/// (removed when dropped), the run's folder in it, and the output's text.
+fn tiny_study(name: &str) -> (tempfile::TempDir, PathBuf, String) {
+    let scratch = tmp(name);
+    let out = scratch.path().join("run");
+    let o = tiny(&out).output().expect("runs");
+    assert!(o.status.success(), "{}", text(&o));
+    (scratch, out, text(&o))
 }
 
 #[test]
 fn a_short_time_limit_fails_every_trial_at_the_limit() {
-    let scratch_out = tmp("limit");
-    let out = scratch_out.path().join("run");
-    let o = tiny(&out).output().expect("runs");
-    assert!(o.status.success(), "{}", text(&o));
+    let (_scratch, out, said) = tiny_study("limit");
     // Nobody places eight objects in 5 s: 3 techniques x on/off, all failed.
-    assert!(text(&o).contains("6 failed: 6 at the time limit, 0 runner errors"), "{}", text(&o));
-    assert!(text(&o).contains("x per core"), "{}", text(&o));
+    assert!(said.contains("6 failed: 6 at the time limit, 0 runner errors"), "{said}");
+    assert!(said.contains("x per core"), "{said}");
     let trials = out.join("trials.csv");
     assert_eq!(column(&trials, "completed"), vec!["false"; 6]);
     for t in column(&trials, "completion_time_s") {
@@ -44,21 +49,10 @@ fn a_short_time_limit_fails_every_trial_at_the_limit() {
 
 #[test]
 fn a_replayed_trial_that_does_not_finish_is_recorded_at_the_limit() {
-    let scratch_dir = tmp("replay");
-    let dir = scratch_dir.path().to_path_buf();
-    let gestures = dir.join("gestures");
-    std::fs::create_dir_all(&gestures).expect("dir");
+    let dir = tmp("replay");
     // A 2 s flat-hand press in the middle of the table places nothing.
-    std::fs::copy("assets/gestures/flatten.toml", gestures.join("positioning.toml")).expect("copy");
-    let out = dir.join("run");
-    let o = bin()
-        .args(["study", "--participants", "1", "--reps", "1", "--no-practice", "--tasks", "positioning"])
-        .args(["--techniques", "joint", "--time-limit", "30", "--no-progress", "--replay"])
-        .arg(&gestures)
-        .arg("--out")
-        .arg(&out)
-        .output()
-        .expect("runs");
+    let line = "study --participants 1 --reps 1 --no-practice --tasks positioning --techniques joint --time-limit 30";
+    let (out, o) = replayed_study(dir.path(), &[("positioning", "flatten")], &format!("{line} --no-progress"));
     assert!(o.status.success(), "{}", text(&o));
     assert!(text(&o).contains("2 failed: 2 at the time limit"), "{}", text(&o));
     let trials = out.join("trials.csv");
@@ -113,8 +107,7 @@ fn seeds_run_independent_studies_and_count_findings() {
 fn a_running_study_locks_its_folder_and_a_killed_one_does_not() {
     let scratch_out = tmp("lock");
     let out = scratch_out.path().join("run");
-    let mut running = bin()
-        .args(["study", "--participants", "2", "--reps", "2", "--no-progress", "--jobs", "1", "--out"])
+    let mut running = cli("study --participants 2 --reps 2 --no-progress --jobs 1 --out")
         .arg(&out)
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::null())
@@ -126,14 +119,14 @@ fn a_running_study_locks_its_folder_and_a_killed_one_does_not() {
         assert!(started.elapsed().as_secs() < 120, "the study never wrote trials.csv");
         std::thread::sleep(std::time::Duration::from_millis(20));
     }
-    let o = bin().args(["study", "--no-progress", "--resume"]).arg(&out).output().expect("runs");
+    let o = run_cli_on("study --no-progress --resume", &out);
     let still_running = running.try_wait().expect("wait").is_none();
     assert!(still_running, "the study finished before the resume could race it; make it longer");
     refused(&o, &[&format!("pid {}", running.id())]);
     running.kill().expect("SIGKILL");
     running.wait().expect("reaped");
 
-    let o = bin().args(["study", "--no-progress", "--resume"]).arg(&out).output().expect("runs");
+    let o = run_cli_on("study --no-progress --resume", &out);
     assert!(o.status.success(), "the dead run's lock is taken over: {}", text(&o));
     let keys: Vec<(String, String)> =
         column(&trials, "participant").into_iter().zip(column(&trials, "order_index")).collect();
@@ -151,18 +144,12 @@ fn a_running_study_locks_its_folder_and_a_killed_one_does_not() {
 /// way forward, and a run.toml from before the design hash still resumes.
 #[test]
 fn resume_refuses_a_changed_design_and_says_what_it_drops() {
-    let scratch_out = tmp("resume");
-    let out = scratch_out.path().join("run");
-    let o = tiny(&out).output().expect("runs");
-    assert!(o.status.success(), "{}", text(&o));
+    let (_scratch, out, _) = tiny_study("resume");
     let run_toml = out.join("run.toml");
     let original = std::fs::read_to_string(&run_toml).expect("run.toml");
     assert!(original.contains("design_hash = \""), "{original}");
-    let resume = |extra: &[&str]| {
-        let mut c = bin();
-        c.args(["study", "--no-progress", "--jobs", "2", "--resume"]).arg(&out).args(extra);
-        c.output().expect("runs")
-    };
+    let resume =
+        |extra: &[&str]| cli("study --no-progress --jobs 2 --resume").arg(&out).args(extra).output().expect("runs");
 
     // Flags that would change the design.
     for (flag, value) in [("--seed", "99"), ("--participants", "2"), ("--time-limit", "9"), ("--replay", "assets")] {
@@ -211,12 +198,10 @@ fn resume_refuses_a_changed_design_and_says_what_it_drops() {
 fn the_manners_ablation_runs_each_repertoire_and_tabulates_the_findings() {
     let scratch = tmp("ablation");
     let out = scratch.path().join("abl");
-    let o = bin()
-        .args(["study", "--participants", "2", "--reps", "1", "--no-practice", "--tasks", "positioning"])
-        .args(["--techniques", "joint,particle", "--manners", "single-finger", "--no-progress", "--out"])
-        .arg(&out)
-        .output()
-        .expect("runs");
+    let o = run_cli_on(
+        "study --participants 2 --reps 1 --no-practice --tasks positioning --techniques joint,particle --manners single-finger --no-progress --out",
+        &out,
+    );
     assert!(o.status.success(), "{}", text(&o));
     for arm in ["full", "single-finger"] {
         assert!(out.join(arm).join("seed-1/trials.csv").is_file(), "{arm}");
@@ -242,11 +227,7 @@ fn the_manners_ablation_runs_each_repertoire_and_tabulates_the_findings() {
     assert!(md.contains("| Proxy and Particle are faster than Joint for sorting | not tested | not tested |"), "{md}");
 
     // A restriction that could leave a participant idle is refused.
-    let o = bin()
-        .args(["study", "--manners", "pinch", "--participants", "1", "--out"])
-        .arg(scratch.path().join("never"))
-        .output()
-        .expect("runs");
+    let o = run_cli_on("study --manners pinch --participants 1 --out", scratch.path().join("never"));
     let t = text(&o);
     assert_eq!(o.status.code(), Some(2), "{t}");
     assert!(t.contains("--manners") && t.contains("`pinch` leaves no manner"), "{t}");
@@ -258,8 +239,7 @@ fn the_manners_ablation_runs_each_repertoire_and_tabulates_the_findings() {
 #[test]
 fn a_larger_study_keeps_its_memory_small() {
     let scratch_out = tmp("memory");
-    let mut child = bin()
-        .args(["study", "--participants", "24", "--time-limit", "2", "--no-progress", "--out"])
+    let mut child = cli("study --participants 24 --time-limit 2 --no-progress --out")
         .arg(scratch_out.path().join("run"))
         .stdout(std::process::Stdio::null())
         .stderr(std::process::Stdio::null())
@@ -286,11 +266,7 @@ fn a_larger_study_keeps_its_memory_small() {
 #[test]
 fn a_long_study_into_a_log_prints_plain_progress_lines() {
     let scratch_out = tmp("plain-progress");
-    let o = bin()
-        .args(["study", "--participants", "18", "--time-limit", "10", "--out"])
-        .arg(scratch_out.path().join("run"))
-        .output()
-        .expect("runs");
+    let o = run_cli_on("study --participants 18 --time-limit 10 --out", scratch_out.path().join("run"));
     assert!(o.status.success(), "{}", text(&o));
     let err = String::from_utf8_lossy(&o.stderr);
     let line =

@@ -434,6 +434,15 @@ fn an_existing_run_is_not_overwritten() {
     assert!(matches!(again, Err(StudyError::AlreadyExists { .. })));
 }
 
+/// [`small_design`] run to its end by the default fake runner in scratch
+/// folder `name`: the folder and the bytes of its `trials.csv`.
+fn reference_run(name: &str) -> (PathBuf, Vec<u8>) {
+    let reference = scratch(name);
+    run_study(&small_design(), &reference, &FakeRunner::default(), &quiet(1)).expect("reference");
+    let full = read(&reference.join(TRIALS_CSV));
+    (reference, full)
+}
+
 /// Copies a run's `run.toml` and the first `cut` bytes of its `trials.csv`
 /// into a new folder, as a `kill -9` at that byte would leave it.
 fn killed_copy(reference: &Path, name: &str, cut: usize) -> PathBuf {
@@ -446,9 +455,7 @@ fn killed_copy(reference: &Path, name: &str, cut: usize) -> PathBuf {
 #[test]
 fn resume_after_kill_runs_only_missing_trials() {
     let design = small_design();
-    let reference = scratch("resume_reference");
-    run_study(&design, &reference, &FakeRunner::default(), &quiet(1)).expect("reference");
-    let full = read(&reference.join(TRIALS_CSV));
+    let (reference, full) = reference_run("resume_reference");
     let total = design.trial_count();
     let line_ends: Vec<usize> = full.iter().enumerate().filter(|(_, b)| **b == b'\n').map(|(i, _)| i + 1).collect();
     assert_eq!(line_ends.len(), total + 1);
@@ -476,9 +483,7 @@ fn resume_after_kill_runs_only_missing_trials() {
 #[test]
 fn resume_drops_an_unreadable_last_row_and_rejects_other_damage() {
     let design = small_design();
-    let reference = scratch("damage_reference");
-    run_study(&design, &reference, &FakeRunner::default(), &quiet(1)).expect("reference");
-    let full = read(&reference.join(TRIALS_CSV));
+    let (reference, full) = reference_run("damage_reference");
 
     // A whole line of garbage at the end (e.g. a power cut leaving zeros).
     let dir = scratch("damage_last");
@@ -522,10 +527,8 @@ fn resume_of_a_complete_run_runs_nothing() {
 #[test]
 fn resume_restores_trial_order_of_a_hand_edited_file() {
     // Someone deleted a row in the middle to rerun that trial.
-    let design = small_design();
-    let reference = scratch("edited_reference");
-    run_study(&design, &reference, &FakeRunner::default(), &quiet(1)).expect("reference");
-    let full = String::from_utf8(read(&reference.join(TRIALS_CSV))).expect("utf8");
+    let (reference, full) = reference_run("edited_reference");
+    let full = String::from_utf8(full).expect("utf8");
     let mut lines: Vec<&str> = full.lines().collect();
     lines.remove(5);
     let dir = scratch("edited");

@@ -158,6 +158,17 @@ impl FlowCase {
         }
         (median(normal), median(full))
     }
+
+    /// The guided flow's median error, and that of block matching alone
+    /// along the gradient, are at most half a pixel; `label` names the
+    /// motion in the printed errors.
+    fn assert_within_half_a_pixel(&self, label: &str) {
+        let err = self.median_error();
+        assert!(err <= 0.5, "median flow error {err} px");
+        let (normal, full) = self.unguided_errors(4);
+        eprintln!("{label}: guided median error {err:.3} px; unguided normal {normal:.3} px, full {full:.3} px");
+        assert!(normal <= 0.5, "unguided normal-flow error {normal}");
+    }
 }
 
 #[test]
@@ -173,11 +184,7 @@ fn flow_recovers_a_known_translation_of_a_flat_hand() {
     for t in &case.truth {
         assert!((t[0] - 3.3).abs() < 1e-3 && (t[1] + 2.1).abs() < 1e-3);
     }
-    let err = case.median_error();
-    assert!(err <= 0.5, "median flow error {err} px");
-    let (normal, full) = case.unguided_errors(4);
-    eprintln!("translation: guided median error {err:.3} px; unguided normal {normal:.3} px, full {full:.3} px");
-    assert!(normal <= 0.5, "unguided normal-flow error {normal}");
+    case.assert_within_half_a_pixel("translation");
 }
 
 #[test]
@@ -190,11 +197,7 @@ fn flow_recovers_a_known_rotation_of_a_flat_hand() {
     assert!((c.rotation_rad + 3f32.to_radians()).abs() < 0.5f32.to_radians(), "{}", c.rotation_rad);
     let longest = case.truth.iter().map(|t| t[0].hypot(t[1])).fold(0.0, f32::max);
     assert!(longest > 3.0, "the fingertips move {longest} px");
-    let err = case.median_error();
-    assert!(err <= 0.5, "median flow error {err} px");
-    let (normal, full) = case.unguided_errors(4);
-    eprintln!("rotation: guided median error {err:.3} px; unguided normal {normal:.3} px, full {full:.3} px");
-    assert!(normal <= 0.5, "unguided normal-flow error {normal}");
+    case.assert_within_half_a_pixel("rotation");
 }
 
 /// Two fingertips turning a quarter turn in 1.5 s about the point between
@@ -497,112 +500,89 @@ fn hand(kind: &str, extra: &str, keys: &str) -> String {
 
 const KEYS: &str = "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\n\n[[hands.keys]]\nt = 1.0\n";
 
+/// A fist with `keys` (its `[[hands.keys]]` tables).
+fn fist(keys: &str) -> String {
+    hand("fist", "", keys)
+}
+
+/// A fist of one key at t = 0 at the origin, its last lines (line 10 on) `extra`.
+fn fist_at_0(extra: &str) -> String {
+    fist(&format!("[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\n{extra}"))
+}
+
 /// One piece on purpose: a table of malformed files and what each error
 /// must name.
 #[test]
-#[allow(clippy::too_many_lines, reason = "a table of cases")]
 fn malformed_gestures_name_the_file_the_field_and_the_line() {
+    let overlap = "[[hands]]\nid = 1\nkind = \"edge\"\n[[hands.keys]]\nt = 0.5\npos = [0.1, 0.0]\n";
+    let version = |v: &str| format!("format = \"surfacelab-gesture\"\nversion = {v}\n");
     // (file, text, must contain...)
-    let cases: Vec<(&str, String, Vec<&str>)> = vec![
-        (
-            "kind.toml",
-            hand("tentacle", "", KEYS),
-            vec!["kind.toml:6", "hands[0].kind", "unknown hand kind \"tentacle\""],
-        ),
+    let cases: &[(&str, String, &[&str])] = &[
+        ("kind.toml", hand("tentacle", "", KEYS), &["kind.toml:6", "hands[0].kind", "unknown hand kind \"tentacle\""]),
         (
             "order.toml",
-            hand("fist", "", "[[hands.keys]]\nt = 1.0\npos = [0.0, 0.0]\n[[hands.keys]]\nt = 0.5\n"),
-            vec!["order.toml:12", "hands[0].keys[1].t", "out of time order"],
+            fist("[[hands.keys]]\nt = 1.0\npos = [0.0, 0.0]\n[[hands.keys]]\nt = 0.5\n"),
+            &["order.toml:12", "hands[0].keys[1].t", "out of time order"],
         ),
         (
             "same_time.toml",
-            hand("fist", "", "[[hands.keys]]\nt = 1.0\npos = [0.0, 0.0]\n[[hands.keys]]\nt = 1.0\n"),
-            vec!["same_time.toml", "hands[0].keys[1].t", "out of time order"],
+            fist("[[hands.keys]]\nt = 1.0\npos = [0.0, 0.0]\n[[hands.keys]]\nt = 1.0\n"),
+            &["same_time.toml", "hands[0].keys[1].t", "out of time order"],
         ),
         (
             "nan.toml",
-            hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [nan, 0.0]\n"),
-            vec!["nan.toml:10", "hands[0].keys[0].pos", "finite"],
+            fist("[[hands.keys]]\nt = 0.0\npos = [nan, 0.0]\n"),
+            &["nan.toml:10", "hands[0].keys[0].pos", "finite"],
         ),
-        (
-            "inf.toml",
-            hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\nangle_deg = -inf\n"),
-            vec!["inf.toml:11", "hands[0].keys[0].angle_deg", "finite"],
-        ),
-        (
-            "inf_t.toml",
-            hand("fist", "", "[[hands.keys]]\nt = inf\npos = [0.0, 0.0]\n"),
-            vec!["inf_t.toml:9", "hands[0].keys[0].t"],
-        ),
-        (
-            "version.toml",
-            "format = \"surfacelab-gesture\"\nversion = 3\n".to_owned(),
-            vec!["version.toml:2", "`version`", "unsupported version 3"],
-        ),
-        (
-            "version_text.toml",
-            "format = \"surfacelab-gesture\"\nversion = \"1\"\n".to_owned(),
-            vec!["version_text.toml:2", "`version`"],
-        ),
+        ("inf.toml", fist_at_0("angle_deg = -inf\n"), &["inf.toml:11", "hands[0].keys[0].angle_deg", "finite"]),
+        ("inf_t.toml", fist("[[hands.keys]]\nt = inf\npos = [0.0, 0.0]\n"), &["inf_t.toml:9", "hands[0].keys[0].t"]),
+        ("version.toml", version("3"), &["version.toml:2", "`version`", "unsupported version 3"]),
+        ("version_text.toml", version("\"1\""), &["version_text.toml:2", "`version`"]),
         (
             "no_version.toml",
             "format = \"surfacelab-gesture\"\n".to_owned(),
-            vec!["no_version.toml", "`version`", "missing"],
+            &["no_version.toml", "`version`", "missing"],
         ),
-        ("no_format.toml", "version = 1\n".to_owned(), vec!["no_format.toml", "`format`", "missing"]),
+        ("no_format.toml", "version = 1\n".to_owned(), &["no_format.toml", "`format`", "missing"]),
         (
             "wrong_format.toml",
             "format = \"svg\"\nversion = 1\n".to_owned(),
-            vec!["wrong_format.toml:1", "`format`", "svg"],
+            &["wrong_format.toml:1", "`format`", "svg"],
         ),
-        ("fingers.toml", hand("fingertips", "fingers = 6", KEYS), vec!["fingers.toml:7", "hands[0].fingers", "1..=5"]),
-        ("fingers0.toml", hand("fingertips", "fingers = 0", KEYS), vec!["fingers0.toml:7", "hands[0].fingers"]),
+        ("fingers.toml", hand("fingertips", "fingers = 6", KEYS), &["fingers.toml:7", "hands[0].fingers", "1..=5"]),
+        ("fingers0.toml", hand("fingertips", "fingers = 0", KEYS), &["fingers0.toml:7", "hands[0].fingers"]),
         (
             "fingers_fist.toml",
             hand("fist", "fingers = 2", KEYS),
-            vec!["fingers_fist.toml:7", "hands[0].fingers", "only kind"],
+            &["fingers_fist.toml:7", "hands[0].fingers", "only kind"],
         ),
         (
             "pressure.toml",
-            hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\npressure = 1.5\n"),
-            vec!["pressure.toml:11", "hands[0].keys[0].pressure", "out of range"],
+            fist_at_0("pressure = 1.5\n"),
+            &["pressure.toml:11", "hands[0].keys[0].pressure", "out of range"],
         ),
-        (
-            "scale.toml",
-            hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\nscale = 0.0\n"),
-            vec!["scale.toml:11", "hands[0].keys[0].scale"],
-        ),
-        (
-            "no_pos.toml",
-            hand("fist", "", "[[hands.keys]]\nt = 0.0\n"),
-            vec!["no_pos.toml:9", "hands[0].keys[0].pos", "missing"],
-        ),
-        ("no_keys.toml", hand("fist", "keys = []", ""), vec!["no_keys.toml:7", "hands[0].keys"]),
+        ("scale.toml", fist_at_0("scale = 0.0\n"), &["scale.toml:11", "hands[0].keys[0].scale"]),
+        ("no_pos.toml", fist("[[hands.keys]]\nt = 0.0\n"), &["no_pos.toml:9", "hands[0].keys[0].pos", "missing"]),
+        ("no_keys.toml", hand("fist", "keys = []", ""), &["no_keys.toml:7", "hands[0].keys"]),
         (
             "negative_t.toml",
-            hand("fist", "", "[[hands.keys]]\nt = -1.0\npos = [0.0, 0.0]\n"),
-            vec!["negative_t.toml:9", "hands[0].keys[0].t"],
+            fist("[[hands.keys]]\nt = -1.0\npos = [0.0, 0.0]\n"),
+            &["negative_t.toml:9", "hands[0].keys[0].t"],
         ),
-        ("id.toml", format!("{HEADER}[[hands]]\nid = -1\nkind = \"fist\"\n{KEYS}"), vec!["id.toml:4", "hands[0].id"]),
+        ("id.toml", format!("{HEADER}[[hands]]\nid = -1\nkind = \"fist\"\n{KEYS}"), &["id.toml:4", "hands[0].id"]),
         (
             "overlap.toml",
-            format!(
-                "{HEADER}[[hands]]\nid = 1\nkind = \"fist\"\n{KEYS}\n[[hands]]\nid = 1\nkind = \"edge\"\n[[hands.keys]]\nt = 0.5\npos = [0.1, 0.0]\n"
-            ),
-            vec!["overlap.toml:17", "hands[1].keys[0].t", "still on the table"],
+            format!("{HEADER}[[hands]]\nid = 1\nkind = \"fist\"\n{KEYS}\n{overlap}"),
+            &["overlap.toml:17", "hands[1].keys[0].t", "still on the table"],
         ),
-        (
-            "unknown_field.toml",
-            hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0, 0.0]\nspeed = 3.0\n"),
-            vec!["unknown_field.toml:11", "speed"],
-        ),
-        ("missing_t.toml", hand("fist", "", "[[hands.keys]]\npos = [0.0, 0.0]\n"), vec!["missing_t.toml", "`t`"]),
-        ("syntax.toml", format!("{HEADER}[[hands]\n"), vec!["syntax.toml:3"]),
-        ("pos_type.toml", hand("fist", "", "[[hands.keys]]\nt = 0.0\npos = [0.0]\n"), vec!["pos_type.toml:10"]),
+        ("unknown_field.toml", fist_at_0("speed = 3.0\n"), &["unknown_field.toml:11", "speed"]),
+        ("missing_t.toml", fist("[[hands.keys]]\npos = [0.0, 0.0]\n"), &["missing_t.toml", "`t`"]),
+        ("syntax.toml", format!("{HEADER}[[hands]\n"), &["syntax.toml:3"]),
+        ("pos_type.toml", fist("[[hands.keys]]\nt = 0.0\npos = [0.0]\n"), &["pos_type.toml:10"]),
     ];
     for (name, text, wanted) in cases {
-        let message = error_of(name, &text);
-        for w in wanted {
+        let message = error_of(name, text);
+        for w in *wanted {
             assert!(message.contains(w), "{name}: {message:?} lacks {w:?}");
         }
     }

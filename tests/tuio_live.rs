@@ -240,6 +240,13 @@ fn finger_path() -> impl Iterator<Item = Option<[f32; 2]>> {
         .chain(std::iter::repeat_n(None, 6))
 }
 
+/// A live run of the one-box case under Proxy for `seconds`, its report
+/// written to `report`.
+fn one_box_under_proxy(seconds: &str, report: &Path) -> (Child, SocketAddr, std::thread::JoinHandle<String>) {
+    let one_box = ["--task", "tasks/cases/one_box.toml", "--technique", "proxy"];
+    start_live(&[&one_box[..], &["--seconds", seconds, "--report", path(report)]].concat())
+}
+
 /// TUIO 1.1 on the same option: a cursor drags the box under Proxy.
 #[test]
 fn a_tuio_1_1_cursor_drags_a_box_live() {
@@ -247,16 +254,7 @@ fn a_tuio_1_1_cursor_drags_a_box_live() {
     let scratch_dir = tmp("drag");
     let dir = scratch_dir.path().to_path_buf();
     let live = dir.join("live.json");
-    let (child, addr, stderr) = start_live(&[
-        "--task",
-        "tasks/cases/one_box.toml",
-        "--technique",
-        "proxy",
-        "--seconds",
-        "2.0",
-        "--report",
-        path(&live),
-    ]);
+    let (child, addr, stderr) = one_box_under_proxy("2.0", &live);
     send_at_rate(addr, finger_path().enumerate().map(|(k, at)| cursor(k as i32 + 1, at)));
     finish(child, stderr);
     let r = report(&live);
@@ -320,16 +318,7 @@ fn a_flood_of_packets_is_all_counted_and_drags_the_box_as_a_steady_stream_does()
     let scratch_dir = tmp("flood");
     let live = scratch_dir.path().join("flood.json");
     let run_for = format!("{:.1}", seconds + 1.0);
-    let (child, addr, stderr) = start_live(&[
-        "--task",
-        "tasks/cases/one_box.toml",
-        "--technique",
-        "proxy",
-        "--seconds",
-        &run_for,
-        "--report",
-        path(&live),
-    ]);
+    let (child, addr, stderr) = one_box_under_proxy(&run_for, &live);
     let peak = peak_rss_kb(child.id());
     let frames: Vec<Option<[f32; 2]>> = finger_path().collect();
     // The drag's frames, the finger held at its end until the flood is over.

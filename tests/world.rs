@@ -5,7 +5,7 @@ mod common;
 use common::scenes;
 use glam::{Vec2, Vec3};
 use surfacelab::pipeline::world::{ObjectId, World};
-use surfacelab::scene::{self, EffectSet};
+use surfacelab::scene::{self, EffectSet, Scene};
 
 fn push_pattern(world: &mut World, step: usize) {
     // A fixed, input-like sequence of forces on a few objects.
@@ -143,6 +143,15 @@ fn touching_where_an_object_appears_hits_its_top() {
     }
 }
 
+/// Two of the `gather` task's 2.2 cm blue discs, `a` at `a_at` and `b` at
+/// `b_at` (table metres).
+fn two_discs(a_at: [f32; 2], b_at: [f32; 2]) -> Scene {
+    let disc = scenes::disc(0.011, 0.01);
+    scenes::build(
+        &scenes::table("two_discs").object("a", disc, a_at, 0.01, "blue").object("b", disc, b_at, 0.01, "blue"),
+    )
+}
+
 /// Two of the `gather` task's 2.2 cm discs, one driven into the other at
 /// 0.2 m/s (a hand's sweep) for half a second: they push, not pass
 /// through each other. parry's GJK/EPA gives up at this size (absolute
@@ -150,15 +159,7 @@ fn touching_where_an_object_appears_hits_its_top() {
 /// sink millimetres into each other in `surfacelab behaviours --case gather`.
 #[test]
 fn small_discs_pushed_together_do_not_interpenetrate() {
-    let s = scenes::build(
-        &scenes::table("two_discs").object("a", scenes::disc(0.011, 0.01), [-0.03, 0.0], 0.01, "blue").object(
-            "b",
-            scenes::disc(0.011, 0.01),
-            [0.0, 0.003],
-            0.01,
-            "blue",
-        ),
-    );
+    let s = two_discs([-0.03, 0.0], [0.0, 0.003]);
     let mut w = World::new(&s);
     let (a, b) = (ObjectId::new(0), ObjectId::new(1));
     let mut deepest = 0.0f32;
@@ -305,14 +306,7 @@ fn a_row_squeezed_between_two_hands_gives_way_instead_of_interpenetrating() {
 fn overlap_after_one_step(hand: bool) -> f32 {
     use surfacelab::pipeline::world::Layer;
     use surfacelab::pipeline::world::prelude::{ColliderBuilder, RigidBodyBuilder};
-    let s =
-        scenes::build(&scenes::table("pair").object("a", scenes::disc(0.011, 0.01), [0.0, 0.0], 0.01, "blue").object(
-            "b",
-            scenes::disc(0.011, 0.01),
-            [0.018, 0.0],
-            0.01,
-            "blue",
-        ));
+    let s = two_discs([0.0, 0.0], [0.018, 0.0]);
     let mut w = World::new(&s);
     if hand {
         // Resting against the first disc's far side, still.

@@ -248,27 +248,14 @@ mod tests {
     use super::*;
     use crate::pipeline::technique::TechniqueKind;
     use crate::render::CameraMatrices;
+    use crate::scene::test_scenes::fixture;
     use crate::session::SessionOptions;
 
     /// A 30 cm column in the table's far right corner, the table's corners,
     /// and the column's top all show in views of any shape.
     #[test]
     fn the_fitted_view_shows_the_table_and_a_tall_object_at_its_corner() {
-        let text = r#"
-name = "corner_column"
-effects = ["gravity"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "column"
-shape = "cylinder"
-radius = 0.03
-height = 0.3
-color = "yellow"
-position = [0.46, 0.33]
-body = "fixed"
-"#;
-        let scene = crate::scene::parse(text, "test").expect("scene");
+        let scene = fixture("corner_column");
         let session = Session::new(&scene, TechniqueKind::JOINT, SessionOptions::default()).expect("session");
         for size in [[800, 800], [960, 800], [1280, 800], [400, 900], [1600, 400]] {
             let list = fitted_draw_list(&session, ViewOptions::default(), size);

@@ -234,8 +234,9 @@ mod tests {
     use crate::contact::circle::{CircleFit, discretize_circle};
     use crate::contact::entrance_block::pair_tolerance;
     use crate::contact::polygon::ConvexPolygon;
+    use crate::contact::random_ellipse;
     use crate::contact::report::Relation;
-    use crate::contact::test_support::{agrees_with_the_walk, grid_pair, random_ellipse, random_pair};
+    use crate::contact::test_support::{agrees_on, agrees_with_the_walk, grid_pair, random_pair};
     use crate::contact::vec2::Vec2;
     use proptest::prelude::*;
     use rand::SeedableRng;
@@ -251,24 +252,18 @@ mod tests {
         agrees_with_the_walk(a, b, fast)
     }
 
+    #[test]
+    fn the_search_agrees_with_the_full_walk_on_grids() {
+        agrees_on(grid_pair(3), agrees);
+    }
+
+    #[test]
+    fn the_search_agrees_with_the_full_walk_on_random_polygons() {
+        agrees_on(prop_oneof![random_pair(80, 1.5, 0.0), random_pair(80, 1.5, 1e6)], agrees);
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
-
-        #[test]
-        fn the_search_agrees_with_the_full_walk_on_grids(pair in grid_pair(3)) {
-            if let Some((a, b)) = pair {
-                agrees(&a, &b)?;
-            }
-        }
-
-        #[test]
-        fn the_search_agrees_with_the_full_walk_on_random_polygons(
-            pair in prop_oneof![random_pair(80, 1.5, 0.0), random_pair(80, 1.5, 1e6)],
-        ) {
-            if let Some((a, b)) = pair {
-                agrees(&a, &b)?;
-            }
-        }
 
         /// Regular polygons have parallel edges, which the block takes
         /// together, and ties between covers farthest out.

@@ -200,7 +200,7 @@ mod tests {
     use super::{encloses_origin, separated_report};
     use crate::contact::entrance_block::{EntranceBlock, pair_tolerance};
     use crate::contact::polygon::ConvexPolygon;
-    use crate::contact::test_support::{agrees_with_the_walk, grid_pair, random_pair};
+    use crate::contact::test_support::{agrees_on, agrees_with_the_walk, grid_pair, random_pair};
     use crate::contact::vec2::Vec2;
     use proptest::prelude::*;
 
@@ -208,22 +208,14 @@ mod tests {
         agrees_with_the_walk(a, b, separated_report(a, b, pair_tolerance(a, b)))
     }
 
-    proptest! {
-        #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
+    #[test]
+    fn the_early_exit_agrees_with_the_full_walk_on_grids() {
+        agrees_on(grid_pair(8), agrees);
+    }
 
-        #[test]
-        fn the_early_exit_agrees_with_the_full_walk_on_grids(pair in grid_pair(8)) {
-            if let Some((a, b)) = pair {
-                agrees(&a, &b)?;
-            }
-        }
-
-        #[test]
-        fn the_early_exit_agrees_with_the_full_walk_on_random_polygons(pair in random_pair(60, 6.0, 0.0)) {
-            if let Some((a, b)) = pair {
-                agrees(&a, &b)?;
-            }
-        }
+    #[test]
+    fn the_early_exit_agrees_with_the_full_walk_on_random_polygons() {
+        agrees_on(random_pair(60, 6.0, 0.0), agrees);
     }
 
     fn square(x: f64, y: f64, s: f64) -> ConvexPolygon {

@@ -5,11 +5,32 @@ use super::polygon::ConvexPolygon;
 use super::report::ContactReport;
 use super::vec2::Vec2;
 use proptest::prelude::*;
+use proptest::test_runner::TestRunner;
+
+/// A pair of convex polygons, or `None` where a hull is degenerate.
+pub(crate) type MaybePair = Option<(ConvexPolygon, ConvexPolygon)>;
+
+/// Runs `agrees` on 2000 pairs drawn from `pairs` (a degenerate one passes
+/// as it is), panicking with the smallest pair it fails on.
+pub(crate) fn agrees_on(
+    pairs: impl Strategy<Value = MaybePair>,
+    agrees: impl Fn(&ConvexPolygon, &ConvexPolygon) -> Result<bool, TestCaseError>,
+) {
+    let mut runner =
+        TestRunner::new(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() });
+    let result = runner.run(&pairs, |pair| {
+        if let Some((a, b)) = pair {
+            agrees(&a, &b)?;
+        }
+        Ok(())
+    });
+    result.unwrap_or_else(|e| panic!("{e}"));
+}
 
 /// Two hulls of 3 to 9 integer points in [−3, 3]², B shifted by up to
 /// `shift` each way: parallel edges, collinear points and exact touches
 /// everywhere. `None` where a hull is degenerate.
-pub(crate) fn grid_pair(shift: i32) -> impl Strategy<Value = Option<(ConvexPolygon, ConvexPolygon)>> {
+pub(crate) fn grid_pair(shift: i32) -> impl Strategy<Value = MaybePair> {
     let points = || prop::collection::vec((-3i32..=3, -3i32..=3), 3..10);
     (points(), points(), -shift..=shift, -shift..=shift).prop_map(|(a, b, dx, dy)| {
         let at = |p: Vec<(i32, i32)>, dx: i32, dy: i32| {
@@ -22,11 +43,7 @@ pub(crate) fn grid_pair(shift: i32) -> impl Strategy<Value = Option<(ConvexPolyg
 /// Two hulls of 3 to `max_points − 1` random points in [−1, 1]², A
 /// stretched along x and B along y by 0.02 to 3, B shifted by up to `shift`
 /// each way, both moved `far` out along x and in along y.
-pub(crate) fn random_pair(
-    max_points: usize,
-    shift: f64,
-    far: f64,
-) -> impl Strategy<Value = Option<(ConvexPolygon, ConvexPolygon)>> {
+pub(crate) fn random_pair(max_points: usize, shift: f64, far: f64) -> impl Strategy<Value = MaybePair> {
     let points = move || prop::collection::vec((-1.0..1.0f64, -1.0..1.0f64), 3..max_points);
     let stretch = || 0.02..3.0f64;
     (points(), points(), stretch(), stretch(), -shift..=shift, -shift..=shift).prop_map(
@@ -55,24 +72,6 @@ pub(crate) fn hull(mut pts: Vec<Vec2>) -> Vec<Vec2> {
         chain.pop();
     }
     chain
-}
-
-/// `n` points at distinct random angles on an ellipse with random axes
-/// (0.5 to 1.5), turn and centre near `at`, counter-clockwise: the random
-/// convex polygons of the contact benchmark.
-pub(crate) fn random_ellipse(rng: &mut impl rand::Rng, n: usize, at: Vec2) -> Vec<Vec2> {
-    let (ax, ay) = (rng.random_range(0.5..1.5), rng.random_range(0.5..1.5));
-    let turn: f64 = rng.random_range(0.0..std::f64::consts::TAU);
-    let mut angles: Vec<f64> = (0..n).map(|_| rng.random_range(0.0..std::f64::consts::TAU)).collect();
-    angles.sort_by(f64::total_cmp);
-    angles.dedup();
-    angles
-        .iter()
-        .map(|t| {
-            let (x, y) = (ax * t.cos(), ay * t.sin());
-            at + Vec2::new(x * turn.cos() - y * turn.sin(), x * turn.sin() + y * turn.cos())
-        })
-        .collect()
 }
 
 /// An early exit's report, where it answered, against the full walk's:

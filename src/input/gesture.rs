@@ -913,26 +913,7 @@ impl GestureRecorder {
 mod tests {
     use super::*;
 
-    const TWO: &str = r#"
-format = "surfacelab-gesture"
-version = 1
-
-[[hands]]
-id = 3
-kind = "fingertips"
-fingers = 2
-
-[[hands.keys]]
-t = 0.0
-pos = [0.0, 0.0]
-angle_deg = 170.0
-
-[[hands.keys]]
-t = 1.0
-pos = [0.1, -0.2]
-angle_deg = -170.0
-pressure = 0.5
-"#;
+    const TWO: &str = include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/gestures/two_fingertips.toml"));
 
     #[test]
     fn samples_interpolate_and_carry_values() {
@@ -976,19 +957,7 @@ pressure = 0.5
         assert_eq!(g, back);
     }
 
-    const CONTOUR: &str = r#"
-format = "surfacelab-gesture"
-version = 2
-
-[[hands]]
-id = 7
-kind = "contour"
-keys = [
-  { t = 0.0, points = [[-0.1, -0.05], [0.0, -0.05], [0.0, 0.05], [-0.1, 0.05]], pressure = 0.8 },
-  { t = 1.0, points = [[0.1, -0.05], [0.2, -0.05], [0.2, 0.05], [0.1, 0.05]], holes = [[[0.14, -0.01], [0.16, -0.01], [0.15, 0.01]]] },
-  { t = 2.0, points = [[0.2, -0.05], [0.3, -0.05], [0.3, 0.05], [0.2, 0.05]], holes = [[[0.24, -0.01], [0.26, -0.01], [0.25, 0.01]]], pressure = 0.4 },
-]
-"#;
+    const CONTOUR: &str = include_str!(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/gestures/contour.toml"));
 
     #[test]
     fn contours_move_point_by_point_or_hold_until_the_next_key() {

@@ -15,6 +15,8 @@ mod file;
 mod id;
 mod model;
 mod outline;
+#[cfg(test)]
+pub(crate) mod test_scenes;
 mod validate;
 mod work;
 

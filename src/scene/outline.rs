@@ -103,26 +103,15 @@ fn sign(bit: usize) -> f32 {
 mod tests {
     use super::*;
 
-    /// The area of the convex hull of `points` (Andrew's monotone chain,
-    /// then the shoelace formula).
+    /// The area of the convex hull of `points` (parry's hull, then the
+    /// shoelace formula).
     fn hull_area(points: &[Vec2]) -> f32 {
-        let mut p = points.to_vec();
-        p.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
-        p.dedup();
-        let cross = |o: Vec2, a: Vec2, b: Vec2| (a - o).perp_dot(b - o);
-        let mut hull: Vec<Vec2> = Vec::new();
-        for pass in [p.clone(), p.iter().rev().copied().collect()] {
-            let start = hull.len();
-            for q in pass {
-                while hull.len() >= start + 2 && cross(hull[hull.len() - 2], hull[hull.len() - 1], q) <= 0.0 {
-                    hull.pop();
-                }
-                hull.push(q);
-            }
-            hull.pop();
-        }
+        use parry2d_f64::math::Vector;
+        let pts: Vec<Vector> = points.iter().map(|p| Vector::new(f64::from(p.x), f64::from(p.y))).collect();
+        let hull = parry2d_f64::transformation::convex_hull(&pts);
         let n = hull.len();
-        0.5 * (0..n).map(|i| hull[i].perp_dot(hull[(i + 1) % n])).sum::<f32>()
+        let twice: f64 = (0..n).map(|i| hull[i].x * hull[(i + 1) % n].y - hull[i].y * hull[(i + 1) % n].x).sum();
+        (0.5 * twice.abs()) as f32
     }
 
     /// The area of a regular polygon of `n` points at radius `r`.

@@ -5,11 +5,13 @@
 //! Each test file compiles this module on its own and uses part of it.
 #![allow(dead_code)]
 
+pub mod filmed;
 pub mod gestures;
 pub mod scenes;
 pub mod thresholds;
 
-use std::path::PathBuf;
+use std::ffi::OsStr;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 /// The `surfacelab` binary, run from the project root.
@@ -17,6 +19,32 @@ pub fn bin() -> Command {
     let mut c = Command::new(env!("CARGO_BIN_EXE_surfacelab"));
     c.current_dir(env!("CARGO_MANIFEST_DIR"));
     c
+}
+
+/// The binary with the words of `line` as its arguments, as a command line
+/// reads: `cli("run --task positioning --technique joint")`.
+pub fn cli(line: &str) -> Command {
+    let mut c = bin();
+    c.args(line.split_whitespace());
+    c
+}
+
+/// [`cli`]`(line)` run to its end.
+pub fn run_cli(line: &str) -> Output {
+    cli(line).output().expect("runs")
+}
+
+/// [`run_cli`]`(line)`, asserted to succeed: its output as text.
+pub fn cli_text(line: &str) -> String {
+    let o = run_cli(line);
+    let t = text(&o);
+    assert!(o.status.success(), "{line}: {t}");
+    t
+}
+
+/// [`cli`]`(line)` with `path` as its last argument, run to its end.
+pub fn run_cli_on(line: &str, path: impl AsRef<OsStr>) -> Output {
+    cli(line).arg(path).output().expect("runs")
 }
 
 /// A command's standard output then standard error, as text.
@@ -46,6 +74,22 @@ pub fn scratch(name: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).expect("create scratch dir");
     dir
+}
+
+/// `surfacelab study LINE --replay DIR/gestures --out DIR/run` run to its
+/// end, the replay folder holding, for each `(task, gesture)`, the built-in
+/// gesture file saved as `<task>.toml`. Returns the run's folder and the
+/// command's output.
+pub fn replayed_study(dir: &Path, tasks: &[(&str, &str)], line: &str) -> (PathBuf, Output) {
+    let gestures = dir.join("gestures");
+    std::fs::create_dir_all(&gestures).expect("create the replay folder");
+    for (task, gesture) in tasks {
+        std::fs::copy(asset(&format!("assets/gestures/{gesture}.toml")), gestures.join(format!("{task}.toml")))
+            .expect("copy a gesture");
+    }
+    let out = dir.join("run");
+    let o = cli(line).arg("--replay").arg(&gestures).arg("--out").arg(&out).output().expect("runs");
+    (out, o)
 }
 
 /// Asserts the command was refused as bad input (exit 2) with a message

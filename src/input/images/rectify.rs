@@ -209,16 +209,27 @@ mod tests {
         Calibration::new(conversion, [8, 6], image, table, "test").expect("valid")
     }
 
+    /// The 16 × 12 contact sensor over the table [`straight`] films.
+    fn sensor() -> Sensor {
+        Sensor::new(16, 12, 1.0, 0.75)
+    }
+
+    /// An 8 × 6 camera frame of `pixels` rectified through `cal` onto
+    /// [`sensor`]; the rectifier must take it.
+    fn rectified(cal: &Calibration, pixels: Pixels) -> ContactImage {
+        let frame = CameraImage { width: 8, height: 6, pixels };
+        let mut out = ContactImage::default();
+        assert!(Rectifier::new(cal, &sensor()).rectify(&frame, &mut out));
+        out
+    }
+
     #[test]
     fn ir_levels_are_thresholded_and_stretched() {
         let cal = straight(Conversion::Ir { threshold: 55, background: None });
         let mut levels = vec![0u8; 48];
         levels[2 * 8 + 3] = 255; // camera pixel (3, 2)
         levels[4 * 8 + 6] = 155; // (6, 4): 100 above the threshold
-        let frame = CameraImage { width: 8, height: 6, pixels: Pixels::Grey8(levels) };
-        let sensor = Sensor::new(16, 12, 1.0, 0.75);
-        let mut out = ContactImage::default();
-        assert!(Rectifier::new(&cal, &sensor).rectify(&frame, &mut out));
+        let out = rectified(&cal, Pixels::Grey8(levels));
         // Contact pixel (7, 5) has its centre a quarter camera pixel right
         // of and below camera pixel (3, 2)'s centre: weight 0.75 × 0.75 of 255,
         // the rest 0, so level 143.4: (143.4 − 55) · 255/200 = 112.7.
@@ -240,10 +251,7 @@ mod tests {
         let cal = straight(Conversion::Ir { threshold: 20, background: Some(background) });
         let mut levels = vec![40u8; 48];
         levels[2 * 8 + 3] = 230; // bright everywhere, but as bright as the empty table here
-        let frame = CameraImage { width: 8, height: 6, pixels: Pixels::Grey8(levels) };
-        let sensor = Sensor::new(16, 12, 1.0, 0.75);
-        let mut out = ContactImage::default();
-        assert!(Rectifier::new(&cal, &sensor).rectify(&frame, &mut out));
+        let out = rectified(&cal, Pixels::Grey8(levels));
         // Everywhere 30 above the background: (30 − 20) · 255/235 = 10.85.
         assert!(out.pixels.iter().all(|&g| g == 11), "{:?}", out.pixels);
     }
@@ -256,10 +264,7 @@ mod tests {
         mm[2 * 8 + 4] = 983; // 17 mm up: half
         mm[4 * 8 + 2] = 940; // 60 mm up: a hovering hand
         mm[4 * 8 + 3] = 0; // no reading
-        let frame = CameraImage { width: 8, height: 6, pixels: Pixels::Grey16(mm) };
-        let sensor = Sensor::new(16, 12, 1.0, 0.75);
-        let mut out = ContactImage::default();
-        assert!(Rectifier::new(&cal, &sensor).rectify(&frame, &mut out));
+        let mut out = rectified(&cal, Pixels::Grey16(mm));
         // Contact (7, 5) blends (3,2)=996 and (4,2)=983 ... with table 1000 neighbours:
         // they differ by 17 mm > 13, so it takes the nearest reading, 996 → 255.
         assert_eq!(out.pixels[5 * 16 + 7], 255);
@@ -270,7 +275,7 @@ mod tests {
             assert_eq!(out.pixels[r * 16 + c], 0, "({c}, {r})");
         }
         let eight = CameraImage { width: 8, height: 6, pixels: Pixels::Grey8(vec![0; 48]) };
-        assert!(!Rectifier::new(&cal, &sensor).rectify(&eight, &mut out), "8-bit is not millimetres");
+        assert!(!Rectifier::new(&cal, &sensor()).rectify(&eight, &mut out), "8-bit is not millimetres");
     }
 
     /// Through a keystoned view the contact pixel over a table point samples

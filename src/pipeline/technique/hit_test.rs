@@ -138,30 +138,11 @@ fn nearest_on_boundary(p: &ConvexPolygon, q: CVec2) -> CVec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene;
+    use crate::scene::test_scenes::fixture;
 
     /// A 6 cm ball at (0.1, 0) and a 6 cm box at (-0.2, 0) on an empty table.
     fn world() -> World {
-        let toml = r#"name = "t"
-effects = ["gravity", "friction"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "ball"
-shape = "sphere"
-radius = 0.03
-mass = 0.1
-color = "red"
-position = [0.1, 0.0]
-[[objects]]
-name = "box"
-shape = "box"
-size = [0.06, 0.06, 0.06]
-mass = 0.1
-color = "blue"
-position = [-0.2, 0.0]
-"#;
-        World::new(&scene::parse(toml, "t.toml").expect("scene"))
+        World::new(&fixture("ball_and_box"))
     }
 
     fn square(at: Vec2, half: f32) -> Vec<Vec2> {

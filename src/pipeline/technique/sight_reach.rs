@@ -133,32 +133,12 @@ mod tests {
     use super::*;
     use crate::pipeline::world::parry::query;
     use crate::pipeline::world::prelude::{Pose, Segment};
-    use crate::scene;
+    use crate::scene::test_scenes::fixture;
 
     /// A 6 cm box turned 45° at (-0.25, 0.1) and a 6 cm ball at (0.2, -0.1),
     /// at rest on a table under the default camera.
     fn world() -> World {
-        let toml = r#"name = "t"
-effects = ["gravity", "friction"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "box"
-shape = "box"
-size = [0.06, 0.06, 0.06]
-mass = 0.1
-color = "blue"
-position = [-0.25, 0.1]
-rotation_deg = [0.0, 0.0, 45.0]
-[[objects]]
-name = "ball"
-shape = "sphere"
-radius = 0.03
-mass = 0.1
-color = "red"
-position = [0.2, -0.1]
-"#;
-        World::new(&scene::parse(toml, "t.toml").expect("scene"))
+        World::new(&fixture("turned_box_and_ball"))
     }
 
     /// The distance from the camera ray of glass point `g` (its segment

@@ -429,6 +429,12 @@ mod tests {
         img
     }
 
+    /// Two frames of a `size` × `size` image: a disc of radius `r` at
+    /// `from`, then at `to`.
+    fn moved_disc(size: usize, from: [f32; 2], to: [f32; 2], r: f32) -> (ContactImage, ContactImage) {
+        (disc(size, size, from, r), disc(size, size, to, r))
+    }
+
     /// The 3 x 3 costs of `c(d) = big/2 (d.n)^2 + small/2 (d.t - along)^2`
     /// for the unit vectors `n` (across) and `t` (along).
     fn valley(big: f32, small: f32, n: [f32; 2], along: f32) -> [[f32; 3]; 3] {
@@ -463,8 +469,7 @@ mod tests {
 
     #[test]
     fn recovers_a_sub_pixel_shift_at_the_outline() {
-        let prev = disc(64, 64, [30.0, 30.0], 10.0);
-        let cur = disc(64, 64, [31.4, 28.7], 10.0);
+        let (prev, cur) = moved_disc(64, [30.0, 30.0], [31.4, 28.7], 10.0);
         let m = BlockMatcher::new(7, 3);
         // A point of the outline the motion crosses head-on: the whole
         // vector is observable.
@@ -486,8 +491,7 @@ mod tests {
 
     #[test]
     fn borders_and_mismatched_frames() {
-        let prev = disc(16, 16, [2.0, 2.0], 4.0);
-        let cur = disc(16, 16, [3.0, 2.0], 4.0);
+        let (prev, cur) = moved_disc(16, [2.0, 2.0], [3.0, 2.0], 4.0);
         let m = BlockMatcher::new(7, 4);
         let f = m.flow_at(&prev, &cur, [7, 2], [0.0, 0.0]).expect("same size");
         assert!((f[0] - 1.0).abs() < 0.3, "{f:?}");

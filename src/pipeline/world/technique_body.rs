@@ -238,25 +238,10 @@ mod tests {
     use super::*;
     use crate::scene;
 
-    /// A 6 cm box resting at the origin, pushed by nothing.
-    const SCENE: &str = r#"
-name = "one box"
-description = "A box for technique bodies to meet."
-effects = ["gravity", "friction", "joints"]
-[table]
-size = [1.0, 0.75]
-friction = 0.3
-[[objects]]
-name = "box"
-shape = "box"
-size = [0.06, 0.06, 0.03]
-mass = 0.1
-color = "orange"
-position = [0.0, 0.0]
-"#;
-
+    /// A 6 cm box resting at the origin (the built-in `cases/small_box`),
+    /// pushed by nothing.
     fn world() -> World {
-        World::new(&scene::parse(SCENE, "one box").expect("scene"))
+        World::new(&scene::load("cases/small_box").expect("scene"))
     }
 
     /// A 1 cm proxy cube resting on the table at `(x, y)`.

@@ -298,7 +298,7 @@ fn resting(p: &ObjectPose) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene;
+    use crate::scene::test_scenes::fixture;
 
     /// Steps the world and the tracker together `n` times.
     fn run(world: &mut World, tracker: &mut GoalTracker, n: usize) -> Progress {
@@ -309,32 +309,11 @@ mod tests {
         tracker.progress()
     }
 
-    fn setup(toml: &str) -> (World, GoalTracker) {
-        let scene = scene::parse(toml, "test.toml").unwrap_or_else(|e| panic!("{e}"));
+    /// The world and tracker of fixture scene `name` (`tests/scenes/`).
+    fn setup(name: &str) -> (World, GoalTracker) {
+        let scene = fixture(name);
         (World::new(&scene), GoalTracker::new(&scene))
     }
-
-    /// A 5 cm cube at the table centre and its target 20 cm away; dwell 0.5 s
-    /// at 60 Hz is 30 steps.
-    const POSITIONING: &str = r#"name = "p"
-effects = ["gravity", "friction"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "cube"
-shape = "box"
-size = [0.05, 0.05, 0.05]
-mass = 0.1
-color = "red"
-position = [0.0, 0.0]
-[goal]
-kind = "positioning"
-dwell_s = 0.5
-[[goal.targets]]
-object = "cube"
-position = [0.2, 0.1]
-tolerance = 0.015
-"#;
 
     fn put(world: &mut World, i: usize, x: f32, y: f32) {
         let id = ObjectId::new(i);
@@ -344,7 +323,9 @@ tolerance = 0.015
 
     #[test]
     fn an_object_counts_once_it_has_rested_on_its_target_for_the_dwell() {
-        let (mut world, mut tracker) = setup(POSITIONING);
+        // A 5 cm cube and its target 20 cm away; a dwell of 0.5 s at 60 Hz
+        // is 30 steps.
+        let (mut world, mut tracker) = setup("cube_to_target");
         assert_eq!(tracker.progress().total, 1);
         let p = run(&mut world, &mut tracker, 60);
         assert_eq!((p.placed, p.complete), (0, false), "resting away from the target does not count");
@@ -361,7 +342,7 @@ tolerance = 0.015
 
     #[test]
     fn leaving_the_target_restarts_the_dwell() {
-        let (mut world, mut tracker) = setup(POSITIONING);
+        let (mut world, mut tracker) = setup("cube_to_target");
         put(&mut world, 0, 0.2, 0.1);
         run(&mut world, &mut tracker, 25);
         // Just outside the tolerance for one step: the 25 steps are lost.
@@ -376,34 +357,7 @@ tolerance = 0.015
 
     #[test]
     fn sorting_counts_only_objects_in_a_zone_of_their_colour() {
-        let (mut world, mut tracker) = setup(
-            r#"name = "s"
-effects = ["gravity", "friction"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "r"
-shape = "box"
-size = [0.04, 0.04, 0.04]
-mass = 0.1
-color = "red"
-position = [-0.3, -0.2]
-[[objects]]
-name = "b"
-shape = "box"
-size = [0.04, 0.04, 0.04]
-mass = 0.1
-color = "blue"
-position = [-0.3, 0.2]
-[goal]
-kind = "sorting"
-dwell_s = 0.25
-[[goal.zones]]
-color = "red"
-min = [0.1, 0.1]
-max = [0.3, 0.3]
-"#,
-        );
+        let (mut world, mut tracker) = setup("sorting_red_blue");
         assert_eq!(tracker.progress().total, 1, "only the red object has a zone");
         put(&mut world, 1, 0.2, 0.2);
         let p = run(&mut world, &mut tracker, 60);
@@ -417,27 +371,7 @@ max = [0.3, 0.3]
     #[test]
     fn sorting_wants_the_whole_object_in_the_zone() {
         // An 8 cm cube and the sorting task's right-hand zone (x >= 0.28).
-        let (mut world, mut tracker) = setup(
-            r#"name = "s"
-effects = ["gravity", "friction"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "big"
-shape = "box"
-size = [0.08, 0.08, 0.05]
-mass = 0.2
-color = "blue"
-position = [0.0, 0.0]
-[goal]
-kind = "sorting"
-dwell_s = 0.25
-[[goal.zones]]
-color = "blue"
-min = [0.28, -0.375]
-max = [0.5, 0.375]
-"#,
-        );
+        let (mut world, mut tracker) = setup("sorting_big_box");
         // Its centre 1 cm inside the zone: 3 cm of it hang out.
         put(&mut world, 0, 0.29, 0.0);
         let p = run(&mut world, &mut tracker, 60);
@@ -452,42 +386,14 @@ max = [0.5, 0.375]
         assert!((d - 0.01).abs() < 1e-3, "depth {d}");
     }
 
-    const STEERING: &str = r#"name = "st"
-effects = ["gravity", "friction"]
-[table]
-size = [1.0, 0.75]
-[[objects]]
-name = "platform"
-shape = "box"
-body = "fixed"
-size = [0.8, 0.5, 0.05]
-color = "grey"
-position = [0.0, 0.0]
-[[objects]]
-name = "puck"
-shape = "cylinder"
-radius = 0.02
-height = 0.02
-mass = 0.05
-color = "red"
-position = [0.3, 0.0, 0.061]
-[goal]
-kind = "steering"
-object = "puck"
-platform = "platform"
-waypoints = [[0.1, 0.0], [-0.1, 0.0]]
-waypoint_radius = 0.04
-finish = [-0.3, 0.0]
-finish_radius = 0.04
-"#;
-
+    /// The puck (object 1) on the platform's top at `(x, y)`.
     fn put_on_platform(world: &mut World, x: f32, y: f32) {
         world.place_object(ObjectId::new(1), Vec3::new(x, y, 0.061), Quat::IDENTITY);
     }
 
     #[test]
     fn steering_passes_waypoints_in_order_then_the_finish() {
-        let (mut world, mut tracker) = setup(STEERING);
+        let (mut world, mut tracker) = setup("steering_platform");
         assert_eq!(tracker.progress().total, 3, "two waypoints and the finish");
         assert_eq!(tracker.next_waypoint(), Some(Vec2::new(0.1, 0.0)));
         // The finish before the waypoints does not count, nor does the second waypoint first.
@@ -510,7 +416,7 @@ finish_radius = 0.04
 
     #[test]
     fn dropping_the_steered_object_restarts_from_the_start() {
-        let (mut world, mut tracker) = setup(STEERING);
+        let (mut world, mut tracker) = setup("steering_platform");
         put_on_platform(&mut world, 0.1, 0.0);
         assert_eq!(run(&mut world, &mut tracker, 5).waypoints_passed, 1);
         // Off the platform's edge, on the table: 5 cm below its top.
