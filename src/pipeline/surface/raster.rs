@@ -164,14 +164,12 @@ struct Brush {
     peak: f32,
     /// Width of the soft edge (m), centred on the shape's edge.
     falloff: f32,
-    /// Half the falloff: pixels further outside the shape stay dark.
-    reach: f32,
-    /// Inclusive columns and rows of the pixels within reach of the box.
-    cols: [usize; 2],
-    rows: [usize; 2],
-    /// The centre of pixel (0, 0) and the pixel size (m); rows go down y.
-    x0: f32,
-    y0: f32,
+    /// Inclusive columns and rows of the pixels within reach of the box
+    /// (see [`pixel_window`]).
+    window: ([usize; 2], [usize; 2]),
+    /// The centre of pixel (0, 0) on the table (m); rows go down y.
+    origin: [f32; 2],
+    /// The pixel size (m).
     size: [f32; 2],
 }
 
@@ -190,28 +188,32 @@ impl Brush {
         }
         let falloff = falloff_px.max(1e-3) * sensor.metres_per_pixel();
         let reach = 0.5 * falloff;
-        let (cols, rows) = pixel_window(lo, hi, reach, sensor, image)?;
+        let window = pixel_window(lo, hi, reach, sensor, image)?;
         let size = sensor.pixel_size();
-        let x0 = -0.5 * sensor.table_width_m + 0.5 * size[0];
-        let y0 = 0.5 * sensor.table_depth_m - 0.5 * size[1];
-        Some(Brush { peak, falloff, reach, cols, rows, x0, y0, size })
+        let origin = [-0.5 * sensor.table_width_m + 0.5 * size[0], 0.5 * sensor.table_depth_m - 0.5 * size[1]];
+        Some(Brush { peak, falloff, window, origin, size })
+    }
+
+    /// Half the falloff: pixels further outside the shape stay dark.
+    fn reach(&self) -> f32 {
+        0.5 * self.falloff
     }
 
     /// Table x of column `c`'s pixel centres.
     fn x(&self, c: usize) -> f32 {
-        self.x0 + c as f32 * self.size[0]
+        self.origin[0] + c as f32 * self.size[0]
     }
 
     /// Table y of row `r`'s pixel centres.
     fn y(&self, r: usize) -> f32 {
-        self.y0 - r as f32 * self.size[1]
+        self.origin[1] - r as f32 * self.size[1]
     }
 
     /// The grey at signed distance `d` (m) from the edge, negative inside:
     /// half the peak on the edge, smoothstepped across the falloff; `None`
     /// beyond reach outside.
     fn grey(&self, d: f32) -> Option<u8> {
-        if d >= self.reach {
+        if d >= self.reach() {
             return None;
         }
         let t = (0.5 - d / self.falloff).clamp(0.0, 1.0);
@@ -229,7 +231,7 @@ fn draw_patch(
 ) -> Option<Range<usize>> {
     let peak = 255.0 * pressure * patch.level.clamp(0.0, 1.0);
     let brush = Brush::new(peak, patch.shape.bounds(), sensor, falloff_px, image)?;
-    let ([c0, c1], [r0, r1]) = (brush.cols, brush.rows);
+    let ([c0, c1], [r0, r1]) = brush.window;
     let shape = patch.shape.prepare();
     for r in r0..=r1 {
         let y = brush.y(r);
@@ -269,7 +271,7 @@ fn draw_outline(
         }
     }
     let brush = Brush::new(255.0 * pressure, [lo, hi], sensor, falloff_px, image)?;
-    let (reach, [c0, c1], [r0, r1]) = (brush.reach, brush.cols, brush.rows);
+    let (reach, ([c0, c1], [r0, r1])) = (brush.reach(), brush.window);
     let (w, h) = (c1 - c0 + 1, r1 - r0 + 1);
     // Unsigned distance to the nearest edge, capped at `reach`.
     let mut near = vec![reach; w * h];
