@@ -7,7 +7,7 @@ mod common;
 use common::scratch;
 use std::collections::BTreeMap;
 use std::path::Path;
-use surfacelab::harness::participant::{Learner, Manner, PlannerOptions, ScriptedRunner, Skill, run_scripted_with};
+use surfacelab::harness::participant::{Learner, Manner, PlannerOptions, ScriptedRunner, ScriptedTrial, Skill};
 use surfacelab::harness::study::{RUN_TOML, TRIALS_CSV};
 use surfacelab::harness::study::{RunOptions, StudyDesign, resume_study, run_study};
 use surfacelab::pipeline::technique::TechniqueKind;
@@ -31,6 +31,17 @@ fn tiny(task: &str, technique: TechniqueKind) -> StudyDesign {
         repetitions: 1,
         ..StudyDesign::default()
     }
+}
+
+fn scripted(
+    scene: &scene::Scene,
+    kind: TechniqueKind,
+    feedback: bool,
+    skill: Skill,
+    seed: u64,
+    time_limit_s: f64,
+) -> ScriptedTrial<'_> {
+    ScriptedTrial { scene, kind, feedback, skill, seed, time_limit_s }
 }
 
 #[test]
@@ -83,9 +94,9 @@ fn practice_tries_several_manners_and_what_is_learned_carries_over() {
     let fresh = Learner::new(Manner::Fingertips(1));
     let practice =
         PlannerOptions { explore: surfacelab::harness::participant::EXPLORE_PRACTICE, ..PlannerOptions::default() };
-    let (o, learned) =
-        run_scripted_with(&scene, TechniqueKind::PROXY, true, skill, 5, 120.0, fresh.clone(), practice, None)
-            .expect("practice");
+    let (o, learned) = scripted(&scene, TechniqueKind::PROXY, true, skill, 5, 120.0)
+        .run_with(fresh.clone(), practice, None)
+        .expect("practice");
     // The manners column: `name:time_s:net_m` per manner used.
     let used: Vec<&str> = o.manners.split(';').filter_map(|item| item.split(':').next()).collect();
     assert!(used.len() >= 3, "a practice trial tries manners: {used:?}");
@@ -93,7 +104,8 @@ fn practice_tries_several_manners_and_what_is_learned_carries_over() {
     // The same measured trial from the learned state and from a fresh one
     // differ: learning has an effect (and so the order of trials matters).
     let run = |l: Learner| {
-        run_scripted_with(&scene, TechniqueKind::PROXY, true, skill, 6, 120.0, l, PlannerOptions::default(), None)
+        scripted(&scene, TechniqueKind::PROXY, true, skill, 6, 120.0)
+            .run_with(l, PlannerOptions::default(), None)
             .expect("measured")
             .0
     };
@@ -109,7 +121,8 @@ fn the_perception_delay_model_is_an_option_off_by_default() {
     let delayed = PlannerOptions { perception_delay_s: 0.15, ..PlannerOptions::default() };
     let trial = |feedback: bool, options: PlannerOptions| {
         let learner = Learner::new(skill.habit());
-        run_scripted_with(&scene, TechniqueKind::JOINT, feedback, skill, 9, 20.0, learner, options, None)
+        scripted(&scene, TechniqueKind::JOINT, feedback, skill, 9, 20.0)
+            .run_with(learner, options, None)
             .expect("trial")
             .0
     };
@@ -135,7 +148,7 @@ fn every_study_task_is_completed_with_every_technique() {
             let done = (1..=3).find_map(|seed| {
                 let skill = Skill::draw(seed);
                 let trial = |learner, options, s| {
-                    run_scripted_with(&scene, kind, true, skill, s, limit, learner, options, None).expect("trial")
+                    scripted(&scene, kind, true, skill, s, limit).run_with(learner, options, None).expect("trial")
                 };
                 let (_, learned) = trial(Learner::new(skill.habit()), practice, seed);
                 let (o, _) = trial(learned, PlannerOptions::default(), seed + 100);

@@ -229,37 +229,21 @@ fn parameters(ui: &mut egui::Ui, lab: &mut Lab, actions: &mut Vec<Action>) {
         let kind = lab.technique();
         let c = lab.session.config_mut();
         let stride = c.particle_stride;
-        let strong = |on: bool, text: &str| if on { RichText::new(text).strong() } else { RichText::new(text).weak() };
+        let proxy = kind == TechniqueKind::PROXY;
+        let fingers = matches!(
+            kind,
+            TechniqueKind::PROXY | TechniqueKind::PARTICLE | TechniqueKind::HYBRID | TechniqueKind::JOINT
+        );
+        let particles = matches!(kind, TechniqueKind::PARTICLE | TechniqueKind::HYBRID);
+        ui.add(parameter(&mut c.proxy_mass, 0.05..=5.0, "proxy mass", proxy).logarithmic(true).suffix(" kg"));
+        ui.add(parameter(&mut c.proxy_weight, 0.1..=10.0, "proxy weight", proxy).logarithmic(true).suffix(" N"));
+        ui.add(parameter(&mut c.friction, 0.0..=3.0, "finger friction", fingers));
         ui.add(
-            Slider::new(&mut c.proxy_mass, 0.05..=5.0)
+            parameter(&mut c.joint_stiffness, 5.0..=1000.0, "joint stiffness", kind == TechniqueKind::JOINT)
                 .logarithmic(true)
-                .suffix(" kg")
-                .text(strong(kind == TechniqueKind::PROXY, "proxy mass")),
+                .suffix(" N/m"),
         );
-        ui.add(
-            Slider::new(&mut c.proxy_weight, 0.1..=10.0)
-                .logarithmic(true)
-                .suffix(" N")
-                .text(strong(kind == TechniqueKind::PROXY, "proxy weight")),
-        );
-        ui.add(Slider::new(&mut c.friction, 0.0..=3.0).text(strong(
-            matches!(
-                kind,
-                TechniqueKind::PROXY | TechniqueKind::PARTICLE | TechniqueKind::HYBRID | TechniqueKind::JOINT
-            ),
-            "finger friction",
-        )));
-        ui.add(
-            Slider::new(&mut c.joint_stiffness, 5.0..=1000.0)
-                .logarithmic(true)
-                .suffix(" N/m")
-                .text(strong(kind == TechniqueKind::JOINT, "joint stiffness")),
-        );
-        ui.add(
-            Slider::new(&mut c.particle_stride, 1..=8)
-                .suffix(" px")
-                .text(strong(matches!(kind, TechniqueKind::PARTICLE | TechniqueKind::HYBRID), "particle stride")),
-        );
+        ui.add(parameter(&mut c.particle_stride, 1..=8, "particle stride", particles).suffix(" px"));
         let stride_changed = c.particle_stride != stride;
         ui.label(
             RichText::new("Mass, weight and friction apply to new touches; the stride restarts the scene.")
@@ -273,6 +257,18 @@ fn parameters(ui: &mut egui::Ui, lab: &mut Lab, actions: &mut Vec<Action>) {
             actions.push(Action::DefaultParameters);
         }
     });
+}
+
+/// A technique parameter's slider, labelled strongly where the current
+/// technique reads the parameter (`used`) and weakly where it does not.
+fn parameter<'a, N: egui::emath::Numeric>(
+    value: &'a mut N,
+    range: std::ops::RangeInclusive<N>,
+    label: &str,
+    used: bool,
+) -> Slider<'a> {
+    let text = if used { RichText::new(label).strong() } else { RichText::new(label).weak() };
+    Slider::new(value, range).text(text)
 }
 
 fn controls(ui: &mut egui::Ui, lab: &mut Lab, state: &mut PanelState, actions: &mut Vec<Action>) {

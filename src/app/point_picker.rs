@@ -9,7 +9,7 @@
 //! screen pixel per camera pixel a click on pixel (x, y) gives exactly
 //! (x, y).
 
-use super::window_surface::WindowSurface;
+use super::window_surface::{WindowSurface, window_egui};
 use crate::input::images::{CameraImage, Pixels};
 use crate::render::GpuContext;
 use anyhow::{Context, anyhow};
@@ -134,12 +134,7 @@ impl Picker {
         let config = WindowSurface::config_for(&caps, format, usage, [inner.width, inner.height]);
         let GpuContext { device, queue, .. } = gpu;
         surface.configure(&device, &config);
-        let egui = egui::Context::default();
-        egui.set_theme(egui::Theme::Dark);
-        let max_side = device.limits().max_texture_dimension_2d as usize;
-        let ppp = window.scale_factor() as f32;
-        let state =
-            egui_winit::State::new(egui.clone(), egui::ViewportId::ROOT, &window, Some(ppp), None, Some(max_side));
+        let (egui, state) = window_egui(&window, &device);
         let renderer = egui_wgpu::Renderer::new(&device, format, egui_wgpu::RendererOptions::default());
         Ok(Gfx { window, surface, config, device, queue, egui, state, renderer, texture: None })
     }

@@ -163,27 +163,15 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
                 if tracker.is_placed(t.object) {
                     c[3] = 0.25;
                 }
-                match o.shape {
-                    Shape::Box { half_extents } => {
-                        let angle = o.rotation.to_euler(glam::EulerRot::ZYX).0;
-                        out.push(Decal::Rect {
-                            center: t.position,
-                            z: lift,
-                            half: half_extents.truncate() + Vec2::splat(t.tolerance * 0.5),
-                            angle,
-                            color: c,
-                            outline: Some(0.004),
-                        });
-                    }
-                    _ => out.push(Decal::Disc {
-                        center: t.position,
-                        z: lift,
-                        radius: o.shape.footprint_radius() + t.tolerance * 0.5,
-                        color: c,
-                        ring: Some(0.004),
-                    }),
-                }
-                out.push(Decal::Disc { center: t.position, z: lift, radius: 0.003, color: c, ring: None });
+                // The object's footprint grown by half the tolerance.
+                let footprint = if let Shape::Box { half_extents } = o.shape {
+                    let angle = o.rotation.to_euler(glam::EulerRot::ZYX).0;
+                    Decal::rect(t.position, half_extents.truncate() + Vec2::splat(t.tolerance * 0.5), c).turned(angle)
+                } else {
+                    Decal::disc(t.position, o.shape.footprint_radius() + t.tolerance * 0.5, c)
+                };
+                out.push(footprint.at(lift).outlined(0.004));
+                out.push(Decal::disc(t.position, 0.003, c).at(lift));
             }
         }
         Goal::Sorting { zones, .. } => {
@@ -191,23 +179,10 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
                 let mut c = z.color.rgba;
                 c[3] = 0.22;
                 let center = (z.min + z.max) * 0.5;
-                out.push(Decal::Rect {
-                    center,
-                    z: lift,
-                    half: (z.max - z.min) * 0.5,
-                    angle: 0.0,
-                    color: c,
-                    outline: None,
-                });
+                let half = (z.max - z.min) * 0.5;
+                out.push(Decal::rect(center, half, c).at(lift));
                 c[3] = 0.8;
-                out.push(Decal::Rect {
-                    center,
-                    z: lift * 2.0,
-                    half: (z.max - z.min) * 0.5 - Vec2::splat(0.003),
-                    angle: 0.0,
-                    color: c,
-                    outline: Some(0.004),
-                });
+                out.push(Decal::rect(center, half - Vec2::splat(0.003), c).at(lift * 2.0).outlined(0.004));
             }
         }
         Goal::Steering(g) => {
@@ -221,23 +196,16 @@ fn goal_decals(session: &Session) -> Vec<Decal> {
                 if i < passed {
                     c[3] = 0.3;
                 }
-                let ring = if i == passed { Some(0.006) } else { None };
-                out.push(Decal::Disc { center: *w, z: top, radius: g.waypoint_radius, color: c, ring });
+                let disc = Decal::disc(*w, g.waypoint_radius, c).at(top);
+                out.push(if i == passed { disc.outlined(0.006) } else { disc });
             }
-            out.push(Decal::Disc { center: g.finish, z: top, radius: g.finish_radius, color: TARGET_RED, ring: None });
+            out.push(Decal::disc(g.finish, g.finish_radius, TARGET_RED).at(top));
         }
         Goal::Gather { center, radius, .. } => {
-            out.push(Decal::Disc { center: *center, z: lift, radius: *radius, color: TARGET_RED, ring: Some(0.005) });
+            out.push(Decal::disc(*center, *radius, TARGET_RED).at(lift).outlined(0.005));
         }
         Goal::Region { min, max, .. } | Goal::SoftRegion { min, max, .. } => {
-            out.push(Decal::Rect {
-                center: (*min + *max) * 0.5,
-                z: lift,
-                half: (*max - *min) * 0.5,
-                angle: 0.0,
-                color: TARGET_RED,
-                outline: Some(0.005),
-            });
+            out.push(Decal::rect((*min + *max) * 0.5, (*max - *min) * 0.5, TARGET_RED).at(lift).outlined(0.005));
         }
     }
     out

@@ -8,7 +8,7 @@ use super::lab::Lab;
 use super::panel::{self, Action, HAND_MODES, PanelState};
 use super::ui_cache;
 use super::view::{self, ViewFrame};
-use super::window_surface::WindowSurface;
+use super::window_surface::{WindowSurface, window_egui};
 use super::{DemoOptions, Screenshot};
 use crate::input::{Button, Modifiers, MouseEvent, SourceEvent};
 use crate::render::{Alpha, GpuContext, Readback, Renderer, RendererOptions, readable, save_png, texture_2d};
@@ -466,11 +466,7 @@ impl App {
         let options = RendererOptions { feedback_line_px: 3.0 * scale, ..RendererOptions::for_adapter(&summary) };
         let view_format = format.remove_srgb_suffix();
         let renderer = Renderer::new(&gpu.device, &gpu.queue, view_format, options)?;
-        let egui = egui::Context::default();
-        egui.set_theme(egui::Theme::Dark);
-        let max_side = gpu.device.limits().max_texture_dimension_2d as usize;
-        let egui_state =
-            egui_winit::State::new(egui.clone(), egui::ViewportId::ROOT, &window, Some(scale), None, Some(max_side));
+        let (egui, egui_state) = window_egui(&window, &gpu.device);
         // No dithering: exact colours, so screenshots can be checked pixel by pixel.
         let egui_options = egui_wgpu::RendererOptions { dithering: false, ..egui_wgpu::RendererOptions::default() };
         let mut egui_renderer = egui_wgpu::Renderer::new(&gpu.device, format, egui_options);

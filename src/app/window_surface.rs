@@ -1,6 +1,7 @@
 //! A window's GPU surface, as both of the app's windows (the demo and
 //! `calibrate`'s point picker) set it up: an adapter that can present to
-//! the window, its device, and the surface format egui draws into.
+//! the window, its device, the surface format egui draws into, and egui
+//! for the window.
 
 use crate::render::{GpuContext, preferred_surface_format, request_adapter, request_device};
 use anyhow::{Context, anyhow};
@@ -61,4 +62,15 @@ impl WindowSurface {
             view_formats: vec![],
         }
     }
+}
+
+/// egui for `window` on `device`: a dark context and its winit state at
+/// the window's scale, no texture larger than the device takes.
+pub fn window_egui(window: &Window, device: &wgpu::Device) -> (egui::Context, egui_winit::State) {
+    let egui = egui::Context::default();
+    egui.set_theme(egui::Theme::Dark);
+    let max_side = device.limits().max_texture_dimension_2d as usize;
+    let scale = window.scale_factor() as f32;
+    let state = egui_winit::State::new(egui.clone(), egui::ViewportId::ROOT, window, Some(scale), None, Some(max_side));
+    (egui, state)
 }

@@ -70,6 +70,51 @@ pub enum Decal {
     Rect { center: Vec2, z: f32, half: Vec2, angle: f32, color: Rgba, outline: Option<f32> },
 }
 
+impl Decal {
+    /// A filled disc on the table top (`z` 0).
+    pub fn disc(center: Vec2, radius: f32, color: Rgba) -> Decal {
+        Decal::Disc { center, z: 0.0, radius, color, ring: None }
+    }
+
+    /// A filled rectangle on the table top (`z` 0), `half` either side of
+    /// `center` along the table's axes.
+    pub fn rect(center: Vec2, half: Vec2, color: Rgba) -> Decal {
+        Decal::Rect { center, z: 0.0, half, angle: 0.0, color, outline: None }
+    }
+
+    /// The same decal at height `z` (on a platform, or lifted over another).
+    pub fn at(self, z: f32) -> Decal {
+        match self {
+            Decal::Disc { center, radius, color, ring, .. } => Decal::Disc { center, z, radius, color, ring },
+            Decal::Rect { center, half, angle, color, outline, .. } => {
+                Decal::Rect { center, z, half, angle, color, outline }
+            }
+        }
+    }
+
+    /// Only its edge, a line `width` wide: a disc's ring, a rectangle's
+    /// outline.
+    pub fn outlined(self, width: f32) -> Decal {
+        match self {
+            Decal::Disc { center, z, radius, color, .. } => Decal::Disc { center, z, radius, color, ring: Some(width) },
+            Decal::Rect { center, z, half, angle, color, .. } => {
+                Decal::Rect { center, z, half, angle, color, outline: Some(width) }
+            }
+        }
+    }
+
+    /// A rectangle turned `angle` (rad) about z; a disc looks the same
+    /// turned, and stays as it is.
+    pub fn turned(self, angle: f32) -> Decal {
+        match self {
+            Decal::Rect { center, z, half, color, outline, .. } => {
+                Decal::Rect { center, z, half, angle, color, outline }
+            }
+            disc @ Decal::Disc { .. } => disc,
+        }
+    }
+}
+
 /// The technique's feedback, drawn only when feedback is on (the caller
 /// leaves this empty otherwise).
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -88,10 +88,10 @@ impl Depth {
     }
 }
 
-/// One pipeline's description, turned into a `RenderPipelineDescriptor`.
+/// One pipeline's description, turned into a `RenderPipelineDescriptor`
+/// by [`Pass::build`].
 struct Spec<'a> {
     label: &'a str,
-    layout: &'a wgpu::PipelineLayout,
     module: &'a wgpu::ShaderModule,
     vs: &'a str,
     /// `None`: depth only.
@@ -100,38 +100,87 @@ struct Spec<'a> {
     cull: Option<wgpu::Face>,
     depth: Depth,
     blend: Option<wgpu::BlendState>,
-    sample_count: u32,
 }
 
-fn build(device: &wgpu::Device, color_format: wgpu::TextureFormat, spec: Spec<'_>) -> wgpu::RenderPipeline {
-    let targets =
-        [Some(wgpu::ColorTargetState { format: color_format, blend: spec.blend, write_mask: wgpu::ColorWrites::ALL })];
-    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some(spec.label),
-        layout: Some(spec.layout),
-        vertex: wgpu::VertexState {
-            module: spec.module,
-            entry_point: Some(spec.vs),
-            compilation_options: wgpu::PipelineCompilationOptions::default(),
-            buffers: spec.buffers,
-        },
-        primitive: wgpu::PrimitiveState {
-            topology: wgpu::PrimitiveTopology::TriangleList,
-            front_face: wgpu::FrontFace::Ccw,
-            cull_mode: spec.cull,
-            ..Default::default()
-        },
-        depth_stencil: Some(spec.depth.state()),
-        multisample: wgpu::MultisampleState { count: spec.sample_count, ..Default::default() },
-        fragment: spec.fs.map(|entry| wgpu::FragmentState {
-            module: spec.module,
-            entry_point: Some(entry),
-            compilation_options: wgpu::PipelineCompilationOptions::default(),
-            targets: &targets,
-        }),
-        multiview_mask: None,
-        cache: None,
-    })
+impl<'a> Spec<'a> {
+    /// `module`'s `vs_main` and `fs_main` drawing `buffers`: both faces,
+    /// opaque depth, no blending.
+    fn new(
+        label: &'a str,
+        module: &'a wgpu::ShaderModule,
+        buffers: &'a [Option<wgpu::VertexBufferLayout<'a>>],
+    ) -> Self {
+        Spec {
+            label,
+            module,
+            vs: "vs_main",
+            fs: Some("fs_main"),
+            buffers,
+            cull: None,
+            depth: Depth::opaque(),
+            blend: None,
+        }
+    }
+
+    fn entry_points(self, vs: &'a str, fs: Option<&'a str>) -> Self {
+        Spec { vs, fs, ..self }
+    }
+
+    fn cull(self, cull: Option<wgpu::Face>) -> Self {
+        Spec { cull, ..self }
+    }
+
+    fn depth(self, depth: Depth) -> Self {
+        Spec { depth, ..self }
+    }
+
+    fn blend(self, blend: Option<wgpu::BlendState>) -> Self {
+        Spec { blend, ..self }
+    }
+}
+
+/// What every pipeline of one render pass shares.
+struct Pass<'a> {
+    device: &'a wgpu::Device,
+    format: wgpu::TextureFormat,
+    samples: u32,
+    layout: &'a wgpu::PipelineLayout,
+}
+
+impl Pass<'_> {
+    fn build(&self, spec: Spec<'_>) -> wgpu::RenderPipeline {
+        let targets = [Some(wgpu::ColorTargetState {
+            format: self.format,
+            blend: spec.blend,
+            write_mask: wgpu::ColorWrites::ALL,
+        })];
+        self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+            label: Some(spec.label),
+            layout: Some(self.layout),
+            vertex: wgpu::VertexState {
+                module: spec.module,
+                entry_point: Some(spec.vs),
+                compilation_options: wgpu::PipelineCompilationOptions::default(),
+                buffers: spec.buffers,
+            },
+            primitive: wgpu::PrimitiveState {
+                topology: wgpu::PrimitiveTopology::TriangleList,
+                front_face: wgpu::FrontFace::Ccw,
+                cull_mode: spec.cull,
+                ..Default::default()
+            },
+            depth_stencil: Some(spec.depth.state()),
+            multisample: wgpu::MultisampleState { count: self.samples, ..Default::default() },
+            fragment: spec.fs.map(|entry| wgpu::FragmentState {
+                module: spec.module,
+                entry_point: Some(entry),
+                compilation_options: wgpu::PipelineCompilationOptions::default(),
+                targets: &targets,
+            }),
+            multiview_mask: None,
+            cache: None,
+        })
+    }
 }
 
 fn shader(device: &wgpu::Device, (name, source): (&str, &'static str)) -> wgpu::ShaderModule {
@@ -231,34 +280,22 @@ impl Pipelines {
         let format = config.color_format;
         let alpha = Some(wgpu::BlendState::ALPHA_BLENDING);
 
+        // Slope-scaled bias against acne on surfaces grazing the light; the
+        // shader's normal offset does the rest.
+        let shadow_depth =
+            || Depth { bias: wgpu::DepthBiasState { constant: 2, slope_scale: 2.0, clamp: 0.0 }, ..Depth::opaque() };
+        let shadow_pass = Pass { device, format, samples: 1, layout: &shadow_layout };
         let shadow = |label, cull| {
-            build(
-                device,
-                format,
-                Spec {
-                    label,
-                    layout: &shadow_layout,
-                    module: &shadow_module,
-                    vs: "vs_main",
-                    fs: None,
-                    buffers: &mesh_buffers,
-                    cull,
-                    // Slope-scaled bias against acne on surfaces grazing the
-                    // light; the shader's normal offset does the rest.
-                    depth: Depth {
-                        bias: wgpu::DepthBiasState { constant: 2, slope_scale: 2.0, clamp: 0.0 },
-                        ..Depth::opaque()
-                    },
-                    blend: None,
-                    sample_count: 1,
-                },
-            )
+            let spec = Spec::new(label, &shadow_module, &mesh_buffers).entry_points("vs_main", None);
+            shadow_pass.build(spec.cull(cull).depth(shadow_depth()))
         };
-        let main = MainPass { device, format, samples, layout: &main_layout };
+        let main = Pass { device, format, samples, layout: &main_layout };
         let mesh = |label, cull| main.mesh(&mesh_module, &mesh_buffers, label, cull);
         let [flat, grid, decal] = main.surfaces(&flat_module, &grid_module, &decal_module, &mesh_buffers);
         let [feedback_lines_hidden, feedback_lines_visible, feedback_cubes_hidden, feedback_cubes_visible] =
             main.feedback(&feedback_module);
+        let overlay_pass = Pass { device, format, samples, layout: &overlay_pipeline_layout };
+        let overlay_buffers = [Some(OverlayRegion::layout())];
         Self {
             shadow_solid: shadow("shadow pipeline (solid)", Some(wgpu::Face::Back)),
             shadow_two_sided: shadow("shadow pipeline (two-sided)", None),
@@ -267,23 +304,12 @@ impl Pipelines {
             flat,
             grid,
             decal,
-            overlay: build(
-                device,
-                format,
-                Spec {
-                    label: "overlay pipeline",
-                    layout: &overlay_pipeline_layout,
-                    module: &overlay_module,
-                    vs: "vs_main",
-                    fs: Some("fs_main"),
-                    buffers: &[Some(OverlayRegion::layout())],
-                    cull: None,
-                    // The hands are on the glass, above everything the table shows:
-                    // drawn over objects (no depth test), never hidden by them.
-                    depth: Depth::test_only(Always),
-                    blend: alpha,
-                    sample_count: samples,
-                },
+            // The hands are on the glass, above everything the table shows:
+            // drawn over objects (no depth test), never hidden by them.
+            overlay: overlay_pass.build(
+                Spec::new("overlay pipeline", &overlay_module, &overlay_buffers)
+                    .depth(Depth::test_only(Always))
+                    .blend(alpha),
             ),
             feedback_lines_hidden,
             feedback_lines_visible,
@@ -296,15 +322,8 @@ impl Pipelines {
     }
 }
 
-/// What every pipeline of the main pass shares.
-struct MainPass<'a> {
-    device: &'a wgpu::Device,
-    format: wgpu::TextureFormat,
-    samples: u32,
-    layout: &'a wgpu::PipelineLayout,
-}
-
-impl MainPass<'_> {
+/// The main pass's pipelines.
+impl Pass<'_> {
     /// Meshes (spheres, cylinders, soft bodies), culled or two-sided.
     fn mesh(
         &self,
@@ -313,22 +332,7 @@ impl MainPass<'_> {
         label: &str,
         cull: Option<wgpu::Face>,
     ) -> wgpu::RenderPipeline {
-        build(
-            self.device,
-            self.format,
-            Spec {
-                label,
-                layout: self.layout,
-                module,
-                vs: "vs_main",
-                fs: Some("fs_main"),
-                buffers,
-                cull,
-                depth: Depth::opaque(),
-                blend: None,
-                sample_count: self.samples,
-            },
-        )
+        self.build(Spec::new(label, module, buffers).cull(cull))
     }
 
     /// The table's flat faces, its grid strips and the zone decals.
@@ -340,67 +344,26 @@ impl MainPass<'_> {
         mesh_buffers: &[Option<wgpu::VertexBufferLayout<'_>>],
     ) -> [wgpu::RenderPipeline; 3] {
         use wgpu::CompareFunction::LessEqual;
-        let alpha = Some(wgpu::BlendState::ALPHA_BLENDING);
-        let flat = build(
-            self.device,
-            self.format,
-            Spec {
-                label: "flat pipeline",
-                layout: self.layout,
-                module: flat_module,
-                vs: "vs_main",
-                fs: Some("fs_main"),
-                buffers: mesh_buffers,
-                cull: Some(wgpu::Face::Back),
-                depth: Depth::opaque(),
-                blend: None,
-                sample_count: self.samples,
+        let flat = self.build(Spec::new("flat pipeline", flat_module, mesh_buffers).cull(Some(wgpu::Face::Back)));
+        // Multiplicative: the strip darkens what the table shows.
+        let darken = wgpu::BlendState {
+            color: wgpu::BlendComponent {
+                src_factor: wgpu::BlendFactor::Dst,
+                dst_factor: wgpu::BlendFactor::Zero,
+                operation: wgpu::BlendOperation::Add,
             },
-        );
-        let grid = build(
-            self.device,
-            self.format,
-            Spec {
-                label: "grid pipeline",
-                layout: self.layout,
-                module: grid_module,
-                vs: "vs_main",
-                fs: Some("fs_main"),
-                buffers: &[Some(StripInstance::layout())],
-                cull: None,
-                depth: Depth::test_only(LessEqual),
-                // Multiplicative: the strip darkens what the table shows.
-                blend: Some(wgpu::BlendState {
-                    color: wgpu::BlendComponent {
-                        src_factor: wgpu::BlendFactor::Dst,
-                        dst_factor: wgpu::BlendFactor::Zero,
-                        operation: wgpu::BlendOperation::Add,
-                    },
-                    alpha: wgpu::BlendComponent {
-                        src_factor: wgpu::BlendFactor::Zero,
-                        dst_factor: wgpu::BlendFactor::One,
-                        operation: wgpu::BlendOperation::Add,
-                    },
-                }),
-                sample_count: self.samples,
+            alpha: wgpu::BlendComponent {
+                src_factor: wgpu::BlendFactor::Zero,
+                dst_factor: wgpu::BlendFactor::One,
+                operation: wgpu::BlendOperation::Add,
             },
-        );
-        let decal = build(
-            self.device,
-            self.format,
-            Spec {
-                label: "decal pipeline",
-                layout: self.layout,
-                module: decal_module,
-                vs: "vs_main",
-                fs: Some("fs_main"),
-                buffers: &[Some(DecalInstance::layout())],
-                cull: None,
-                depth: Depth::test_only(LessEqual),
-                blend: alpha,
-                sample_count: self.samples,
-            },
-        );
+        };
+        let strip_buffers = [Some(StripInstance::layout())];
+        let grid = Spec::new("grid pipeline", grid_module, &strip_buffers);
+        let grid = self.build(grid.depth(Depth::test_only(LessEqual)).blend(Some(darken)));
+        let decal_buffers = [Some(DecalInstance::layout())];
+        let decal = Spec::new("decal pipeline", decal_module, &decal_buffers);
+        let decal = self.build(decal.depth(Depth::test_only(LessEqual)).blend(Some(wgpu::BlendState::ALPHA_BLENDING)));
         [flat, grid, decal]
     }
 
@@ -408,67 +371,28 @@ impl MainPass<'_> {
     /// parts hidden behind objects and one for the visible parts.
     fn feedback(&self, feedback_module: &wgpu::ShaderModule) -> [wgpu::RenderPipeline; 4] {
         use wgpu::CompareFunction::{Greater, LessEqual};
-        let alpha = Some(wgpu::BlendState::ALPHA_BLENDING);
         let line_buffers = [Some(LineInstance::layout())];
         let cube_buffers = [Some(Vertex::layout()), Some(CubeInstance::layout())];
+        // Hidden parts pass where something nearer is drawn and leave the
+        // depth as it is; visible parts pass the usual test and write it.
+        let feedback = |label, vs, buffers: &[Option<wgpu::VertexBufferLayout<'_>>], cull, hidden: bool| {
+            let (fs, depth) = if hidden {
+                ("fs_hidden", Depth::test_only(Greater))
+            } else {
+                ("fs_visible", Depth { write: true, ..Depth::test_only(LessEqual) })
+            };
+            let spec = Spec::new(label, feedback_module, buffers).entry_points(vs, Some(fs)).cull(cull);
+            self.build(spec.depth(depth).blend(Some(wgpu::BlendState::ALPHA_BLENDING)))
+        };
         // Lines are quads whose winding depends on the screen direction, so
         // they are not culled; cubes are.
-        let feedback = |label, vs, fs, buffers, cull, compare, write| {
-            build(
-                self.device,
-                self.format,
-                Spec {
-                    label,
-                    layout: self.layout,
-                    module: feedback_module,
-                    vs,
-                    fs: Some(fs),
-                    buffers,
-                    cull,
-                    depth: Depth { write, ..Depth::test_only(compare) },
-                    blend: alpha,
-                    sample_count: self.samples,
-                },
-            )
-        };
         let back = Some(wgpu::Face::Back);
-        let lines_hidden = feedback(
-            "feedback lines pipeline (hidden parts)",
-            "vs_line",
-            "fs_hidden",
-            &line_buffers,
-            None,
-            Greater,
-            false,
-        );
-        let lines_visible = feedback(
-            "feedback lines pipeline (visible parts)",
-            "vs_line",
-            "fs_visible",
-            &line_buffers,
-            None,
-            LessEqual,
-            true,
-        );
-        let cubes_hidden = feedback(
-            "feedback cubes pipeline (hidden parts)",
-            "vs_cube",
-            "fs_hidden",
-            &cube_buffers,
-            back,
-            Greater,
-            false,
-        );
-        let cubes_visible = feedback(
-            "feedback cubes pipeline (visible parts)",
-            "vs_cube",
-            "fs_visible",
-            &cube_buffers,
-            back,
-            LessEqual,
-            true,
-        );
-        [lines_hidden, lines_visible, cubes_hidden, cubes_visible]
+        [
+            feedback("feedback lines pipeline (hidden parts)", "vs_line", &line_buffers, None, true),
+            feedback("feedback lines pipeline (visible parts)", "vs_line", &line_buffers, None, false),
+            feedback("feedback cubes pipeline (hidden parts)", "vs_cube", &cube_buffers, back, true),
+            feedback("feedback cubes pipeline (visible parts)", "vs_cube", &cube_buffers, back, false),
+        ]
     }
 }
 

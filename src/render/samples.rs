@@ -107,13 +107,7 @@ pub fn positioning() -> DrawList {
         list.objects.push(box_on(Vec2::new(x, y), 0.0, Vec3::splat(0.05), yaw, colors::OBJECTS[4 + i]));
     }
     for (x, y) in [(-0.24, 0.16), (0.24, 0.16), (-0.24, -0.17), (0.24, -0.17)] {
-        list.decals.push(Decal::Disc {
-            center: Vec2::new(x, y),
-            z: 0.0,
-            radius: 0.042,
-            color: colors::TARGET_RED,
-            ring: Some(0.005),
-        });
+        list.decals.push(Decal::disc(Vec2::new(x, y), 0.042, colors::TARGET_RED).outlined(0.005));
     }
     list
 }
@@ -130,31 +124,12 @@ pub fn steering() -> DrawList {
     let z = PLATFORM_HEIGHT;
     let waypoints = [(-0.17, -0.09), (-0.08, 0.02), (0.02, -0.05), (0.10, 0.06)];
     for (x, y) in waypoints {
-        list.decals.push(Decal::Disc {
-            center: Vec2::new(x, y),
-            z,
-            radius: 0.022,
-            color: colors::WAYPOINT_BLUE,
-            ring: None,
-        });
+        list.decals.push(Decal::disc(Vec2::new(x, y), 0.022, colors::WAYPOINT_BLUE).at(z));
     }
-    list.decals.push(Decal::Rect {
-        center: Vec2::new(0.185, 0.095),
-        z,
-        half: Vec2::new(0.03, 0.03),
-        angle: 0.0,
-        color: colors::TARGET_RED,
-        outline: None,
-    });
+    list.decals.push(Decal::rect(Vec2::new(0.185, 0.095), Vec2::new(0.03, 0.03), colors::TARGET_RED).at(z));
     // The start, outlined.
-    list.decals.push(Decal::Rect {
-        center: Vec2::new(-0.185, -0.11),
-        z,
-        half: Vec2::new(0.028, 0.028),
-        angle: 0.0,
-        color: [0.9, 0.9, 0.88, 1.0],
-        outline: Some(0.003),
-    });
+    let start = Decal::rect(Vec2::new(-0.185, -0.11), Vec2::new(0.028, 0.028), [0.9, 0.9, 0.88, 1.0]);
+    list.decals.push(start.at(z).outlined(0.003));
     list.objects.push(cylinder_on(Vec2::new(-0.17, -0.09), z, 0.018, 0.03, colors::OBJECTS[0]));
     list
 }
@@ -248,29 +223,9 @@ pub fn shapes() -> DrawList {
         color: c[7],
     });
     list.deformables.push(draped_sheet(Vec2::new(0.13, -0.07), Vec2::new(0.09, 0.07), 16, c[5]));
-    list.decals.push(Decal::Rect {
-        center: Vec2::new(0.0, -0.03),
-        z: 0.0,
-        half: Vec2::new(0.05, 0.025),
-        angle: 0.3,
-        color: colors::WAYPOINT_BLUE,
-        outline: None,
-    });
-    list.decals.push(Decal::Rect {
-        center: Vec2::new(-0.17, -0.06),
-        z: 0.0,
-        half: Vec2::new(0.09, 0.05),
-        angle: 0.0,
-        color: colors::TARGET_RED,
-        outline: Some(0.003),
-    });
-    list.decals.push(Decal::Disc {
-        center: Vec2::new(0.06, 0.12),
-        z: 0.0,
-        radius: 0.035,
-        color: colors::TARGET_RED,
-        ring: Some(0.004),
-    });
+    list.decals.push(Decal::rect(Vec2::new(0.0, -0.03), Vec2::new(0.05, 0.025), colors::WAYPOINT_BLUE).turned(0.3));
+    list.decals.push(Decal::rect(Vec2::new(-0.17, -0.06), Vec2::new(0.09, 0.05), colors::TARGET_RED).outlined(0.003));
+    list.decals.push(Decal::disc(Vec2::new(0.06, 0.12), 0.035, colors::TARGET_RED).outlined(0.004));
     list
 }
 

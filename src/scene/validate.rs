@@ -588,10 +588,11 @@ impl Checker<'_> {
                 format!("{thickness} is out of range (up to {} m)", default::MAX_SOFT_THICKNESS),
             ));
         }
-        let resolution = self.soft_resolution(&span, i, &b, kind, size)?;
-        let position = self.soft_position(&span, i, &b, kind, size, thickness, table)?;
-        let mass = self.soft_mass(&span, i, &b, kind, size)?;
-        self.cloth_only_keys(&span, i, &b, kind)?;
+        let entry = SoftEntry { span: &span, i, file: &b, kind, size };
+        let resolution = self.soft_resolution(&entry)?;
+        let position = self.soft_position(&entry, thickness, table)?;
+        let mass = self.soft_mass(&entry)?;
+        self.cloth_only_keys(&entry)?;
         let tear_strain = match b.tear_strain {
             Some(t) => Some(
                 self.positive(&span, &f("tear_strain"), t)
@@ -638,19 +639,9 @@ impl Checker<'_> {
 
     /// Where a soft body starts: as written, or resting on the table at
     /// `[x, y]`; on the table either way.
-    #[allow(clippy::too_many_arguments)]
-    fn soft_position(
-        &self,
-        span: &Range<usize>,
-        i: usize,
-        b: &SoftBodyFile,
-        kind: SoftKind,
-        size: Vec3,
-        thickness: f32,
-        table: &Table,
-    ) -> Result<Vec3, SceneError> {
-        let f = |field: &str| format!("soft_bodies[{i}].{field}");
-        let position = match b.position.as_slice() {
+    fn soft_position(&self, e: &SoftEntry, thickness: f32, table: &Table) -> Result<Vec3, SceneError> {
+        let (span, kind, size, f) = (e.span, e.kind, e.size, |field: &str| e.field(field));
+        let position = match e.file.position.as_slice() {
             [x, y] => Vec3::new(*x, *y, if kind == SoftKind::Cloth { thickness } else { size.z / 2.0 + thickness }),
             [x, y, z] => Vec3::new(*x, *y, *z),
             _ => return Err(self.err(span, f("position"), "must be [x, y] or [x, y, z]")),
@@ -670,22 +661,14 @@ impl Checker<'_> {
 
     /// A soft body's particle grid: as written, or from its size at the
     /// kind's default spacing; never more particles than the bound.
-    fn soft_resolution(
-        &self,
-        span: &Range<usize>,
-        i: usize,
-        b: &SoftBodyFile,
-        kind: SoftKind,
-        size: Vec3,
-    ) -> Result<[usize; 3], SceneError> {
-        let span = span.clone();
-        let f = |field: &str| format!("soft_bodies[{i}].{field}");
+    fn soft_resolution(&self, e: &SoftEntry) -> Result<[usize; 3], SceneError> {
+        let (span, kind, size, f) = (e.span, e.kind, e.size, |field: &str| e.field(field));
         let dims = if kind == SoftKind::Cloth { 2 } else { 3 };
         let spacing = if kind == SoftKind::Cloth { default::CLOTH_SPACING } else { default::VOLUME_SPACING };
-        let resolution = if let Some(r) = &b.resolution {
+        let resolution = if let Some(r) = &e.file.resolution {
             if r.len() != dims {
                 return Err(self.err(
-                    &span,
+                    span,
                     f("resolution"),
                     format!("needs {dims} entries, one per side, got {}", r.len()),
                 ));
@@ -693,7 +676,7 @@ impl Checker<'_> {
             let mut out = [1usize; 3];
             let (lo, hi) = default::RESOLUTION_RANGE;
             for (k, n) in r.iter().enumerate() {
-                out[k] = self.count(&span, &f(&format!("resolution[{k}]")), *n, lo, hi)? as usize;
+                out[k] = self.count(span, &f(&format!("resolution[{k}]")), *n, lo, hi)? as usize;
             }
             out
         } else {
@@ -704,7 +687,7 @@ impl Checker<'_> {
         let particles = resolution.iter().product::<usize>();
         if particles > default::MAX_SOFT_PARTICLES {
             return Err(self.err(
-                &span,
+                span,
                 f("resolution"),
                 format!("{particles} particles is too many (at most {})", default::MAX_SOFT_PARTICLES),
             ));
@@ -713,17 +696,11 @@ impl Checker<'_> {
     }
 
     /// Keys only a cloth has, on anything else, are an error (not ignored).
-    fn cloth_only_keys(
-        &self,
-        span: &Range<usize>,
-        i: usize,
-        b: &SoftBodyFile,
-        kind: SoftKind,
-    ) -> Result<(), SceneError> {
-        if kind == SoftKind::Cloth {
+    fn cloth_only_keys(&self, e: &SoftEntry) -> Result<(), SceneError> {
+        if e.kind == SoftKind::Cloth {
             return Ok(());
         }
-        let f = |field: &str| format!("soft_bodies[{i}].{field}");
+        let (span, b, f) = (e.span, e.file, |field: &str| e.field(field));
         if b.bending.is_some() {
             return Err(self.err(span, f("bending"), "only a cloth has bending springs"));
         }
@@ -738,35 +715,27 @@ impl Checker<'_> {
 
     /// A soft body's mass: `mass`, or `density` times its area (cloth) or
     /// volume, one of the two.
-    fn soft_mass(
-        &self,
-        span: &Range<usize>,
-        i: usize,
-        b: &SoftBodyFile,
-        kind: SoftKind,
-        size: Vec3,
-    ) -> Result<f32, SceneError> {
-        let span = span.clone();
-        let f = |field: &str| format!("soft_bodies[{i}].{field}");
+    fn soft_mass(&self, e: &SoftEntry) -> Result<f32, SceneError> {
+        let (span, b, kind, size, f) = (e.span, e.file, e.kind, e.size, |field: &str| e.field(field));
         let dims = if kind == SoftKind::Cloth { 2 } else { 3 };
         let measure = if dims == 2 { size.x * size.y } else { size.x * size.y * size.z };
         let mass = match (b.mass, b.density) {
-            (Some(m), None) => self.within(&span, &f("mass"), m, bounds::MASS_KG)?,
+            (Some(m), None) => self.within(span, &f("mass"), m, bounds::MASS_KG)?,
             (None, Some(d)) => {
-                let mass = self.within(&span, &f("density"), d, bounds::DENSITY)? * measure;
+                let mass = self.within(span, &f("density"), d, bounds::DENSITY)? * measure;
                 let (lo, hi) = bounds::MASS_KG;
                 if !(lo..=hi).contains(&mass) {
                     return Err(self.err(
-                        &span,
+                        span,
                         f("density"),
                         format!("gives a mass of {} kg, out of range ({}..={} kg)", human(mass), human(lo), human(hi)),
                     ));
                 }
                 mass
             }
-            (Some(_), Some(_)) => return Err(self.err(&span, f("density"), "give `mass` or `density`, not both")),
+            (Some(_), Some(_)) => return Err(self.err(span, f("density"), "give `mass` or `density`, not both")),
             (None, None) => {
-                return Err(self.err(&span, f("mass"), format!("a {} needs `mass` (kg) or `density`", kind.name())));
+                return Err(self.err(span, f("mass"), format!("a {} needs `mass` (kg) or `density`", kind.name())));
             }
         };
         Ok(mass)
@@ -801,6 +770,24 @@ impl Checker<'_> {
             GoalKind::Region => r.region(&g),
             GoalKind::ClothFlat | GoalKind::Torn => r.soft_body(&g),
         }
+    }
+}
+
+/// A `[[soft_bodies]]` entry while its derived values (grid, position,
+/// mass) are checked: where it is written, its index, the entry, and its
+/// kind and size, checked before them.
+struct SoftEntry<'a> {
+    span: &'a Range<usize>,
+    i: usize,
+    file: &'a SoftBodyFile,
+    kind: SoftKind,
+    size: Vec3,
+}
+
+impl SoftEntry<'_> {
+    /// The path of one of its keys in error messages.
+    fn field(&self, field: &str) -> String {
+        format!("soft_bodies[{}].{field}", self.i)
     }
 }
 

@@ -50,6 +50,13 @@ impl Manner {
         Manner::ForearmSweep,
     ];
 
+    /// Whether every situation allows it: a repertoire needs one such
+    /// manner to fall back on (the sweeps need a cluster, the bimanual drag
+    /// two objects, the pinch an object narrow enough to grip).
+    pub fn works_anywhere(self) -> bool {
+        matches!(self, Manner::Fingertips(_) | Manner::FlatHand | Manner::PushFingertip | Manner::PushEdge)
+    }
+
     /// The name written to `trials.csv` and `strategies.csv`.
     pub fn name(self) -> &'static str {
         match self {

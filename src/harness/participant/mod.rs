@@ -19,5 +19,5 @@ pub use planner::{Planner, PlannerOptions};
 pub use repertoire::{PRESETS, Repertoire, RepertoireError};
 pub use runner::{ReplayRunner, ScriptedRunner, participant_skill};
 pub use skill::{HandMode, Skill};
-pub use trial::{FrameLog, MOVING_SPEED, TrialStep, objects_moving, run_scripted, run_scripted_with, run_trial};
+pub use trial::{FrameLog, MOVING_SPEED, ScriptedTrial, TrialStep, objects_moving, run_trial};
 pub use usage::Usage;

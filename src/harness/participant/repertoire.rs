@@ -103,15 +103,7 @@ impl Repertoire {
             bits |= 1 << m.index();
         }
         let set = Repertoire(bits);
-        let fallback = [
-            Manner::Fingertips(1),
-            Manner::Fingertips(2),
-            Manner::Fingertips(3),
-            Manner::FlatHand,
-            Manner::PushFingertip,
-            Manner::PushEdge,
-        ];
-        if fallback.iter().any(|&m| set.allows(m)) {
+        if Manner::ALL.into_iter().any(|m| m.works_anywhere() && set.allows(m)) {
             Ok(set)
         } else {
             Err(RepertoireError::NoFallback(spec.to_owned()))

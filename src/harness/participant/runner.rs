@@ -108,17 +108,15 @@ impl ScriptedParticipant<'_> {
             perception_delay_s: runner.perception_delay_s(),
             repertoire: runner.repertoire()?,
         };
-        let (result, learner) = super::run_scripted_with(
-            &scene,
-            runner.kind(spec.technique),
-            spec.feedback,
-            self.skill,
-            spec.seed,
-            limit,
-            self.learner.clone(),
-            options,
-            log.as_mut(),
-        )?;
+        let trial = super::ScriptedTrial {
+            scene: &scene,
+            kind: runner.kind(spec.technique),
+            feedback: spec.feedback,
+            skill: self.skill,
+            seed: spec.seed,
+            time_limit_s: limit,
+        };
+        let (result, learner) = trial.run_with(self.learner.clone(), options, log.as_mut())?;
         self.learner = learner;
         if let Some(log) = log {
             log.finish().context("writing the trial's frames")?;

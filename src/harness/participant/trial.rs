@@ -58,51 +58,52 @@ pub fn run_trial(
     })
 }
 
-/// Runs one scripted trial with a fresh participant whose habit is
-/// `skill`'s, exploiting its priors (the tradeoff benchmark uses this).
-pub fn run_scripted(
-    scene: &Scene,
-    kind: TechniqueKind,
-    feedback: bool,
-    skill: Skill,
-    seed: u64,
-    time_limit_s: f64,
-) -> Result<TrialResult, SessionError> {
-    let learner = Learner::new(skill.habit());
-    Ok(run_scripted_with(scene, kind, feedback, skill, seed, time_limit_s, learner, PlannerOptions::default(), None)?.0)
+/// One scripted trial: the scene, the technique and whether the input is
+/// shown, the participant's skill, the seed of its noise and the time limit.
+#[derive(Debug, Clone, Copy)]
+pub struct ScriptedTrial<'a> {
+    pub scene: &'a Scene,
+    pub kind: TechniqueKind,
+    pub feedback: bool,
+    pub skill: Skill,
+    pub seed: u64,
+    pub time_limit_s: f64,
 }
 
-/// Runs one scripted trial for a participant who has learned `learner` so
-/// far; returns what it learned too. The result names the manner used for
-/// the most time (`strategy`) and each manner's time and net progress
-/// (`manners`). Writes every frame to `frames` when given.
-#[allow(clippy::too_many_arguments)]
-pub fn run_scripted_with(
-    scene: &Scene,
-    kind: TechniqueKind,
-    feedback: bool,
-    skill: Skill,
-    seed: u64,
-    time_limit_s: f64,
-    learner: Learner,
-    options: PlannerOptions,
-    frames: Option<&mut FrameLog>,
-) -> Result<(TrialResult, Learner), SessionError> {
-    let mut session = Session::new(scene, kind, SessionOptions::default())?;
-    let mut planner = Planner::new(skill, feedback, seed, learner, options);
-    let next = |s: &Session| {
-        let hands = planner.hands(s);
-        let (hands_down, fingers_down) = planner.hands_down();
-        TrialStep { hands, hands_down, fingers_down }
-    };
-    let result = run_trial(&mut session, time_limit_s, time_limit_s, next, frames)?;
-    let (learner, usage) = planner.finish(session.time());
-    let result = TrialResult {
-        strategy: usage.main().map(|m| m.name().to_owned()).unwrap_or_default(),
-        manners: usage.to_column(),
-        ..result
-    };
-    Ok((result, learner))
+impl ScriptedTrial<'_> {
+    /// Runs it with a fresh participant whose habit is the skill's,
+    /// exploiting its priors (the tradeoff benchmark uses this).
+    pub fn run(&self) -> Result<TrialResult, SessionError> {
+        let learner = Learner::new(self.skill.habit());
+        Ok(self.run_with(learner, PlannerOptions::default(), None)?.0)
+    }
+
+    /// Runs it for a participant who has learned `learner` so far; returns
+    /// what it learned too. The result names the manner used for the most
+    /// time (`strategy`) and each manner's time and net progress
+    /// (`manners`). Writes every frame to `frames` when given.
+    pub fn run_with(
+        &self,
+        learner: Learner,
+        options: PlannerOptions,
+        frames: Option<&mut FrameLog>,
+    ) -> Result<(TrialResult, Learner), SessionError> {
+        let mut session = Session::new(self.scene, self.kind, SessionOptions::default())?;
+        let mut planner = Planner::new(self.skill, self.feedback, self.seed, learner, options);
+        let next = |s: &Session| {
+            let hands = planner.hands(s);
+            let (hands_down, fingers_down) = planner.hands_down();
+            TrialStep { hands, hands_down, fingers_down }
+        };
+        let result = run_trial(&mut session, self.time_limit_s, self.time_limit_s, next, frames)?;
+        let (learner, usage) = planner.finish(session.time());
+        let result = TrialResult {
+            strategy: usage.main().map(|m| m.name().to_owned()).unwrap_or_default(),
+            manners: usage.to_column(),
+            ..result
+        };
+        Ok((result, learner))
+    }
 }
 
 /// Per-frame rows of one trial (`frames/p<participant>_t<order>.csv`): tidy,

@@ -14,9 +14,10 @@
 
 use super::anova::{EffectTest, TwoWayData, rm_anova};
 use super::cells::{TaskCells, task_cells};
+use super::csv_rows::{read_rows, write_rows};
 use super::design::StudyDesign;
 use super::error::StudyError;
-use super::output::{TrialRow, write_atomically};
+use super::output::TrialRow;
 use super::pairwise::{holm, paired_t};
 use crate::pipeline::technique::TechniqueKind;
 use serde::{Deserialize, Serialize};
@@ -149,32 +150,19 @@ pub fn analyze(design: &StudyDesign, rows: &[TrialRow]) -> Analysis {
     out
 }
 
-/// Writes rows with a header (written even for no rows, so the file always
-/// says its columns).
-fn write_rows<T: Serialize>(path: &Path, header: &[&str], rows: &[T]) -> Result<(), StudyError> {
-    let mut w = csv::WriterBuilder::new().has_headers(false).from_writer(Vec::new());
-    w.write_record(header).map_err(StudyError::csv(path))?;
-    for row in rows {
-        w.serialize(row).map_err(StudyError::csv(path))?;
-    }
-    let bytes = w.into_inner().map_err(|e| StudyError::io(path)(e.into_error()))?;
-    write_atomically(path, &bytes)
-}
-
 /// `anova.csv` columns.
 pub const ANOVA_COLUMNS: [&str; 9] = ["task", "effect", "df1", "df2", "F", "p", "epsilon_gg", "p_gg", "eta_p2"];
 /// `pairwise.csv` columns.
 pub const PAIRWISE_COLUMNS: [&str; 8] = ["task", "a", "b", "mean_diff_s", "t", "df", "p_holm", "dz"];
 
 pub fn write_anova(path: &Path, rows: &[AnovaRow]) -> Result<(), StudyError> {
-    write_rows(path, &ANOVA_COLUMNS, rows)
+    write_rows(path, Some(&ANOVA_COLUMNS), rows)
 }
 
 pub fn write_pairwise(path: &Path, rows: &[PairwiseRow]) -> Result<(), StudyError> {
-    write_rows(path, &PAIRWISE_COLUMNS, rows)
+    write_rows(path, Some(&PAIRWISE_COLUMNS), rows)
 }
 
 pub fn read_anova(path: &Path) -> Result<Vec<AnovaRow>, StudyError> {
-    let mut r = csv::Reader::from_path(path).map_err(StudyError::csv(path))?;
-    r.deserialize().collect::<Result<_, _>>().map_err(StudyError::csv(path))
+    read_rows(path)
 }

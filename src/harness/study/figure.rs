@@ -89,12 +89,8 @@ fn draw<DB: DrawingBackend>(
     summary: &[SummaryRow],
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
-    root.fill(&WHITE).map_err(e)?;
-    let root =
-        root.titled("Completion time: mean, within-subject 95% CI (Cousineau-Morey)", (FONT, TITLE_SIZE)).map_err(e)?;
-    let (_, height) = root.dim_in_pixel();
-    let (plots, legend) = root.split_vertically(height.saturating_sub(84));
-    let panels = plots.split_evenly((1, design.tasks.len().max(1)));
+    let title = "Completion time: mean, within-subject 95% CI (Cousineau-Morey)";
+    let (panels, legend) = page(root, title, design.tasks.len(), 84)?;
 
     let techniques = &design.techniques;
     let levels = &design.feedback;
@@ -142,8 +138,28 @@ fn draw<DB: DrawingBackend>(
         }
     }
 
-    draw_legend(&legend, levels, summary.iter().any(|r| r.failed > 0))?;
+    draw_legend(&legend, levels, 1.0, summary.iter().any(|r| r.failed > 0))?;
     root.present().map_err(e)
+}
+
+/// A part of a figure's drawing.
+type Area<DB> = DrawingArea<DB, Shift>;
+
+/// What both this figure and `seeds.png` draw on: a white page titled
+/// `title`, a panel per task side by side, and under them a strip
+/// `legend_height` pixels high for the legend.
+pub(super) fn page<DB: DrawingBackend>(
+    root: &Area<DB>,
+    title: &str,
+    tasks: usize,
+    legend_height: u32,
+) -> Result<(Vec<Area<DB>>, Area<DB>), String> {
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    root.fill(&WHITE).map_err(e)?;
+    let root = root.titled(title, (FONT, TITLE_SIZE)).map_err(e)?;
+    let (_, height) = root.dim_in_pixel();
+    let (plots, legend) = root.split_vertically(height.saturating_sub(legend_height));
+    Ok((plots.split_evenly((1, tasks.max(1))), legend))
 }
 
 /// Width of a technique's group of bars, in categories.
@@ -200,11 +216,12 @@ pub(super) fn bar_span(ti: usize, li: usize, levels: usize) -> (f64, f64) {
     (x0 + 0.02, x0 + bar_width - 0.02)
 }
 
-/// One legend for all panels, centred under them; a note in red when some
-/// trials failed.
-fn draw_legend<DB: DrawingBackend>(
+/// One legend for all panels, centred under them, its swatches at the
+/// bars' opacity `alpha`; a note in red when some trials failed.
+pub(super) fn draw_legend<DB: DrawingBackend>(
     legend: &DrawingArea<DB, Shift>,
     levels: &[bool],
+    alpha: f64,
     any_failed: bool,
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
@@ -213,7 +230,7 @@ fn draw_legend<DB: DrawingBackend>(
     let mut x = (width as i32 - entry_width * levels.len() as i32) / 2;
     for &fb in levels {
         let (color, text) = feedback_style(fb);
-        legend.draw(&Rectangle::new([(x, 12), (x + 22, 34)], color.filled())).map_err(e)?;
+        legend.draw(&Rectangle::new([(x, 12), (x + 22, 34)], color.mix(alpha).filled())).map_err(e)?;
         legend.draw(&Text::new(text, (x + 30, 14), (FONT, TEXT_SIZE))).map_err(e)?;
         x += entry_width;
     }

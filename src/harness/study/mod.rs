@@ -13,6 +13,7 @@ mod ablation;
 mod analysis;
 mod anova;
 mod cells;
+mod csv_rows;
 mod design;
 mod error;
 mod explain;

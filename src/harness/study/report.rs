@@ -138,6 +138,18 @@ fn explanation_blocks(b: &mut Vec<Block>, analysis: &Analysis, rows: &[StrategyR
     }
 }
 
+impl Block {
+    /// A table with a row per item, `cells` giving its columns: as many as
+    /// `head` has, by their type.
+    fn table<T, const N: usize>(
+        head: [&str; N],
+        items: impl IntoIterator<Item = T>,
+        cells: impl FnMut(T) -> [String; N],
+    ) -> Block {
+        Block::Table { head: head.map(s).to_vec(), rows: items.into_iter().map(cells).map(Vec::from).collect() }
+    }
+}
+
 /// Owned text: the blocks hold `String`s.
 fn s(x: &str) -> String {
     x.to_owned()
@@ -170,20 +182,13 @@ fn design_blocks(b: &mut Vec<Block>, design: &StudyDesign) {
         ),
         Some(note) => format!("Not fully balanced: {note}."),
     }));
-    b.push(Block::Table {
-        head: vec![s("participant"), s("feedback order"), s("technique order")],
-        rows: design
-            .plan()
-            .iter()
-            .map(|p| {
-                vec![
-                    format!("P{}", p.participant),
-                    p.feedback_order.iter().map(|&f| on_off(f)).collect::<Vec<_>>().join(", "),
-                    p.technique_order.iter().map(|t| t.label()).collect::<Vec<_>>().join(", "),
-                ]
-            })
-            .collect(),
-    });
+    b.push(Block::table(["participant", "feedback order", "technique order"], &design.plan(), |p| {
+        [
+            format!("P{}", p.participant),
+            p.feedback_order.iter().map(|&f| on_off(f)).collect::<Vec<_>>().join(", "),
+            p.technique_order.iter().map(|t| t.label()).collect::<Vec<_>>().join(", "),
+        ]
+    }));
 }
 
 /// The completion-time figure and its table.
@@ -193,26 +198,24 @@ fn time_blocks(b: &mut Vec<Block>, summary: &[SummaryRow]) {
     b.push(Block::Paragraph(s(
         "Mean over participants of each participant's mean of the measured repetitions. Whiskers: within-subject 95% CI (Cousineau–Morey). Failed trials (time limit reached, or the runner failed) are counted in red on the bars; a timed-out trial enters at the time limit, so a mean with failures is a lower bound.",
     )));
-    b.push(Block::Table {
-        head: ["task", "technique", "feedback", "mean s", "within 95% CI", "completed", "failed"].map(s).to_vec(),
-        rows: summary
-            .iter()
-            .map(|r| {
-                vec![
-                    r.task.clone(),
-                    r.technique.label().to_owned(),
-                    on_off(r.feedback).to_owned(),
-                    opt(r.mean_s, 1),
-                    match (r.ci95_within_low_s, r.ci95_within_high_s) {
-                        (Some(lo), Some(hi)) => format!("{lo:.1}–{hi:.1}"),
-                        _ => String::new(),
-                    },
-                    format!("{}/{}", r.completed, r.trials),
-                    r.failed.to_string(),
-                ]
-            })
-            .collect(),
-    });
+    b.push(Block::table(
+        ["task", "technique", "feedback", "mean s", "within 95% CI", "completed", "failed"],
+        summary,
+        |r| {
+            [
+                r.task.clone(),
+                r.technique.label().to_owned(),
+                on_off(r.feedback).to_owned(),
+                opt(r.mean_s, 1),
+                match (r.ci95_within_low_s, r.ci95_within_high_s) {
+                    (Some(lo), Some(hi)) => format!("{lo:.1}–{hi:.1}"),
+                    _ => String::new(),
+                },
+                format!("{}/{}", r.completed, r.trials),
+                r.failed.to_string(),
+            ]
+        },
+    ));
 }
 
 /// The RM-ANOVA table, naming participants left out.
@@ -232,25 +235,18 @@ fn anova_blocks(b: &mut Vec<Block>, analysis: &Analysis) {
             format!("Left out for a missing cell (runner failures): {}.", dropped.join("; "))
         }
     )));
-    b.push(Block::Table {
-        head: ["task", "effect", "df", "F", "p", "ε̂ (GG)", "p (GG)", "η²p"].map(s).to_vec(),
-        rows: analysis
-            .anova
-            .iter()
-            .map(|r| {
-                vec![
-                    r.task.clone(),
-                    r.effect.clone(),
-                    format!("{}, {}", r.df1, r.df2),
-                    opt(r.f, 2),
-                    r.p.map_or_else(String::new, fmt_p),
-                    opt(r.epsilon_gg, 3),
-                    r.p_gg.map_or_else(String::new, fmt_p),
-                    opt(r.eta_p2, 3),
-                ]
-            })
-            .collect(),
-    });
+    b.push(Block::table(["task", "effect", "df", "F", "p", "ε̂ (GG)", "p (GG)", "η²p"], &analysis.anova, |r| {
+        [
+            r.task.clone(),
+            r.effect.clone(),
+            format!("{}, {}", r.df1, r.df2),
+            opt(r.f, 2),
+            r.p.map_or_else(String::new, fmt_p),
+            opt(r.epsilon_gg, 3),
+            r.p_gg.map_or_else(String::new, fmt_p),
+            opt(r.eta_p2, 3),
+        ]
+    }));
 }
 
 /// Holm-corrected pairwise comparisons of techniques.
@@ -259,25 +255,18 @@ fn pairwise_blocks(b: &mut Vec<Block>, analysis: &Analysis) {
     b.push(Block::Paragraph(s(
         "Paired t-tests between techniques on each participant's mean over feedback levels, Holm-corrected over the technique pairs of a task; mean difference a − b (negative: a faster); Cohen's dz.",
     )));
-    b.push(Block::Table {
-        head: ["task", "a", "b", "a − b (s)", "t", "df", "p (Holm)", "dz"].map(s).to_vec(),
-        rows: analysis
-            .pairwise
-            .iter()
-            .map(|r| {
-                vec![
-                    r.task.clone(),
-                    r.a.label().to_owned(),
-                    r.b.label().to_owned(),
-                    opt(r.mean_diff_s, 1),
-                    opt(r.t, 2),
-                    r.df.to_string(),
-                    r.p_holm.map_or_else(String::new, fmt_p),
-                    opt(r.dz, 2),
-                ]
-            })
-            .collect(),
-    });
+    b.push(Block::table(["task", "a", "b", "a − b (s)", "t", "df", "p (Holm)", "dz"], &analysis.pairwise, |r| {
+        [
+            r.task.clone(),
+            r.a.label().to_owned(),
+            r.b.label().to_owned(),
+            opt(r.mean_diff_s, 1),
+            opt(r.t, 2),
+            r.df.to_string(),
+            r.p_holm.map_or_else(String::new, fmt_p),
+            opt(r.dz, 2),
+        ]
+    }));
 }
 
 /// Which manners participants used, per technique.
@@ -315,16 +304,10 @@ fn finding_blocks(b: &mut Vec<Block>, analysis: &Analysis) {
     b.push(Block::Paragraph(s(
         "Each finding of Wilson et al. (2008) as one test at α = .05 on this run's statistics.",
     )));
-    b.push(Block::Table {
-        head: ["finding", "this run", "decided by", "numbers"].map(s).to_vec(),
-        rows: FINDINGS
-            .iter()
-            .map(|f| {
-                let j = f.judge(analysis);
-                vec![f.claim.to_owned(), j.verdict.label().to_owned(), j.test, j.evidence]
-            })
-            .collect(),
-    });
+    b.push(Block::table(["finding", "this run", "decided by", "numbers"], &FINDINGS, |f| {
+        let j = f.judge(analysis);
+        [f.claim.to_owned(), j.verdict.label().to_owned(), j.test, j.evidence]
+    }));
 }
 
 /// The blocks as Markdown.

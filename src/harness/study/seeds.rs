@@ -13,7 +13,7 @@
 use super::analysis::analyze;
 use super::error::StudyError;
 use super::findings::{FINDINGS, FindingVerdict};
-use super::output::{RUN_TOML, RunFile, TRIALS_CSV, read_trials, write_atomically};
+use super::output::{RUN_TOML, RunFile, TRIALS_CSV, read_trials};
 use super::seeds_figure::write_seeds_figure;
 use super::summary::{SummaryRow, summarize};
 use serde::{Deserialize, Serialize};
@@ -110,14 +110,7 @@ pub fn summarize_seeds(dir: &Path, runs: &[PathBuf]) -> Result<Vec<FindingsRow>,
         row.wilson_low = interval.map(|i| i.0);
         row.wilson_high = interval.map(|i| i.1);
     }
-    let path = dir.join(FINDINGS_CSV);
-    let mut w = csv::WriterBuilder::new().has_headers(false).from_writer(Vec::new());
-    w.write_record(FINDINGS_COLUMNS).map_err(StudyError::csv(&path))?;
-    for row in &rows {
-        w.serialize(row).map_err(StudyError::csv(&path))?;
-    }
-    let bytes = w.into_inner().map_err(|e| StudyError::io(&path)(e.into_error()))?;
-    write_atomically(&path, &bytes)?;
+    super::csv_rows::write_rows(&dir.join(FINDINGS_CSV), Some(&FINDINGS_COLUMNS), &rows)?;
     if let Some(design) = design {
         write_seeds_figure(&design, &summaries, &dir.join(SEEDS_PNG))?;
     }

@@ -5,12 +5,14 @@
 
 use super::design::StudyDesign;
 use super::error::StudyError;
-use super::figure::{HEIGHT, TEXT_SIZE, TITLE_SIZE, bar_span, ensure_font, feedback_style, figure_width, task_chart};
+use super::figure::{HEIGHT, bar_span, draw_legend, ensure_font, feedback_style, figure_width, page, task_chart};
 use super::summary::SummaryRow;
-use crate::harness::plot_font::FONT;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
+
+/// Opacity of the bars, so the dots over them show.
+const BAR_ALPHA: f64 = 0.55;
 
 /// Draws the figure for the per-seed summaries of one design.
 pub fn write_seeds_figure(design: &StudyDesign, per_seed: &[Vec<SummaryRow>], png: &Path) -> Result<(), StudyError> {
@@ -27,12 +29,8 @@ fn draw<DB: DrawingBackend>(
     per_seed: &[Vec<SummaryRow>],
 ) -> Result<(), String> {
     let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
-    root.fill(&WHITE).map_err(e)?;
     let title = format!("Cell means of {} seeds (bars: their mean; dots: one seed each)", per_seed.len());
-    let root = root.titled(&title, (FONT, TITLE_SIZE)).map_err(e)?;
-    let (_, height) = root.dim_in_pixel();
-    let (plots, legend) = root.split_vertically(height.saturating_sub(52));
-    let panels = plots.split_evenly((1, design.tasks.len().max(1)));
+    let (panels, legend) = page(root, &title, design.tasks.len(), 52)?;
     let techniques = &design.techniques;
     let levels = &design.feedback;
     for (panel, task) in panels.iter().zip(&design.tasks) {
@@ -57,21 +55,16 @@ fn draw<DB: DrawingBackend>(
                 let (x0, x1) = bar_span(ti, li, levels.len());
                 let (color, _) = feedback_style(fb);
                 chart
-                    .draw_series(std::iter::once(Rectangle::new([(x0, 0.0), (x1, mean)], color.mix(0.55).filled())))
+                    .draw_series(std::iter::once(Rectangle::new(
+                        [(x0, 0.0), (x1, mean)],
+                        color.mix(BAR_ALPHA).filled(),
+                    )))
                     .map_err(e)?;
                 let xc = f64::midpoint(x0, x1);
                 chart.draw_series(values.iter().map(|&v| Circle::new((xc, v), 4, BLACK.filled()))).map_err(e)?;
             }
         }
     }
-    let (width, _) = legend.dim_in_pixel();
-    let entry_width = 240i32;
-    let mut x = (width as i32 - entry_width * levels.len() as i32) / 2;
-    for &fb in levels {
-        let (color, text) = feedback_style(fb);
-        legend.draw(&Rectangle::new([(x, 12), (x + 22, 34)], color.mix(0.55).filled())).map_err(e)?;
-        legend.draw(&Text::new(text, (x + 30, 14), (FONT, TEXT_SIZE))).map_err(e)?;
-        x += entry_width;
-    }
+    draw_legend(&legend, levels, BAR_ALPHA, false)?;
     root.present().map_err(e)
 }

@@ -162,79 +162,79 @@ impl SlurmJob {
     pub fn array_script(&self) -> Result<String, StudyError> {
         let n = self.shards;
         let last = self.tasks() - 1;
-        let mut s = String::from("#!/bin/bash\n");
-        let _ = writeln!(s, "# surfacelab study on Slurm: array task i runs its shard of the study in the run folder.");
-        let _ =
-            writeln!(s, "# Written by `surfacelab study --slurm {n}`. Every task only resumes its folder, so a task");
-        let _ =
-            writeln!(s, "# that failed, was cancelled or timed out continues where it stopped when resubmitted alone:");
-        let _ = writeln!(s, "#   sbatch --array=K {}", shell_quote(&self.array_script_path())?);
-        let _ = writeln!(s, "#SBATCH --job-name=surfacelab-study");
-        let _ = writeln!(s, "#SBATCH --array=0-{last}");
-        let _ = writeln!(s, "#SBATCH --output={}", directive_quote(&self.slurm_dir().join("array-%A_%a.out"), true)?);
-        self.resource_lines(&mut s, true);
-        let _ = writeln!(s, "set -euo pipefail");
-        let _ = writeln!(s, "exe={}", shell_quote(&self.exe)?);
-        let _ = writeln!(s, "dir={}", shell_quote(&self.dir)?);
-        let _ = writeln!(s, "task=\"${{SLURM_ARRAY_TASK_ID:?submit this script with sbatch (it is a job array)}}\"");
-        if self.seeds.is_some() {
-            let _ = writeln!(s, "seed=$((task / {n} + 1))");
-            let _ = writeln!(s, "shard=$((task % {n}))");
-            let _ = writeln!(s, "study=\"$dir/seed-$seed\"");
-        } else {
-            let _ = writeln!(s, "shard=\"$task\"");
-            let _ = writeln!(s, "study=\"$dir\"");
-        }
-        let _ = writeln!(s, "echo \"surfacelab: task $task on $(hostname): shard $shard/{n} of $study\"");
-        let _ = writeln!(
-            s,
-            "exec \"$exe\" study --resume \"$study/shard-$shard\" --shard \"$shard/{n}\" --jobs \"${{SLURM_CPUS_PER_TASK:-1}}\" --no-progress"
+        let about = format!(
+            "# surfacelab study on Slurm: array task i runs its shard of the study in the run folder.\n\
+             # Written by `surfacelab study --slurm {n}`. Every task only resumes its folder, so a task\n\
+             # that failed, was cancelled or timed out continues where it stopped when resubmitted alone:\n\
+             #   sbatch --array=K {}\n",
+            shell_quote(&self.array_script_path())?
         );
-        Ok(s)
+        let head = self.script_head(
+            &about,
+            &format!("#SBATCH --job-name=surfacelab-study\n#SBATCH --array=0-{last}\n"),
+            "array-%A_%a.out",
+            true,
+        )?;
+        let study = match self.seeds {
+            Some(_) => format!("seed=$((task / {n} + 1))\nshard=$((task % {n}))\nstudy=\"$dir/seed-$seed\"\n"),
+            None => "shard=\"$task\"\nstudy=\"$dir\"\n".to_owned(),
+        };
+        Ok(format!(
+            "{head}\
+             task=\"${{SLURM_ARRAY_TASK_ID:?submit this script with sbatch (it is a job array)}}\"\n\
+             {study}\
+             echo \"surfacelab: task $task on $(hostname): shard $shard/{n} of $study\"\n\
+             exec \"$exe\" study --resume \"$study/shard-$shard\" --shard \"$shard/{n}\" \
+             --jobs \"${{SLURM_CPUS_PER_TASK:-1}}\" --no-progress\n"
+        ))
     }
 
     /// `DIR/slurm/merge.sbatch`.
     pub fn merge_script(&self) -> Result<String, StudyError> {
         let array = shell_quote(&self.array_script_path())?;
         let merge = shell_quote(&self.merge_script_path())?;
-        let mut s = String::from("#!/bin/bash\n");
-        let _ =
-            writeln!(s, "# surfacelab study on Slurm: merges the shards once every array task succeeded. Submit with");
-        let _ = writeln!(s, "#   array=$(sbatch --parsable {array})");
-        let _ = writeln!(s, "#   sbatch --dependency=afterok:${{array%%;*}} {merge}");
-        let _ = writeln!(s, "#SBATCH --job-name=surfacelab-merge");
-        let _ = writeln!(s, "#SBATCH --output={}", directive_quote(&self.slurm_dir().join("merge-%j.out"), true)?);
-        self.resource_lines(&mut s, false);
-        let _ = writeln!(s, "set -euo pipefail");
-        let _ = writeln!(s, "exe={}", shell_quote(&self.exe)?);
-        let _ = writeln!(s, "dir={}", shell_quote(&self.dir)?);
+        let about = format!(
+            "# surfacelab study on Slurm: merges the shards once every array task succeeded. Submit with\n\
+             #   array=$(sbatch --parsable {array})\n\
+             #   sbatch --dependency=afterok:${{array%%;*}} {merge}\n"
+        );
+        let head = self.script_head(&about, "#SBATCH --job-name=surfacelab-merge\n", "merge-%j.out", false)?;
         let shard_args =
             |study: &str| (0..self.shards).map(|i| format!("\"{study}/shard-{i}\"")).collect::<Vec<_>>().join(" ");
-        match self.seeds {
-            None => {
-                let _ = writeln!(s, "\"$exe\" study merge \"$dir\" {}", shard_args("$dir"));
-            }
-            Some(seeds) => {
-                let _ = writeln!(s, "for seed in $(seq 1 {seeds}); do");
-                let _ = writeln!(s, "  study=\"$dir/seed-$seed\"");
-                let _ = writeln!(s, "  \"$exe\" study merge \"$study\" {}", shard_args("$study"));
-                let _ = writeln!(s, "done");
-                let _ = writeln!(s, "\"$exe\" study findings \"$dir\"");
-            }
-        }
-        Ok(s)
+        let body = match self.seeds {
+            None => format!("\"$exe\" study merge \"$dir\" {}\n", shard_args("$dir")),
+            Some(seeds) => format!(
+                "for seed in $(seq 1 {seeds}); do\n  \
+                 study=\"$dir/seed-$seed\"\n  \
+                 \"$exe\" study merge \"$study\" {}\n\
+                 done\n\
+                 \"$exe\" study findings \"$dir\"\n",
+                shard_args("$study")
+            ),
+        };
+        Ok(head + &body)
     }
 
-    fn resource_lines(&self, s: &mut String, per_task_cpus: bool) {
+    /// What both scripts start with: the shebang, `about` (comment lines),
+    /// the job's `directives`, its log file `log` in `DIR/slurm`, the
+    /// resources, strict mode, and the binary and folder as `$exe`, `$dir`.
+    fn script_head(&self, about: &str, directives: &str, log: &str, per_task_cpus: bool) -> Result<String, StudyError> {
+        let output = directive_quote(&self.slurm_dir().join(log), true)?;
+        let mut resources = String::new();
         if let Some(p) = &self.partition {
-            let _ = writeln!(s, "#SBATCH --partition={p}");
+            let _ = writeln!(resources, "#SBATCH --partition={p}");
         }
         if let Some(t) = self.time {
-            let _ = writeln!(s, "#SBATCH --time={t}");
+            let _ = writeln!(resources, "#SBATCH --time={t}");
         }
         if per_task_cpus && let Some(c) = self.cpus {
-            let _ = writeln!(s, "#SBATCH --cpus-per-task={c}");
+            let _ = writeln!(resources, "#SBATCH --cpus-per-task={c}");
         }
+        Ok(format!(
+            "#!/bin/bash\n{about}{directives}#SBATCH --output={output}\n{resources}set -euo pipefail\nexe={}\ndir={}\n",
+            shell_quote(&self.exe)?,
+            shell_quote(&self.dir)?
+        ))
     }
 
     /// The `sbatch` arguments that submit the merge after array job `array_id`.

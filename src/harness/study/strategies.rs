@@ -105,16 +105,9 @@ fn round(x: f64, digits: i32) -> f64 {
 }
 
 pub fn write_strategies(path: &Path, rows: &[StrategyRow]) -> Result<(), StudyError> {
-    let mut w = csv::WriterBuilder::new().has_headers(false).from_writer(Vec::new());
-    w.write_record(STRATEGY_COLUMNS).map_err(StudyError::csv(path))?;
-    for row in rows {
-        w.serialize(row).map_err(StudyError::csv(path))?;
-    }
-    let bytes = w.into_inner().map_err(|e| StudyError::io(path)(e.into_error()))?;
-    super::output::write_atomically(path, &bytes)
+    super::csv_rows::write_rows(path, Some(&STRATEGY_COLUMNS), rows)
 }
 
 pub fn read_strategies(path: &Path) -> Result<Vec<StrategyRow>, StudyError> {
-    let mut r = csv::Reader::from_path(path).map_err(StudyError::csv(path))?;
-    r.deserialize().collect::<Result<_, _>>().map_err(StudyError::csv(path))
+    super::csv_rows::read_rows(path)
 }

@@ -134,15 +134,9 @@ pub fn summarize(design: &StudyDesign, rows: &[TrialRow]) -> Vec<SummaryRow> {
 }
 
 pub fn write_summary(path: &Path, rows: &[SummaryRow]) -> Result<(), StudyError> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    for row in rows {
-        w.serialize(row).map_err(StudyError::csv(path))?;
-    }
-    let bytes = w.into_inner().map_err(|e| StudyError::io(path)(e.into_error()))?;
-    super::output::write_atomically(path, &bytes)
+    super::csv_rows::write_rows(path, None, rows)
 }
 
 pub fn read_summary(path: &Path) -> Result<Vec<SummaryRow>, StudyError> {
-    let mut r = csv::Reader::from_path(path).map_err(StudyError::csv(path))?;
-    r.deserialize().collect::<Result<_, _>>().map_err(StudyError::csv(path))
+    super::csv_rows::read_rows(path)
 }

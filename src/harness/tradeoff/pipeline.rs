@@ -11,7 +11,7 @@
 //! smoothly (`tests/techniques.rs`).
 
 use super::row::Row;
-use crate::harness::participant::{Skill, run_scripted};
+use crate::harness::participant::{ScriptedTrial, Skill};
 use crate::input::Gesture;
 use crate::pipeline::technique::{TechniqueConfig, TechniqueKind};
 use crate::pipeline::vision::VisionParams;
@@ -227,7 +227,15 @@ fn switch_knobs(b: &Setup) -> Vec<Knob> {
 pub fn scripted_trial_s(setup: &Setup) -> anyhow::Result<f64> {
     let mut scene = scene::load("positioning")?;
     scene.physics = setup.scene.physics;
-    let o = run_scripted(&scene, TechniqueKind::JOINT, true, Skill::draw(1), 1, 120.0)?;
+    let trial = ScriptedTrial {
+        scene: &scene,
+        kind: TechniqueKind::JOINT,
+        feedback: true,
+        skill: Skill::draw(1),
+        seed: 1,
+        time_limit_s: 120.0,
+    };
+    let o = trial.run()?;
     Ok(o.completion_time_s)
 }
 

@@ -16,13 +16,19 @@ use std::time::Instant;
 /// Frames held for the session at most (a third of a second at 30 fps).
 pub const QUEUE_FRAMES: usize = 10;
 
+/// Which camera delivers frames, and what their bytes are.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct CameraSource {
+    /// The device's name for messages (its path).
+    pub device: String,
+    /// What every frame's bytes are.
+    pub format: RawFormat,
+}
+
 /// Something that delivers a camera's frames: the V4L2 device (feature
 /// `camera`), or recorded frames in tests.
 pub trait FrameGrabber: Send {
-    /// The device's name for messages (its path).
-    fn device(&self) -> &str;
-    /// What every frame's bytes are.
-    fn format(&self) -> RawFormat;
+    fn source(&self) -> &CameraSource;
     /// Blocks until the next frame and returns its bytes (valid until the
     /// next call); `Ok(None)` when the stream has ended.
     fn grab(&mut self) -> Result<Option<&[u8]>, CameraError>;
@@ -34,8 +40,7 @@ pub trait FrameGrabber: Send {
 /// is dropped.
 #[derive(Debug)]
 pub struct ChannelCamera {
-    device: String,
-    format: RawFormat,
+    source: CameraSource,
     frames: mpsc::Receiver<Vec<u8>>,
     current: Vec<u8>,
 }
@@ -45,17 +50,13 @@ impl ChannelCamera {
     /// hands it frames.
     pub fn new(device: impl Into<String>, format: RawFormat) -> (ChannelCamera, mpsc::Sender<Vec<u8>>) {
         let (tx, frames) = mpsc::channel();
-        (ChannelCamera { device: device.into(), format, frames, current: Vec::new() }, tx)
+        (ChannelCamera { source: CameraSource { device: device.into(), format }, frames, current: Vec::new() }, tx)
     }
 }
 
 impl FrameGrabber for ChannelCamera {
-    fn device(&self) -> &str {
-        &self.device
-    }
-
-    fn format(&self) -> RawFormat {
-        self.format
+    fn source(&self) -> &CameraSource {
+        &self.source
     }
 
     fn grab(&mut self) -> Result<Option<&[u8]>, CameraError> {
@@ -118,8 +119,7 @@ impl Shared {
 /// one more frame). Failing or ending is delivered as the last item.
 pub fn spawn(mut grabber: Box<dyn FrameGrabber>, shared: Arc<Shared>) -> std::io::Result<()> {
     std::thread::Builder::new().name("camera".into()).spawn(move || {
-        let format = grabber.format();
-        let device = grabber.device().to_owned();
+        let CameraSource { device, format } = grabber.source().clone();
         while !shared.stop.load(Ordering::Relaxed) {
             let delivery = match grabber.grab() {
                 Ok(Some(bytes)) => {

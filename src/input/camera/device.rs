@@ -1,7 +1,7 @@
 //! A V4L2 capture device through the `v4l` crate (cargo feature `camera`):
 //! opened, a format agreed, frames streamed from memory-mapped buffers.
 
-use super::{CameraError, FrameGrabber, PixelFormat, RawFormat, describe};
+use super::{CameraError, CameraSource, FrameGrabber, PixelFormat, RawFormat, describe};
 use crate::input::images::Calibration;
 use std::path::Path;
 use v4l::buffer::Type;
@@ -16,8 +16,7 @@ const BUFFERS: u32 = 4;
 
 /// An open camera, streaming.
 pub struct V4lCamera {
-    device: String,
-    format: RawFormat,
+    source: CameraSource,
     stream: Stream<'static>,
 }
 
@@ -66,23 +65,19 @@ impl V4lCamera {
         format.check()?;
         let stream = Stream::with_buffers(&dev, Type::VideoCapture, BUFFERS).map_err(failed)?;
         tracing::info!("{device}: capturing {}", describe(&format));
-        Ok(V4lCamera { device, format, stream })
+        Ok(V4lCamera { source: CameraSource { device, format }, stream })
     }
 }
 
 impl FrameGrabber for V4lCamera {
-    fn device(&self) -> &str {
-        &self.device
-    }
-
-    fn format(&self) -> RawFormat {
-        self.format
+    fn source(&self) -> &CameraSource {
+        &self.source
     }
 
     fn grab(&mut self) -> Result<Option<&[u8]>, CameraError> {
         match self.stream.next() {
             Ok((bytes, meta)) => Ok(Some(&bytes[..(meta.bytesused as usize).min(bytes.len())])),
-            Err(source) => Err(CameraError::Capture { device: self.device.clone(), source }),
+            Err(source) => Err(CameraError::Capture { device: self.source.device.clone(), source }),
         }
     }
 }

@@ -3,7 +3,7 @@
 //! image through the calibration, as recorded frames are
 //! ([`crate::input::images::ImageSequence`]).
 
-use super::capture::{self, FrameGrabber, Shared};
+use super::capture::{self, CameraSource, FrameGrabber, Shared};
 use super::{CameraError, RawFormat};
 use crate::input::images::{
     BitDepth, Calibration, CameraImage, CameraKind, Conversion, DEFAULT_THRESHOLD, DEFAULT_TOUCH_BAND_MM, Rectifier,
@@ -54,9 +54,8 @@ impl CameraFeed {
     /// Starts a capture thread on `grabber`. A calibration must be for the
     /// grabber's frame size, and a depth one needs 16-bit frames.
     pub fn start(grabber: Box<dyn FrameGrabber>, calibration: Option<Calibration>) -> Result<CameraFeed, CameraError> {
-        let format = grabber.format();
+        let CameraSource { device, format } = grabber.source().clone();
         format.check()?;
-        let device = grabber.device().to_owned();
         if let Some(c) = &calibration {
             fits(&device, &format, c)?;
         }

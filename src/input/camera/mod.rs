@@ -20,7 +20,7 @@ mod error;
 mod feed;
 mod pixel_format;
 
-pub use capture::{ChannelCamera, Delivery, FrameGrabber, QUEUE_FRAMES};
+pub use capture::{CameraSource, ChannelCamera, Delivery, FrameGrabber, QUEUE_FRAMES};
 #[cfg(feature = "camera")]
 pub use device::V4lCamera;
 pub use error::CameraError;

@@ -219,6 +219,17 @@ fn patch(shape: Footprint, level: f32) -> Patch {
     Patch { shape, level }
 }
 
+/// A capsule from `a` to `b` pressing at `level`: a forearm, a hand's side.
+fn capsule(a: [f32; 2], b: [f32; 2], radius: f32, level: f32) -> Patch {
+    patch(Footprint::Capsule { a, b, radius }, level)
+}
+
+/// A rounded rectangle on the origin, square to the hand, pressing fully:
+/// a palm, a fist, an object's flat base.
+fn slab(half: [f32; 2], corner: f32) -> Patch {
+    patch(Footprint::RoundedRect { centre: [0.0, 0.0], half, angle: 0.0, corner }, 1.0)
+}
+
 /// A capsule of `length` starting at `base`, pointing `angle` radians
 /// counter-clockwise from +y.
 fn digit(base: [f32; 2], angle: f32, length: f32, radius: f32) -> Footprint {
@@ -245,10 +256,7 @@ fn local_patches(kind: HandKind, spread: f32, out: &mut Vec<Patch>) {
             }
         }
         HandKind::FlatHand => {
-            out.push(patch(
-                Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.043, 0.048], angle: 0.0, corner: 0.02 },
-                1.0,
-            ));
+            out.push(slab([0.043, 0.048], 0.02));
             // Index, middle, ring, little: base x, length, radius.
             let fingers =
                 [(-0.030, 0.075, 0.0085), (-0.010, 0.082, 0.0085), (0.010, 0.077, 0.0082), (0.030, 0.060, 0.0075)];
@@ -259,26 +267,17 @@ fn local_patches(kind: HandKind, spread: f32, out: &mut Vec<Patch>) {
             out.push(patch(digit([-0.036, -0.022], 0.7 + 0.3 * spread, 0.055, 0.0095), FINGER_LEVEL));
         }
         HandKind::Edge => {
-            out.push(patch(Footprint::Capsule { a: [0.0, -0.05], b: [0.0, 0.03], radius: 0.012 }, 1.0));
-            out.push(patch(Footprint::Capsule { a: [0.0, 0.03], b: [0.004, 0.09], radius: 0.008 }, 0.8));
+            out.push(capsule([0.0, -0.05], [0.0, 0.03], 0.012, 1.0));
+            out.push(capsule([0.0, 0.03], [0.004, 0.09], 0.008, 0.8));
         }
-        HandKind::Fist => out.push(patch(
-            Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.04, 0.0225], angle: 0.0, corner: 0.015 },
-            1.0,
-        )),
+        HandKind::Fist => out.push(slab([0.04, 0.0225], 0.015)),
         HandKind::Forearm => {
-            out.push(patch(Footprint::Capsule { a: [0.0, -0.09], b: [0.0, 0.0], radius: 0.035 }, 1.0));
-            out.push(patch(Footprint::Capsule { a: [0.0, 0.0], b: [0.0, 0.1], radius: 0.027 }, 0.9));
+            out.push(capsule([0.0, -0.09], [0.0, 0.0], 0.035, 1.0));
+            out.push(capsule([0.0, 0.0], [0.0, 0.1], 0.027, 0.9));
         }
-        HandKind::Ruler => out.push(patch(
-            Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.15, 0.015], angle: 0.0, corner: 0.001 },
-            1.0,
-        )),
+        HandKind::Ruler => out.push(slab([0.15, 0.015], 0.001)),
         HandKind::Cup => out.push(patch(Footprint::Ring { centre: [0.0, 0.0], radius: 0.035, half_width: 0.003 }, 1.0)),
-        HandKind::Card => out.push(patch(
-            Footprint::RoundedRect { centre: [0.0, 0.0], half: [0.043, 0.027], angle: 0.0, corner: 0.003 },
-            1.0,
-        )),
+        HandKind::Card => out.push(slab([0.043, 0.027], 0.003)),
         HandKind::Contour => {}
     }
 }

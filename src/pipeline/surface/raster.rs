@@ -158,6 +158,69 @@ fn pixel_window(
     (c0 <= c1 && r0 <= r1).then_some(([c0, c1], [r0, r1]))
 }
 
+/// What drawing one shape shares: its peak grey and soft edge, and the
+/// pixels its box may touch, with where their centres lie on the table.
+struct Brush {
+    peak: f32,
+    /// Width of the soft edge (m), centred on the shape's edge.
+    falloff: f32,
+    /// Inclusive columns and rows of the pixels within reach of the box
+    /// (see [`pixel_window`]).
+    window: ([usize; 2], [usize; 2]),
+    /// The centre of pixel (0, 0) on the table (m); rows go down y.
+    origin: [f32; 2],
+    /// The pixel size (m).
+    size: [f32; 2],
+}
+
+impl Brush {
+    /// A brush for a shape within the table box `lo..hi` drawn at `peak`;
+    /// `None` when the image is empty or the box misses it.
+    fn new(
+        peak: f32,
+        [lo, hi]: [[f32; 2]; 2],
+        sensor: &Sensor,
+        falloff_px: f32,
+        image: &ContactImage,
+    ) -> Option<Brush> {
+        if image.width == 0 || image.height == 0 {
+            return None;
+        }
+        let falloff = falloff_px.max(1e-3) * sensor.metres_per_pixel();
+        let reach = 0.5 * falloff;
+        let window = pixel_window(lo, hi, reach, sensor, image)?;
+        let size = sensor.pixel_size();
+        let origin = [-0.5 * sensor.table_width_m + 0.5 * size[0], 0.5 * sensor.table_depth_m - 0.5 * size[1]];
+        Some(Brush { peak, falloff, window, origin, size })
+    }
+
+    /// Half the falloff: pixels further outside the shape stay dark.
+    fn reach(&self) -> f32 {
+        0.5 * self.falloff
+    }
+
+    /// Table x of column `c`'s pixel centres.
+    fn x(&self, c: usize) -> f32 {
+        self.origin[0] + c as f32 * self.size[0]
+    }
+
+    /// Table y of row `r`'s pixel centres.
+    fn y(&self, r: usize) -> f32 {
+        self.origin[1] - r as f32 * self.size[1]
+    }
+
+    /// The grey at signed distance `d` (m) from the edge, negative inside:
+    /// half the peak on the edge, smoothstepped across the falloff; `None`
+    /// beyond reach outside.
+    fn grey(&self, d: f32) -> Option<u8> {
+        if d >= self.reach() {
+            return None;
+        }
+        let t = (0.5 - d / self.falloff).clamp(0.0, 1.0);
+        Some((self.peak * t * t * (3.0 - 2.0 * t)).round() as u8)
+    }
+}
+
 /// Draws one patch; returns the rows it covered (`None`: off the image).
 fn draw_patch(
     patch: &Patch,
@@ -166,29 +229,17 @@ fn draw_patch(
     falloff_px: f32,
     image: &mut ContactImage,
 ) -> Option<Range<usize>> {
-    if image.width == 0 || image.height == 0 {
-        return None;
-    }
     let peak = 255.0 * pressure * patch.level.clamp(0.0, 1.0);
-    let falloff = falloff_px.max(1e-3) * sensor.metres_per_pixel();
-    let reach = 0.5 * falloff;
-    let [lo, hi] = patch.shape.bounds();
-    let ([c0, c1], [r0, r1]) = pixel_window(lo, hi, reach, sensor, image)?;
-    let [sx, sy] = sensor.pixel_size();
-    let x0 = -0.5 * sensor.table_width_m + 0.5 * sx;
-    let y0 = 0.5 * sensor.table_depth_m - 0.5 * sy;
+    let brush = Brush::new(peak, patch.shape.bounds(), sensor, falloff_px, image)?;
+    let ([c0, c1], [r0, r1]) = brush.window;
     let shape = patch.shape.prepare();
     for r in r0..=r1 {
-        let y = y0 - r as f32 * sy;
+        let y = brush.y(r);
         let row = &mut image.pixels[r * image.width..(r + 1) * image.width];
         for (c, px) in row.iter_mut().enumerate().take(c1 + 1).skip(c0) {
-            let d = shape.distance([x0 + c as f32 * sx, y]);
-            if d >= reach {
-                continue;
+            if let Some(grey) = brush.grey(shape.distance([brush.x(c), y])) {
+                *px = (*px).max(grey);
             }
-            let t = (0.5 - d / falloff).clamp(0.0, 1.0);
-            let grey = (peak * t * t * (3.0 - 2.0 * t)).round() as u8;
-            *px = (*px).max(grey);
         }
     }
     (r0 <= r1).then_some(r0..r1 + 1)
@@ -211,12 +262,6 @@ fn draw_outline(
     falloff_px: f32,
     image: &mut ContactImage,
 ) -> Option<Range<usize>> {
-    if image.width == 0 || image.height == 0 {
-        return None;
-    }
-    let peak = 255.0 * pressure;
-    let falloff = falloff_px.max(1e-3) * sensor.metres_per_pixel();
-    let reach = 0.5 * falloff;
     let mut lo = [f32::MAX; 2];
     let mut hi = [f32::MIN; 2];
     for p in rings.iter().flatten() {
@@ -225,10 +270,8 @@ fn draw_outline(
             hi[k] = hi[k].max(p[k]);
         }
     }
-    let ([c0, c1], [r0, r1]) = pixel_window(lo, hi, reach, sensor, image)?;
-    let [sx, sy] = sensor.pixel_size();
-    let x0 = -0.5 * sensor.table_width_m + 0.5 * sx;
-    let y0 = 0.5 * sensor.table_depth_m - 0.5 * sy;
+    let brush = Brush::new(255.0 * pressure, [lo, hi], sensor, falloff_px, image)?;
+    let (reach, ([c0, c1], [r0, r1])) = (brush.reach(), brush.window);
     let (w, h) = (c1 - c0 + 1, r1 - r0 + 1);
     // Unsigned distance to the nearest edge, capped at `reach`.
     let mut near = vec![reach; w * h];
@@ -250,10 +293,10 @@ fn draw_outline(
             let len2 = pq[0] * pq[0] + pq[1] * pq[1];
             let inv = if len2 > 0.0 { 1.0 / len2 } else { 0.0 };
             for r in er0..=er1 as usize {
-                let y = y0 - r as f32 * sy;
+                let y = brush.y(r);
                 let row = &mut near[(r - r0) * w..(r - r0 + 1) * w];
                 for c in ec0..=ec1 as usize {
-                    let ap = [x0 + c as f32 * sx - p[0], y - p[1]];
+                    let ap = [brush.x(c) - p[0], y - p[1]];
                     let t = ((ap[0] * pq[0] + ap[1] * pq[1]) * inv).clamp(0.0, 1.0);
                     let d = ((ap[0] - t * pq[0]).powi(2) + (ap[1] - t * pq[1]).powi(2)).sqrt();
                     let slot = &mut row[c - c0];
@@ -264,7 +307,7 @@ fn draw_outline(
     }
     let mut crossings: Vec<f32> = Vec::new();
     for r in r0..=r1 {
-        let y = y0 - r as f32 * sy;
+        let y = brush.y(r);
         crossings.clear();
         for ring in rings {
             let mut j = ring.len() - 1;
@@ -282,18 +325,15 @@ fn draw_outline(
         // Crossings left of the pixel centre so far: odd = inside.
         let mut passed = 0;
         for c in c0..=c1 {
-            let x = x0 + c as f32 * sx;
+            let x = brush.x(c);
             while passed < crossings.len() && crossings[passed] <= x {
                 passed += 1;
             }
             let unsigned = distances[c - c0];
             let d = if passed % 2 == 1 { -unsigned } else { unsigned };
-            if d >= reach {
-                continue;
+            if let Some(grey) = brush.grey(d) {
+                row[c] = row[c].max(grey);
             }
-            let t = (0.5 - d / falloff).clamp(0.0, 1.0);
-            let grey = (peak * t * t * (3.0 - 2.0 * t)).round() as u8;
-            row[c] = row[c].max(grey);
         }
     }
     Some(r0..r1 + 1)

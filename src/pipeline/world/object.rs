@@ -1,6 +1,7 @@
 //! The one way a technique may act on a scene object's body: push it ([`ObjectPush`]), never remove,
 //! disable or teleport it.
 
+use super::push::Push;
 use super::world::World;
 use crate::scene::ObjectId;
 use glam::Vec3;
@@ -8,16 +9,7 @@ use rapier3d::prelude::RigidBody;
 
 /// A scene object's body, to push: forces, impulses and velocities. It
 /// reads as a [`RigidBody`] but offers no pose, enable or removal.
-#[derive(Debug)]
-pub struct ObjectPush<'w>(&'w mut RigidBody);
-
-impl std::ops::Deref for ObjectPush<'_> {
-    type Target = RigidBody;
-
-    fn deref(&self) -> &RigidBody {
-        self.0
-    }
-}
+pub type ObjectPush<'w> = Push<'w, RigidBody>;
 
 impl ObjectPush<'_> {
     pub fn add_force(&mut self, force: Vec3) {
@@ -57,6 +49,6 @@ impl World {
     /// Scene object `id`'s body, to push.
     pub fn push_object(&mut self, id: ObjectId) -> Option<ObjectPush<'_>> {
         let h = self.object_body(id);
-        self.physics_mut().bodies.get_mut(h).map(ObjectPush)
+        self.physics_mut().bodies.get_mut(h).map(Push)
     }
 }

@@ -2,6 +2,7 @@
 //! to `soft.rs` with the world's physics (so `soft.rs` needs no `World`).
 
 use super::error::WorldError;
+use super::push::Push;
 use super::soft::{self, SoftSurface};
 use super::world::World;
 use crate::scene::{SoftBodySpec, SoftId};
@@ -86,16 +87,7 @@ impl World {
 
 /// A soft body (or torn piece), to push: per-particle forces. It reads as a
 /// [`SoftBody`] but offers no way to move its particles directly.
-#[derive(Debug)]
-pub struct SoftPush<'w>(&'w mut SoftBody);
-
-impl std::ops::Deref for SoftPush<'_> {
-    type Target = SoftBody;
-
-    fn deref(&self) -> &SoftBody {
-        self.0
-    }
-}
+pub type SoftPush<'w> = Push<'w, SoftBody>;
 
 impl SoftPush<'_> {
     pub fn add_particle_force(&mut self, particle: u32, force: Vec3) {
@@ -106,7 +98,7 @@ impl SoftPush<'_> {
 impl World {
     /// Soft body (or piece) `h`, to push.
     pub fn push_soft(&mut self, h: SoftBodyHandle) -> Option<SoftPush<'_>> {
-        self.physics_mut().soft_bodies.get_mut(h).map(SoftPush)
+        self.physics_mut().soft_bodies.get_mut(h).map(Push)
     }
 
     /// Clears the particle forces added this step on every soft body and
