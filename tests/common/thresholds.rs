@@ -780,6 +780,31 @@ pub const CLOTH_TOP_SPEED: Threshold = Threshold {
              measured; bound: measured plus half",
 };
 
+/// Cloth under a flat hand (Proxy) circling for 10,000 steps: the lowest
+/// particle's centre.
+pub const CLOTH_LOWEST: Threshold = Threshold {
+    name: "cloth_lowest",
+    side: Side::Above,
+    bound: 0.0017,
+    measured: 0.00251,
+    unit: "m",
+    reason: "the cloth's 3 mm contact skin holds its particles' centres millimetres up, and the hand's proxy \
+             presses them to 2.5 mm measured; a particle through the table reads below zero; bound: measured \
+             less a third",
+};
+
+/// A flat hand squishing the jelly block (Particle, Proxy): how far it
+/// presses the block's centre down.
+pub const SQUISH_PRESS: Threshold = Threshold {
+    name: "squish_press",
+    side: Side::Above,
+    bound: 0.0013,
+    measured: 0.002,
+    unit: "m",
+    reason: "the hand's weight presses the 1.8 cm-high centre down by millimetres: 2.0 mm measured under Proxy's \
+             flat cube, 4.4 mm under Particle's; bound: measured less a third",
+};
+
 /// Two forearms sweeping the forty pieces together (Particle): the share
 /// inside the goal circle.
 pub const GATHERED: Threshold = Threshold {
@@ -981,6 +1006,8 @@ pub const ALL: &[Threshold] = &[
     SHEET_DRAGGED,
     SLEEPING_SHEET_DRAGGED,
     CLOTH_TOP_SPEED,
+    CLOTH_LOWEST,
+    SQUISH_PRESS,
     GATHERED,
     BALL_STOPPED_TRAVEL,
     BALL_STOPPED_SPEED,
