@@ -10,7 +10,7 @@
 
 mod common;
 
-use common::{asset, gestures};
+use common::{asset, gestures, thresholds};
 use glam::Vec2;
 use surfacelab::input::Gesture;
 use surfacelab::pipeline::technique::TechniqueKind;
@@ -69,9 +69,8 @@ fn two_flat_hands_closing_on_a_box_carry_it_with_hybrid() {
     let (task, gesture) = ("tasks/cases/small_box.toml", "assets/gestures/grasp_two_hands.toml");
     let h = grasp(task, gesture, TechniqueKind::HYBRID);
     assert_eq!(h.nan, 0);
-    // The grasp threshold: at least 90% of the hands' travel.
-    assert!(h.carried >= 0.9 * CARRY, "hybrid carried the box {:.3} m of {CARRY}", h.carried);
-    assert!(h.max_lag < 0.03, "hybrid: the box strayed {:.3} m from the hands", h.max_lag);
+    thresholds::GRASP_CARRIED.check(h.carried / CARRY, "hybrid: two hands carried the box");
+    thresholds::GRASP_LAG.check(h.max_lag, "hybrid: the box strayed from the hands");
     // Released when the hands open: it does not keep going.
     assert!(h.speed_after < 0.05, "hybrid: box still moving at {:.3} m/s after release", h.speed_after);
     // Particle carries it too: the outline's particles
@@ -133,8 +132,9 @@ fn hybrid_presses_from_the_top_like_particle() {
         s.world().object_pose(ObjectId::new(0)).position
     };
     let (h, p) = (run(TechniqueKind::HYBRID), run(TechniqueKind::PARTICLE));
-    assert!((0.08..=0.11).contains(&h.x), "hybrid moved the box {:.3} m", h.x);
-    assert!((h - p).length() < 0.005, "hybrid {h} differs from particle {p}");
+    thresholds::DRAG_TRAVEL_LEAST.check(h.x, "hybrid: the box moved along the drag");
+    thresholds::DRAG_TRAVEL_MOST.check(h.x, "hybrid: the box moved along the drag");
+    assert_eq!(h, p, "hybrid's drag is particle's");
 }
 
 #[test]
@@ -145,6 +145,7 @@ fn hybrid_grips_never_spawn_inside_an_object() {
     let mut s = session("tasks/cases/small_box.toml", TechniqueKind::HYBRID);
     s.replay_until(&g, 0.5).expect("replay");
     let p = s.world().object_pose(ObjectId::new(0));
-    assert!(p.position.truncate().length() < 0.005, "box shoved to {}", p.position);
-    assert!(p.linvel.length() < 0.02, "box moving at {} m/s", p.linvel.length());
+    thresholds::GRIP_SHOVE
+        .check(p.position.truncate().length(), &format!("the grips shoved the box to {}", p.position));
+    thresholds::GRIP_SHOVE_SPEED.check(p.linvel.length(), "the box's speed under the landed hand");
 }
