@@ -75,25 +75,11 @@ fn run(load: Load, pooled: bool, cull: bool, capsules: bool) -> (StageTimes, usi
     let (mut particles, mut sensed) = (0, 0);
     for k in WARMUP..WARMUP + FRAMES {
         s.step(&(load.hands)(k)).expect("step");
-        let t = s.last_times();
-        sum.rasterize_us += t.rasterize_us;
-        sum.vision_us += t.vision_us;
-        sum.technique_us += t.technique_us;
-        sum.step_us += t.step_us;
+        sum.add(&s.last_times());
         particles += s.counts().bodies;
         sensed += s.frame().edges.len();
     }
-    let n = FRAMES as f64;
-    (
-        StageTimes {
-            rasterize_us: sum.rasterize_us / n,
-            vision_us: sum.vision_us / n,
-            technique_us: sum.technique_us / n,
-            step_us: sum.step_us / n,
-        },
-        particles / FRAMES,
-        sensed / FRAMES,
-    )
+    (sum.per_frame(FRAMES as u64), particles / FRAMES, sensed / FRAMES)
 }
 
 fn main() {

@@ -6,17 +6,19 @@ mod common;
 use common::{bin, refused, text, tmp};
 use surfacelab::harness::scaling::{Curve, ScalingRow};
 
+/// The rows of `DIR/scaling.csv`.
+fn rows_of(dir: &std::path::Path) -> Vec<ScalingRow> {
+    let reader = csv::Reader::from_path(dir.join("scaling.csv")).expect("scaling.csv");
+    reader.into_deserialize().collect::<Result<_, _>>().expect("rows read back")
+}
+
 #[test]
 fn a_quick_bench_writes_every_frame_curve_with_its_slope() {
     let dir = tmp("bench");
     let out = dir.path().join("b");
     let o = bin().args(["bench", "--quick", "--participants", "none", "--out"]).arg(&out).output().expect("runs");
     assert!(o.status.success(), "{}", text(&o));
-    let rows: Vec<ScalingRow> = csv::Reader::from_path(out.join("scaling.csv"))
-        .expect("scaling.csv")
-        .deserialize()
-        .collect::<Result<_, _>>()
-        .expect("rows read back");
+    let rows = rows_of(&out);
     let curve = |c: Curve| rows.iter().filter(|r| r.curve == c).collect::<Vec<_>>();
     assert_eq!(curve(Curve::Hands).len(), 4);
     assert_eq!(curve(Curve::Objects).len(), 3, "no 10,000-box point in a quick bench");
@@ -68,11 +70,7 @@ fn one_point_is_measured_alone() {
     let out = dir.path().join("p");
     let o = bin().args(["bench", "--point", "objects=20", "--out"]).arg(&out).output().expect("runs");
     assert!(o.status.success(), "{}", text(&o));
-    let rows: Vec<ScalingRow> = csv::Reader::from_path(out.join("scaling.csv"))
-        .expect("scaling.csv")
-        .deserialize()
-        .collect::<Result<_, _>>()
-        .expect("rows read back");
+    let rows = rows_of(&out);
     assert_eq!(rows.len(), 1, "{rows:?}");
     assert_eq!((rows[0].curve, rows[0].x), (Curve::Objects, 20.0));
 }

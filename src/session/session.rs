@@ -81,11 +81,23 @@ impl StageTimes {
         self.rasterize_us + self.vision_us + self.technique_us + self.step_us
     }
 
-    fn add(&mut self, o: &StageTimes) {
+    /// Adds another frame's (or sum's) times, stage by stage.
+    pub fn add(&mut self, o: &StageTimes) {
         self.rasterize_us += o.rasterize_us;
         self.vision_us += o.vision_us;
         self.technique_us += o.technique_us;
         self.step_us += o.step_us;
+    }
+
+    /// A sum over `frames` frames as the mean a frame (zero frames: the sum).
+    pub fn per_frame(&self, frames: u64) -> StageTimes {
+        let n = frames.max(1) as f64;
+        StageTimes {
+            rasterize_us: self.rasterize_us / n,
+            vision_us: self.vision_us / n,
+            technique_us: self.technique_us / n,
+            step_us: self.step_us / n,
+        }
     }
 }
 
@@ -318,12 +330,6 @@ impl Session {
 
     /// Mean time per stage over all frames.
     pub fn mean_times(&self) -> StageTimes {
-        let n = self.frames.max(1) as f64;
-        StageTimes {
-            rasterize_us: self.sums.rasterize_us / n,
-            vision_us: self.sums.vision_us / n,
-            technique_us: self.sums.technique_us / n,
-            step_us: self.sums.step_us / n,
-        }
+        self.sums.per_frame(self.frames)
     }
 }

@@ -1,5 +1,6 @@
 //! The curves `surfacelab bench` measures and one row of `scaling.csv`.
 
+use crate::session::StageTimes;
 use serde::{Deserialize, Serialize};
 
 /// What a curve varies; everything else stays at the reference workload
@@ -74,15 +75,13 @@ pub struct ScalingRow {
     pub peak_rss_mb: Option<f64>,
 }
 
-/// What a frame point measures, per frame.
+/// What a frame point measures: the mean a frame of each stage, of the
+/// contact image's non-zero pixels and of the technique's bodies.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Measured {
+    pub times: StageTimes,
     pub contact_pixels: f64,
     pub technique_bodies: f64,
-    pub rasterize_us: f64,
-    pub vision_us: f64,
-    pub technique_us: f64,
-    pub step_us: f64,
 }
 
 impl ScalingRow {
@@ -92,11 +91,11 @@ impl ScalingRow {
             x,
             contact_pixels: Some(m.contact_pixels),
             technique_bodies: Some(m.technique_bodies),
-            rasterize_us: Some(m.rasterize_us),
-            vision_us: Some(m.vision_us),
-            technique_us: Some(m.technique_us),
-            step_us: Some(m.step_us),
-            total_us: Some(m.rasterize_us + m.vision_us + m.technique_us + m.step_us),
+            rasterize_us: Some(m.times.rasterize_us),
+            vision_us: Some(m.times.vision_us),
+            technique_us: Some(m.times.technique_us),
+            step_us: Some(m.times.step_us),
+            total_us: Some(m.times.total_us()),
             wall_s: None,
             peak_rss_mb: None,
         }

@@ -70,22 +70,15 @@ impl Workload {
         let mut sum = Measured::default();
         for k in warmup..warmup + frames {
             s.step(&self.hands_at(k))?;
-            let t = s.last_times();
-            sum.rasterize_us += t.rasterize_us;
-            sum.vision_us += t.vision_us;
-            sum.technique_us += t.technique_us;
-            sum.step_us += t.step_us;
+            sum.times.add(&s.last_times());
             sum.contact_pixels += s.image().pixels.iter().filter(|&&p| p > 0).count() as f64;
             sum.technique_bodies += s.counts().bodies as f64;
         }
         let n = frames.max(1) as f64;
         Ok(Measured {
+            times: sum.times.per_frame(frames as u64),
             contact_pixels: sum.contact_pixels / n,
             technique_bodies: sum.technique_bodies / n,
-            rasterize_us: sum.rasterize_us / n,
-            vision_us: sum.vision_us / n,
-            technique_us: sum.technique_us / n,
-            step_us: sum.step_us / n,
         })
     }
 }
