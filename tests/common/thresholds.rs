@@ -426,6 +426,52 @@ pub const RELEASE_VELOCITY: Threshold = Threshold {
              catch up: 12.8% measured; bound: 20%, about measured plus half",
 };
 
+/// The same throw: the held point's sideways speed one frame after the lift.
+pub const RELEASE_SIDEWAYS: Threshold = Threshold {
+    name: "release_sideways",
+    side: Side::Below,
+    bound: 2e-6,
+    measured: 0.0,
+    unit: "m/s",
+    reason: "the hand moves along x over a ball centred on its path, so nothing acts across it: exactly 0 measured; \
+             bound: numerically zero",
+};
+
+/// A flat hand whose centroid lies beside the ball under centroid
+/// hit-testing: how far the ball moves along the hand's path.
+pub const CENTROID_MISS: Threshold = Threshold {
+    name: "centroid_miss",
+    side: Side::Below,
+    bound: 2e-6,
+    measured: 0.0,
+    unit: "m",
+    reason: "the hit test at the centroid finds nothing and the hand's other points are not used, so nothing \
+             touches the ball (the paper's point-based limit): exactly 0 measured; bound: numerically zero",
+};
+
+/// Two flat hands that grasped and carried the box under Hybrid, opened:
+/// the box's speed after the release.
+pub const GRASP_RELEASED_SPEED: Threshold = Threshold {
+    name: "grasp_released_speed",
+    side: Side::Below,
+    bound: 2e-6,
+    measured: 1.1e-8,
+    unit: "m/s",
+    reason: "opening hands drop their grips and the table's friction stops the box within the settle time: \
+             1.1e-8 m/s measured; bound: numerically zero",
+};
+
+/// The same grasp under Proxy: how far the box moves.
+pub const PROXY_GRASP_MISS: Threshold = Threshold {
+    name: "proxy_grasp_miss",
+    side: Side::Below,
+    bound: 2e-6,
+    measured: 1.8e-8,
+    unit: "m",
+    reason: "a flat hand's proxy is one body at the palm's centre, 7.5 cm from the box, and never touches it: \
+             1.8e-8 m measured (the box settling); bound: numerically zero",
+};
+
 /// Culling's comparison runs (edge push, flat hand sweep): the box's
 /// travel, so that the path comparison is about a moved box.
 pub const CULL_TRAVEL: Threshold = Threshold {
@@ -1020,4 +1066,8 @@ pub const ALL: &[Threshold] = &[
     CRUMPLED_COVER,
     DIRECT_SHEET_DRAGGED,
     PERCHED_JELLY_HEIGHT,
+    RELEASE_SIDEWAYS,
+    CENTROID_MISS,
+    GRASP_RELEASED_SPEED,
+    PROXY_GRASP_MISS,
 ];
