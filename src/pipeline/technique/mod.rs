@@ -3,9 +3,10 @@
 //! The paper's four conditions (Wilson et al. 2008, "The techniques
 //! compared"), plus the grasping hybrid it suggests, behind one trait, with
 //! a registry of techniques by name ([`register`]) that a program outside
-//! the crate adds its own to. Every technique gets the same inputs — this frame's
-//! [`VisionFrame`], the world and the timestep — applies its effect to the
-//! world before the step, tidies up after it, and returns feedback geometry.
+//! the crate adds its own to. Every technique gets the same inputs — this
+//! frame's [`VisionFrame`](crate::pipeline::vision::VisionFrame), the world
+//! and the timestep — applies its effect to the world before the step, tidies
+//! up after it, and returns feedback geometry.
 
 mod config;
 mod contract;
