@@ -2,12 +2,15 @@
 //! block (build, query, both), the one-shot walk that answers without
 //! storing the block, the O(m·n) brute force, the cached block's point
 //! queries and parry2d's GJK/EPA `contact`, on overlapping pairs of n-gons
-//! (n = 8 … 4096). After criterion's own report a summary prints the median
-//! per size, the log-log slopes and the ratios the brief asks for:
+//! (n = 8 … 4096), and the cached block against parry on random
+//! translations round random overlapping pairs (n = 64, 256, 1024). After
+//! criterion's own report a summary prints the median per size, the
+//! log-log slopes and the ratios against their targets:
 //!
 //! ```text
-//! cargo bench --bench contact            # full run, ~2 minutes on 2 cores
-//! cargo bench --bench contact -- build   # criterion filter, summary of what ran
+//! cargo bench --bench contact                  # full run, ~2 minutes on 2 cores
+//! cargo bench --bench contact -- build         # criterion filter, summary of what ran
+//! cargo bench --bench contact -- translations  # the random-translation table only
 //! ```
 
 use std::collections::BTreeMap;
@@ -109,6 +112,7 @@ fn bench(
 fn benches(c: &mut Criterion) {
     pair_benches(c);
     random_benches(c);
+    translation_benches(c);
 }
 
 /// The entrance block against brute force and parry on regular pairs.
@@ -235,6 +239,115 @@ fn random_benches(c: &mut Criterion) {
     });
 }
 
+/// Sizes, pairs per size and translations per pair of the cached block's
+/// random-translation comparison.
+const TRANSLATION_SIZES: [usize; 3] = [64, 256, 1024];
+const TRANSLATION_PAIRS: usize = 5;
+const TRANSLATIONS: usize = 256;
+/// The translations fill a disc of this radius around the overlapping pose:
+/// the polygons' axes are 0.5 to 1.5, so most translations overlap and some
+/// separate.
+const TRANSLATION_RADIUS: f64 = 2.0;
+
+/// Nanoseconds per query of every timing criterion made in the translation
+/// comparison, by method, size and pair.
+static PAIR_SAMPLES: Mutex<PairSamples> = Mutex::new(BTreeMap::new());
+type PairSamples = BTreeMap<(&'static str, usize, usize), Vec<f64>>;
+
+/// [`TRANSLATIONS`] seeded translations, uniform in the disc of
+/// [`TRANSLATION_RADIUS`] around the origin (the pair as built).
+fn translations() -> Vec<Vec2> {
+    let mut rng = ChaCha8Rng::seed_from_u64(7);
+    (0..TRANSLATIONS)
+        .map(|_| {
+            let r = TRANSLATION_RADIUS * rng.random_range(0.0..1.0f64).sqrt();
+            let angle: f64 = rng.random_range(0.0..std::f64::consts::TAU);
+            Vec2::new(r * angle.cos(), r * angle.sin())
+        })
+        .collect()
+}
+
+/// The cached block against parry on one overlapping pair at a time: the
+/// block built once, then a full report at each of the [`translations`],
+/// against parry's `contact` with A's pose moved by the same translation
+/// (parry's polygons are built outside the timing, the block inside it).
+/// Each sample times both, one after the other, so that both see the same
+/// load on a shared machine.
+fn translation_benches(c: &mut Criterion) {
+    let moves = translations();
+    for n in TRANSLATION_SIZES {
+        let mut group = c.benchmark_group(format!("contact/translations/{n}"));
+        for (k, (a, b)) in built(&random_pairs(n, false)).iter().take(TRANSLATION_PAIRS).enumerate() {
+            let (pa, pb) = (parry(a), parry(b));
+            let id = Pose::identity();
+            let ours = || {
+                let cached = CachedBlock::new(black_box(a), black_box(b));
+                moves.iter().map(|&t| cached.report(black_box(t)).distance).sum::<f64>()
+            };
+            let theirs = || {
+                let contact = |t: &Vec2| query::contact(&Pose::translation(t.x, t.y), black_box(&pa), &id, &pb, 100.0);
+                moves.iter().map(|t| contact(t).ok().flatten().map_or(f64::NAN, |c| c.dist)).sum::<f64>()
+            };
+            group.bench_function(BenchmarkId::new("pair", k), |bencher| {
+                bencher.iter_custom(|iters| {
+                    let start = Instant::now();
+                    for _ in 0..iters {
+                        black_box(ours());
+                    }
+                    let mid = Instant::now();
+                    for _ in 0..iters {
+                        black_box(theirs());
+                    }
+                    let spent = [mid - start, mid.elapsed()];
+                    if let Ok(mut samples) = PAIR_SAMPLES.lock() {
+                        for (method, time) in [("cached", spent[0]), ("parry", spent[1])] {
+                            let ns = time.as_secs_f64() * 1e9 / (iters.max(1) * TRANSLATIONS as u64) as f64;
+                            samples.entry((method, n, k)).or_default().push(ns);
+                        }
+                    }
+                    spent[0] + spent[1]
+                });
+            });
+        }
+        group.finish();
+    }
+}
+
+/// Per size: the median over pairs of each method's time per query, and the
+/// median over pairs of parry's time over the cached block's.
+fn translation_summary() {
+    let Ok(samples) = PAIR_SAMPLES.lock() else { return };
+    let mid = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v.get(v.len() / 2).copied()
+    };
+    let mut rows = Vec::new();
+    for n in TRANSLATION_SIZES {
+        let per_pair = |method: &'static str| -> Vec<f64> {
+            (0..TRANSLATION_PAIRS).filter_map(|k| samples.get(&(method, n, k)).map(|v| median(v))).collect()
+        };
+        let (ours, theirs) = (per_pair("cached"), per_pair("parry"));
+        if ours.len() != theirs.len() || ours.is_empty() {
+            continue;
+        }
+        let ratios = theirs.iter().zip(&ours).map(|(p, o)| p / o).collect();
+        if let (Some(o), Some(p), Some(r)) = (mid(ours), mid(theirs), mid(ratios)) {
+            rows.push((n, o, p, r));
+        }
+    }
+    if rows.is_empty() {
+        return;
+    }
+    println!(
+        "\ncached block, build + {TRANSLATIONS} random translations (disc of radius {TRANSLATION_RADIUS}) per overlapping random pair, median over {TRANSLATION_PAIRS} pairs:"
+    );
+    println!("{:>6}{:>22}{:>22}{:>14}", "n", "cached ns/query", "parry ns/query", "parry/ours");
+    for (n, o, p, r) in rows {
+        println!("{n:>6}{o:>22.1}{p:>22.1}{r:>13.1}x");
+    }
+    println!("target: >= 20x from n = 64");
+}
+
 /// Samples criterion measures per benchmark after warming up.
 const SAMPLE_SIZE: usize = 10;
 
@@ -351,4 +464,5 @@ fn main() {
         let medians: BTreeMap<(&str, usize), f64> = samples.iter().map(|(&k, v)| (k, median(v))).collect();
         random_summary(&medians);
     }
+    translation_summary();
 }

@@ -404,6 +404,43 @@ proptest! {
         let t = Vec2::new(f64::from(dx), f64::from(dy));
         prop_assert_eq!(cached.relation(t), brute_force_report_at(&a, &b, t).relation);
     }
+
+    /// The cached block at random translations round an overlapping pair
+    /// (a disc of radius 2: mostly inside, some outside) answers what the
+    /// linear scan of the same block answers (inside, the same report bit
+    /// for bit; outside, the same relation and the distance to 1e-12) and
+    /// what the one-shot query with A moved answers (the same relation, the
+    /// distance to 1e-9, as above).
+    #[test]
+    fn cached_reports_are_the_one_shot_reports(
+        a in convex(),
+        b in convex(),
+        (dx, dy) in (-0.5..0.5f64, -0.5..0.5f64),
+        moves in prop::collection::vec((0.0..std::f64::consts::TAU, 0.0..1.0f64), 1..24),
+    ) {
+        let (a, b) = (shifted(&a, 1.0, 0.0, 0.0), shifted(&b, 1.0, dx, dy));
+        let cached = CachedBlock::new(&a, &b);
+        for (angle, r) in moves {
+            let t = Vec2::new(angle.cos(), angle.sin()) * (2.0 * r.sqrt());
+            let fast = cached.report(t);
+            let slow = cached.block().report_at(t);
+            if slow.distance < 0.0 {
+                prop_assert_eq!(fast, slow, "at {:?}", t);
+            } else {
+                prop_assert_eq!(fast.relation, slow.relation, "at {:?}", t);
+                prop_assert!((fast.distance - slow.distance).abs() <= 1e-12, "at {t:?}: {fast:?} vs {slow:?}");
+            }
+            prop_assert_eq!(cached.signed_distance(t), fast.distance);
+            prop_assert_eq!(cached.relation(t), slow.relation, "at {:?}", t);
+            let one = contact_report(&a.translated(t).expect("unit polygons survive a move"), &b);
+            prop_assert!((one.distance - fast.distance).abs() <= 1e-9, "at {t:?}: {one:?} vs {fast:?}");
+            // A distance within rounding of the touching band may fall
+            // either side of it after the move.
+            if (fast.distance.abs() - fast.tolerance).abs() > 1e-9 {
+                prop_assert_eq!(one.relation, fast.relation, "at {:?}", t);
+            }
+        }
+    }
 }
 
 /// Star-shaped simple polygon: radii at sorted angles.

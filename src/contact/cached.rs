@@ -8,38 +8,46 @@
 //!   the edge whose wedge holds the query point; one side test says inside
 //!   or outside. Outside, the distance decides separated/touching (below).
 //!   Inside, a second wedge search in the block shrunk by the tolerance (its
-//!   edges moved inward, precomputed) says intersecting or touching.
-//! * **signed distance outside** — O(log n): the nearest point lies on the
-//!   chain of edges that face the query point, and along that chain the
-//!   distance falls then rises (a convex set seen from outside). A binary
-//!   search from the wedge's edge, forward or backward (whichever way the
-//!   distance falls there), finds where it turns; the edges either side of
-//!   the turn are compared.
-//! * **penetration depth inside** — O(n). The depth is the distance to the
+//!   edges moved inward, made on the first call) says intersecting or
+//!   touching.
+//! * **signed distance outside** — O(log n): a table of the edges by
+//!   normal direction gives, in O(1), the edge whose normal points at the
+//!   query point, which faces it unless the point is barely outside (then
+//!   the depth search below finds one that does). The nearest point lies on
+//!   the chain of edges that face the query point, and along that chain the
+//!   distance falls then rises (a convex set seen from outside), so a
+//!   galloping binary search from that edge, forward or backward (whichever
+//!   way the distance falls there), finds where it turns; the edges either
+//!   side of the turn are compared.
+//! * **penetration depth inside** — O(√n). The depth is the distance to the
 //!   nearest edge *line*, and that is not unimodal around the boundary (a
 //!   rectangle has two minima, one per long side), so no binary search
-//!   finds it. Doing it in O(log n) would take point location in the
-//!   block's medial axis; not done (recorded here as the rejected design).
+//!   finds it. A branch and bound over buckets of about √(n/2) edges
+//!   ([`LineIndex`]) finds the same edge line a linear scan does, and the
+//!   report is then built exactly as the linear scan builds it: the same
+//!   numbers, bit for bit.
 //!
 //! If the shrunk block is degenerate (an edge shorter than the tolerance at
 //! a sharp corner, or a block thinner than twice the tolerance) the inside
-//! relation falls back to the O(n) depth.
+//! relation falls back to the depth.
 
-use super::entrance_block::{ContactEdge, EntranceBlock, Nearest, nearest_on_chain};
+use super::entrance_block::{ContactEdge, EntranceBlock, Nearest, nearest_from_farthest, wrap};
+use super::line_index::LineIndex;
 use super::polygon::ConvexPolygon;
 use super::report::{ContactReport, Relation};
-use super::vec2::Vec2;
+use super::vec2::{Vec2, mean};
+use std::sync::OnceLock;
 
-/// An entrance block with what the O(log n) point queries need.
+/// An entrance block with what its point queries need.
 #[derive(Clone, Debug)]
 pub struct CachedBlock {
     block: EntranceBlock,
-    /// The edges' start points, contiguous for the wedge search.
-    corners: Vec<Vec2>,
-    /// A point strictly inside the block (the mean of its corners).
-    interior: Vec2,
-    /// The block shrunk by the tolerance, if it is a proper polygon.
-    inner: Option<Shrunk>,
+    /// The edges' normals and start points indexed by direction, with a
+    /// point strictly inside the block (the mean of its corners).
+    lines: LineIndex,
+    /// The block shrunk by the tolerance, if it is a proper polygon: made
+    /// on the first [`CachedBlock::relation`], which alone needs it.
+    inner: OnceLock<Option<Shrunk>>,
 }
 
 #[derive(Clone, Debug)]
@@ -57,10 +65,8 @@ impl CachedBlock {
     }
 
     pub fn from_block(block: EntranceBlock) -> Self {
-        let corners: Vec<Vec2> = block.edges().iter().map(|e| e.start).collect();
-        let interior = mean(&corners);
-        let inner = shrink(block.edges(), block.tolerance());
-        Self { block, corners, interior, inner }
+        let lines = LineIndex::new(block.edges());
+        Self { block, lines, inner: OnceLock::new() }
     }
 
     pub fn block(&self) -> &EntranceBlock {
@@ -73,12 +79,12 @@ impl CachedBlock {
         let q = translation;
         let edges = self.block.edges();
         let tol = self.block.tolerance();
-        let k = wedge(&self.corners, self.interior, q);
+        let k = wedge(self.lines.starts(), self.lines.origin(), q);
         if edges[k].plane_distance(q) > 0.0 {
             let d = self.nearest_outside(q, k).signed_distance;
             return Relation::from_signed_distance(d, tol);
         }
-        match &self.inner {
+        match self.inner.get_or_init(|| shrink(edges, tol)) {
             Some(inner) => {
                 let k = wedge(&inner.corners, inner.interior, q);
                 if edges[k].normal.dot(q - inner.corners[k]) < 0.0 {
@@ -87,12 +93,12 @@ impl CachedBlock {
                     Relation::Touching
                 }
             }
-            None => Relation::from_signed_distance(self.nearest_inside(q).signed_distance, tol),
+            None => Relation::from_signed_distance(self.nearest_inside(q, k).signed_distance, tol),
         }
     }
 
     /// Signed distance with A moved by `translation`: O(log n) when
-    /// separated, O(n) when inside the block.
+    /// separated, O(√n) when inside the block.
     pub fn signed_distance(&self, translation: Vec2) -> f64 {
         self.nearest(translation).signed_distance
     }
@@ -103,17 +109,30 @@ impl CachedBlock {
         self.block.report_from(translation, self.nearest(translation))
     }
 
+    /// The nearest boundary point. An edge guessed from `q`'s direction
+    /// that faces `q` proves it outside; otherwise the index finds the edge
+    /// line farthest out, which either faces `q` (outside after all) or
+    /// gives the depth.
     fn nearest(&self, q: Vec2) -> Nearest {
-        let k = wedge(&self.corners, self.interior, q);
-        if self.block.edges()[k].plane_distance(q) > 0.0 { self.nearest_outside(q, k) } else { self.nearest_inside(q) }
+        let edges = self.block.edges();
+        let guess = self.lines.guess(q);
+        if let Some(k) = guess.filter(|&k| edges[k].plane_distance(q) > 0.0) {
+            return self.nearest_outside(q, k);
+        }
+        let (far, g) = self.lines.farthest(q, guess.unwrap_or(0));
+        if g > 0.0 { self.nearest_outside(q, far) } else { nearest_from_farthest(edges, q, far, g) }
     }
 
-    /// O(n): the depth is not unimodal around the boundary (module docs).
-    fn nearest_inside(&self, q: Vec2) -> Nearest {
-        nearest_on_chain(self.block.edges(), q)
+    /// Inside edge `k` (any edge): the farthest-out edge line from the line
+    /// index, then what the linear scan does with it.
+    fn nearest_inside(&self, q: Vec2, k: usize) -> Nearest {
+        let (far, g) = self.lines.farthest(q, k);
+        nearest_from_farthest(self.block.edges(), q, far, g)
     }
 
-    /// `q` is outside edge `k`, whose wedge holds it (so `k` faces `q`).
+    /// `q` is outside edge `k`, so `k` faces `q` (any such edge will do:
+    /// the facing edges form one chain, and the searches below run along
+    /// it from wherever they start).
     fn nearest_outside(&self, q: Vec2, k: usize) -> Nearest {
         let edges = self.block.edges();
         let n = edges.len();
@@ -121,14 +140,14 @@ impl CachedBlock {
         // Forward from k: false while the edge faces q, is less than half a
         // turn ahead of k and the distance still falls at its end.
         let stops_forward = |o: usize| {
-            let e = &edges[(k + o) % n];
+            let e = &edges[wrap(k + o, n)];
             let c = nk.cross(e.normal);
             let half_turn_on = c < 0.0 || (c == 0.0 && nk.dot(e.normal) < 0.0);
             half_turn_on || e.plane_distance(q) <= 0.0 || (e.end() - q).dot(e.direction) >= 0.0
         };
         // Backward from k: the mirror image, judged at the edge's start.
         let stops_backward = |o: usize| {
-            let e = &edges[(k + n - o) % n];
+            let e = &edges[wrap(k + n - o, n)];
             let c = e.normal.cross(nk);
             let half_turn_on = c < 0.0 || (c == 0.0 && nk.dot(e.normal) < 0.0);
             half_turn_on || e.plane_distance(q) <= 0.0 || (e.start - q).dot(e.direction) <= 0.0
@@ -137,12 +156,13 @@ impl CachedBlock {
         // past k's end the nearest point is ahead, and the backward search
         // would stop at k at once; otherwise it is at or behind k's end, and
         // the forward search would.
-        let turn =
-            if stops_forward(0) { k + n - first_true(n, stops_backward) } else { k + first_true(n, stops_forward) };
+        let turn = wrap(
+            if stops_forward(0) { k + n - first_true(n, stops_backward) } else { k + first_true(n, stops_forward) },
+            n,
+        );
         let mut best = Nearest { edge: k, point: q, signed_distance: f64::INFINITY };
         let mut best_d2 = f64::INFINITY;
-        for j in [turn + n - 1, turn, turn + 1] {
-            let j = j % n;
+        for j in [wrap(turn + n - 1, n), turn, wrap(turn + 1, n)] {
             let p = edges[j].closest_point(q);
             let d2 = (q - p).length_squared();
             if d2 < best_d2 {
@@ -156,9 +176,21 @@ impl CachedBlock {
 }
 
 /// The first `o` in `0..n` for which `pred` holds, `pred` being false then
-/// true over that range; `n − 1` if it never holds.
+/// true over that range; `n − 1` if it never holds. Galloping (0, 2, 5,
+/// 10, …) before the binary search: the searches start at an edge facing
+/// the query point, usually a few edges from the nearest one.
 fn first_true(n: usize, pred: impl Fn(usize) -> bool) -> usize {
     let (mut lo, mut hi) = (0, n);
+    let (mut probe, mut width) = (0, 1);
+    while probe < n {
+        if pred(probe) {
+            hi = probe;
+            break;
+        }
+        lo = probe + 1;
+        width *= 2;
+        probe = lo + width / 2;
+    }
     while lo < hi {
         let mid = lo + (hi - lo) / 2;
         if pred(mid) {
@@ -219,13 +251,6 @@ fn shrink(edges: &[ContactEdge], tol: f64) -> Option<Shrunk> {
     let interior = mean(&corners);
     let inside = (0..n).all(|k| edges[k].normal.dot(interior - corners[k]) < 0.0);
     inside.then_some(Shrunk { corners, interior })
-}
-
-fn mean(points: &[Vec2]) -> Vec2 {
-    // Relative to the first point, so that far-away blocks keep their digits.
-    let origin = points[0];
-    let sum = points.iter().fold(Vec2::ZERO, |s, &p| s + (p - origin));
-    origin + sum / points.len() as f64
 }
 
 #[cfg(test)]

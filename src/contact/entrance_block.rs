@@ -97,16 +97,19 @@ pub struct ContactEdge {
 }
 
 impl ContactEdge {
+    #[inline]
     pub fn end(&self) -> Vec2 {
         self.start + self.direction
     }
 
     /// The paper's signed distance `v · (q − e₁)`: positive outside.
+    #[inline]
     pub fn plane_distance(&self, q: Vec2) -> f64 {
         self.normal.dot(q - self.start)
     }
 
     /// The point of this edge closest to `q`.
+    #[inline]
     pub fn closest_point(&self, q: Vec2) -> Vec2 {
         let len2 = self.direction.length_squared();
         let t = if len2 > 0.0 { ((q - self.start).dot(self.direction) / len2).clamp(0.0, 1.0) } else { 0.0 };
@@ -214,6 +217,7 @@ impl EntranceBlock {
         nearest_on_chain(&self.edges, Vec2::ZERO).point
     }
 
+    #[inline]
     pub(crate) fn report_from(&self, q: Vec2, nearest: Nearest) -> ContactReport {
         let edge = &self.edges[nearest.edge];
         let (witness, features) = contact_at(edge, nearest.point, q, self.tolerance);
@@ -538,7 +542,6 @@ pub(crate) fn nearest_on_boundary(edges: &[ContactEdge], q: Vec2, slack: f64) ->
 /// rises (a convex set seen from outside), so walking downhill from the
 /// facing edge with the largest plane distance reaches the minimum.
 pub(crate) fn nearest_on_chain(edges: &[ContactEdge], q: Vec2) -> Nearest {
-    let n = edges.len();
     let (mut max_g, mut k) = (f64::NEG_INFINITY, 0);
     for (i, e) in edges.iter().enumerate() {
         let g = e.plane_distance(q);
@@ -546,6 +549,16 @@ pub(crate) fn nearest_on_chain(edges: &[ContactEdge], q: Vec2) -> Nearest {
             (max_g, k) = (g, i);
         }
     }
+    nearest_from_farthest(edges, q, k, max_g)
+}
+
+/// The rest of [`nearest_on_chain`] once its first pass is done: `k` is
+/// the first edge with the largest plane distance, `max_g` that distance.
+/// [`CachedBlock`](super::cached::CachedBlock) finds them by a search
+/// instead of a pass and finishes here, so that its answer is this one.
+#[inline]
+pub(crate) fn nearest_from_farthest(edges: &[ContactEdge], q: Vec2, k: usize, max_g: f64) -> Nearest {
+    let n = edges.len();
     let measure = |i: usize| {
         let p = edges[i].closest_point(q);
         ((q - p).length_squared(), p)
@@ -555,7 +568,7 @@ pub(crate) fn nearest_on_chain(edges: &[ContactEdge], q: Vec2) -> Nearest {
     if max_g > 0.0 {
         for step in [1, n - 1] {
             loop {
-                let next = (best + step) % n;
+                let next = wrap(best + step, n);
                 let (d2, p) = measure(next);
                 if d2 < best_d2 {
                     (best, best_d2, point) = (next, d2, p);
@@ -565,7 +578,15 @@ pub(crate) fn nearest_on_chain(edges: &[ContactEdge], q: Vec2) -> Nearest {
             }
         }
     } else {
-        for i in [(k + n - 1) % n, (k + 1) % n] {
+        for i in [wrap(k + n - 1, n), wrap(k + 1, n)] {
+            // A neighbour whose line lies farther than the nearest point so
+            // far, by more than any rounding of either, has no point nearer:
+            // it is not measured (a division saved), and would not be taken.
+            let e = &edges[i];
+            let beyond = -e.plane_distance(q) - 1e-9 * (q.max_abs() + e.start.max_abs() + e.direction.max_abs());
+            if beyond > 0.0 && beyond * beyond > best_d2 {
+                continue;
+            }
             let (d2, p) = measure(i);
             if d2 < best_d2 {
                 (best, best_d2, point) = (i, d2, p);
@@ -576,8 +597,16 @@ pub(crate) fn nearest_on_chain(edges: &[ContactEdge], q: Vec2) -> Nearest {
     Nearest { edge: best, point, signed_distance: if max_g > 0.0 { d } else { -d } }
 }
 
+/// `i mod n` for `i < 2n`, by one comparison rather than a division (the
+/// division dominated the O(log n) searches that step round the chain).
+#[inline]
+pub(crate) fn wrap(i: usize, n: usize) -> usize {
+    if i >= n { i - n } else { i }
+}
+
 /// Witness points and features for the boundary point `point` of `edge`,
 /// A being at translation `q`.
+#[inline]
 pub(crate) fn contact_at(edge: &ContactEdge, point: Vec2, q: Vec2, tol: f64) -> ([Vec2; 2], Features) {
     let len2 = edge.direction.length_squared();
     let len = len2.sqrt();

@@ -7,6 +7,7 @@ mod concave;
 mod entrance_block;
 mod error;
 mod json_query;
+mod line_index;
 mod local_walk;
 mod overlapping;
 mod polygon;

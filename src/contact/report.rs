@@ -75,6 +75,7 @@ impl Features {
 
     /// Adds `feature` unless it is already present; a third distinct feature
     /// is dropped (it cannot occur for convex pieces, see [`Feature`]).
+    #[inline]
     pub fn push(&mut self, feature: Feature) {
         if self.as_slice().contains(&feature) || self.len == self.items.len() {
             return;
@@ -83,6 +84,7 @@ impl Features {
         self.len += 1;
     }
 
+    #[inline]
     pub fn as_slice(&self) -> &[Feature] {
         &self.items[..self.len]
     }

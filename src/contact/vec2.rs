@@ -146,6 +146,14 @@ pub(crate) fn at_or_after_in_half(d: Vec2, v: Vec2, base: Vec2, half: u8) -> boo
     if y < 0.0 && x.abs() < -y { if half == 0 { base.dot(v) < 0.0 } else { base.dot(v) > 0.0 } } else { x >= 0.0 }
 }
 
+/// The mean of some points, summed relative to the first so that points
+/// far from the origin keep their digits.
+pub(crate) fn mean(points: &[Vec2]) -> Vec2 {
+    let origin = points[0];
+    let sum = points.iter().fold(Vec2::ZERO, |s, &p| s + (p - origin));
+    origin + sum / points.len() as f64
+}
+
 #[cfg(test)]
 mod tests {
     use super::Vec2;
