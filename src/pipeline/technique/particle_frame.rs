@@ -34,8 +34,8 @@ use crate::pipeline::vision::{ContactId, EdgeSample};
 use crate::pipeline::world::parry::shape::{Ball, Capsule};
 use crate::pipeline::world::prelude::Pose;
 use crate::pipeline::world::{RayHit, World};
+use fnv::FnvHashMap;
 use glam::{Vec2, Vec3};
-use std::collections::HashMap;
 
 /// A particle's speed along the surface it touches, at most this many times
 /// the hand's speed over the table.
@@ -98,7 +98,7 @@ pub(super) struct Frame<'a> {
     /// spacing its mass and weight are given for.
     pub share: f32,
     /// Per contact: its outline samples and its presses.
-    pub counts: HashMap<ContactId, (u32, u32)>,
+    pub counts: FnvHashMap<ContactId, (u32, u32)>,
 }
 
 impl Frame<'_> {
