@@ -358,7 +358,9 @@ fn bad_flag_values_exit_2_and_name_the_flag() {
         );
     }
     assert!(!out.join("never").exists(), "nothing was run");
-    for (flag, value) in [("--condition", "rope:on"), ("--condition", "proxy:maybe"), ("--participant", "0")] {
+    for (flag, value) in
+        [("--condition", "rope:on"), ("--condition", "proxy:maybe"), ("--participant", "0"), ("--max-fps", "0")]
+    {
         let o = bin().args(["demo", flag, value]).output().expect("runs");
         assert_eq!(o.status.code(), Some(2), "{flag} {value}: {}", text(&o));
         assert!(text(&o).contains(flag), "{}", text(&o));

@@ -328,6 +328,70 @@ fn calibrate_takes_four_clicks_on_the_first_frame() {
     assert!(cal.contains("table_points = [[-"), "{cal}");
 }
 
+/// The demo's mouse as a visitor uses it: real X pointer events (XTEST,
+/// through xdotool) press a fingertip on the centre of `one_box`'s box,
+/// move it 200 px right in 60 moves over 1.5 s, hold 0.5 s and release.
+/// Under every technique the box follows the cursor most of the way, at
+/// the demo's own frame rate and at `--max-fps 15`. The box's travel comes
+/// from `--report` (its final pose), the cursor's from `--record` (the
+/// first and last points the hand was at): no pixel is read.
+#[test]
+fn the_demo_mouse_drags_the_box_under_every_technique() {
+    use common::thresholds::{DEMO_MOUSE_DRAG, DEMO_MOUSE_DRAG_JOINT};
+    use std::fmt::Write;
+    require("xdotool", "xdotool");
+    let dir = work_dir("demo_mouse_drag");
+    let task = concat!(env!("CARGO_MANIFEST_DIR"), "/tasks/cases/one_box.toml");
+    // The box sits at the table's centre, which the 1280x800 window shows
+    // at the centre of the view right of the 320 px panel: (800, 400).
+    let mut moves = String::new();
+    for i in 1..=60 {
+        write!(moves, " sleep 0.025 mousemove --window \"$wid\" {} 400", 800 + (200 * i + 30) / 60).expect("writes");
+    }
+    let drag = format!("mousemove --window \"$wid\" 800 400 sleep 0.3 mousedown 1{moves} sleep 0.5 mouseup 1");
+    let runs: Vec<(&str, &str)> =
+        ["particle", "proxy", "hybrid", "joint"].into_iter().flat_map(|t| [(t, ""), (t, "--max-fps 15")]).collect();
+    let mut script = String::new();
+    for (i, (technique, fps)) in runs.iter().enumerate() {
+        write!(
+            script,
+            "'{BIN}' demo --task '{task}' --technique {technique} {fps} --record rec{i}.toml --report rep{i}.json \
+                --screenshot-after 1 ready{i}.png --quit-after 60 --out out > log{i}.txt 2>&1 &
+            pid=$!
+            i=0; while [ ! -s ready{i}.png ] && [ $i -lt 600 ]; do sleep 0.1; i=$((i+1)); done
+            wid=$(xdotool search --onlyvisible --name 'surfacelab: ' | head -n 1)
+            xdotool {drag}
+            sleep 0.5
+            kill -INT $pid; wait $pid; echo \"run {i} exit $?\"
+            "
+        )
+        .expect("writes");
+    }
+    let out = under_xvfb(&dir, &script);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    for (i, (technique, fps)) in runs.iter().enumerate() {
+        let log = std::fs::read_to_string(dir.join(format!("log{i}.txt"))).unwrap_or_default();
+        let report = format!("{technique} {fps}\nstdout: {stdout}\nlog: {log}");
+        assert!(stdout.contains(&format!("run {i} exit 0")), "{report}");
+        let json =
+            std::fs::read_to_string(dir.join(format!("rep{i}.json"))).unwrap_or_else(|e| panic!("{e}\n{report}"));
+        let json: serde_json::Value = serde_json::from_str(&json).expect("a JSON report");
+        let box_x = json["objects"][0]["position"][0].as_f64().expect("the box's x");
+        let gesture = surfacelab::input::Gesture::load(dir.join(format!("rec{i}.toml")))
+            .unwrap_or_else(|e| panic!("{e}\n{report}"));
+        assert_eq!(gesture.tracks().len(), 1, "one fingertip\n{report}");
+        let keys = gesture.tracks()[0].keys();
+        let (first, last) = (keys[0].pos, keys[keys.len() - 1].pos);
+        let travel = last[0] - first[0];
+        // 200 px of a view about 930 px across a 1 m table.
+        assert!((0.18..0.24).contains(&travel), "the cursor moved {travel} m\n{report}");
+        let share = (box_x / travel) as f32;
+        let threshold = if *technique == "joint" { DEMO_MOUSE_DRAG_JOINT } else { DEMO_MOUSE_DRAG };
+        let rate = if fps.is_empty() { "its own frame rate" } else { fps };
+        threshold.check(share, &format!("{technique} at {rate}: the box's travel over the cursor's"));
+    }
+}
+
 /// A TUIO 1.1 frame (`fseq` `f`) with two hand-sized blobs sweeping the
 /// sorting table's pieces back and forth, 4 s a sweep, `t` seconds in.
 fn sweeping_blobs(f: i32, t: f64) -> Vec<u8> {

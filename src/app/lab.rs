@@ -156,10 +156,17 @@ impl Lab {
     /// Runs the physics steps real time asks for, `elapsed_s` after the
     /// last frame, at wall time [`Lab::wall`]; returns how many ran.
     ///
-    /// Each step takes its hands at its own wall time: the last step at
-    /// `wall`, the ones before it a step's length apart, or spread evenly
-    /// over the frame when the machine could not keep up (then the clock
-    /// drops time and the steps stand for more than `dt` of real time each).
+    /// Each step takes its hands at the real time it stands for, on the
+    /// clock's own grid ([`Clock::stood_for`]): the steps of successive
+    /// frames lie exactly `dt` apart, so a steady drag moves the hand the
+    /// same distance every step; steps anchored on each frame's own wall
+    /// time would stand 0.5 to 20 ms apart, as frames and the step grid
+    /// beat (`docs/design/demo-input-timing.md`).
+    ///
+    /// The window hears of input only between frames, so the events of a
+    /// slow frame arrive together; they are first spread over the frame
+    /// ([`Input::spread`]).
+    ///
     /// The hands pass through [`quantized`], as a recording stores them, so
     /// that a recording replays this run exactly.
     pub fn advance(&mut self, elapsed_s: f64) -> u32 {
@@ -174,15 +181,13 @@ impl Lab {
             return 0;
         }
         let table = self.table();
-        let spacing = if due > 0 && elapsed_s.is_finite() {
-            (elapsed_s / f64::from(due)).max(self.clock.dt())
-        } else {
-            self.clock.dt()
-        };
+        if elapsed_s.is_finite() && elapsed_s > 0.0 {
+            self.input.spread(self.wall - elapsed_s, self.wall);
+        }
         let mut ran = 0;
         for k in 0..due {
             let t = self.session.time();
-            let at = self.wall - f64::from(due - 1 - k) * spacing;
+            let at = self.wall - self.clock.stood_for(k, due);
             let hands: Vec<_> = self.input.hands_at(at, t, table).iter().map(quantized).collect();
             let stepped = match &mut self.camera {
                 Some(camera) => {

@@ -35,6 +35,12 @@ pub struct DemoOptions {
     pub participant: Option<ParticipantOptions>,
     /// Recordings go to `out_dir/gestures`, screenshots to `out_dir/screenshots`.
     pub out_dir: PathBuf,
+    /// At most this many frames per second; `None`: the display's refresh rate.
+    pub max_fps: Option<f64>,
+    /// Record every touch from the start to this gesture file.
+    pub record: Option<PathBuf>,
+    /// Write the run report (JSON) of the session here on close.
+    pub report: Option<PathBuf>,
 }
 
 /// `--screenshot-after SECONDS PATH`.
@@ -60,6 +66,9 @@ impl DemoOptions {
             quit_after: None,
             participant: None,
             out_dir: PathBuf::from("out"),
+            max_fps: None,
+            record: None,
+            report: None,
         }
     }
 }

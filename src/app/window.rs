@@ -12,6 +12,7 @@ use super::window_surface::{WindowSurface, window_egui};
 use super::{DemoOptions, Screenshot};
 use crate::input::{Button, Modifiers, MouseEvent, SourceEvent};
 use crate::render::{Alpha, GpuContext, Readback, Renderer, RendererOptions, readable, save_png, texture_2d};
+use crate::session::RunReport;
 use anyhow::{Context, anyhow, bail};
 use glam::Vec2;
 use std::sync::Arc;
@@ -31,7 +32,10 @@ const PIXELS_PER_NOTCH: f64 = 40.0;
 /// last participant trial).
 pub fn run(mut options: DemoOptions) -> anyhow::Result<()> {
     let camera = options.camera.take();
-    let lab = Lab::new(&options, camera)?;
+    let mut lab = Lab::new(&options, camera)?;
+    if let Some(path) = &options.record {
+        lab.start_recording(Some(path.clone()))?;
+    }
     let display = std::env::var("WAYLAND_DISPLAY").or_else(|_| std::env::var("DISPLAY")).unwrap_or_default();
     let event_loop = EventLoop::new().map_err(|e| {
         anyhow!("cannot open a window on display {display:?}: {e}; unset DISPLAY and WAYLAND_DISPLAY to run the headless job instead")
@@ -56,6 +60,17 @@ pub fn run(mut options: DemoOptions) -> anyhow::Result<()> {
         app.lab.stop_recording();
     }
     eprintln!("surfacelab demo: {}; physics {:.1} s behind real time", app.lab.stats.summary(), app.lab.behind_s());
+    if let Some(path) = &app.options.report {
+        let report = RunReport::from_session(
+            &app.lab.session,
+            app.lab.view.feedback,
+            "live input",
+            app.started.elapsed().as_secs_f64(),
+        );
+        let json = serde_json::to_string_pretty(&report).context("writing the JSON report")?;
+        crate::files::write_output(path, (json + "\n").as_bytes())
+            .with_context(|| format!("writing report {}", path.display()))?;
+    }
     app.error.map_or(Ok(()), Err)
 }
 
@@ -477,6 +492,9 @@ impl App {
             window.current_monitor().and_then(|m| m.refresh_rate_millihertz()).filter(|&mhz| mhz >= 10_000)
         {
             self.period = Duration::from_secs_f64(1000.0 / f64::from(hz));
+        }
+        if let Some(fps) = self.options.max_fps {
+            self.period = self.period.max(Duration::from_secs_f64(1.0 / fps));
         }
         tracing::info!("demo window on {summary}, surface {format:?} {usage:?}, {:?} per frame", self.period);
         eprintln!("surfacelab demo: {} with {} on {}", self.lab.task, self.lab.technique(), summary);

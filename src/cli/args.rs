@@ -87,6 +87,15 @@ pub struct DemoArgs {
     /// Folder for recordings (gestures/) and screenshots (screenshots/).
     #[arg(long, default_value = "out")]
     pub out: PathBuf,
+    /// Draw at most N frames per second (default: the display's refresh rate).
+    #[arg(long, value_name = "N", value_parser = parse_max_fps)]
+    pub max_fps: Option<f64>,
+    /// Record every touch from the start to FILE, a gesture file that `run --gesture` replays.
+    #[arg(long, value_name = "FILE", conflicts_with = "participant")]
+    pub record: Option<PathBuf>,
+    /// On close, write the run report (JSON, as `run --report` writes it): the objects' final poses.
+    #[arg(long, value_name = "FILE")]
+    pub report: Option<PathBuf>,
     /// Participant mode: no panel; the task runs as study trials of this participant (1-based ID).
     #[arg(long, value_name = "ID", value_parser = clap::value_parser!(u32).range(1..), requires = "condition")]
     pub participant: Option<u32>,
@@ -214,6 +223,16 @@ impl clap::Args for ScreenshotAfter {
 
     fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
         Self::augment_args(cmd)
+    }
+}
+
+/// `--max-fps N`: a frame rate from 1 to 1000.
+fn parse_max_fps(s: &str) -> Result<f64, String> {
+    let v: f64 = s.parse().map_err(|_| format!("`{s}` is not a number of frames per second"))?;
+    if v.is_finite() && (1.0..=1000.0).contains(&v) {
+        Ok(v)
+    } else {
+        Err(format!("`{s}` is out of range (frames per second, 1..=1000)"))
     }
 }
 

@@ -85,6 +85,9 @@ fn options(args: &DemoArgs) -> Result<DemoOptions, String> {
     }
     o.screenshot_after.clone_from(&args.screenshot_after.0);
     o.quit_after = args.quit_after.map(f64::from);
+    o.max_fps = args.max_fps;
+    o.record.clone_from(&args.record);
+    o.report.clone_from(&args.report);
     // clap enforces the pairs (`--participant` requires `--condition`;
     // `--trials-csv` and `--reps` require `--participant`).
     if let (Some(id), Some(_)) = (args.participant, &args.condition) {
@@ -160,6 +163,14 @@ mod tests {
         let o = parse(&["--screenshot-after", "2.5", "shot.png", "--quit-after", "4"]).expect("valid");
         assert_eq!(o.screenshot_after, Some(Screenshot { after_s: 2.5, path: "shot.png".into() }));
         assert_eq!(o.quit_after, Some(4.0));
+        let o = parse(&["--max-fps", "15", "--record", "r.toml", "--report", "r.json"]).expect("valid");
+        assert_eq!(o.max_fps, Some(15.0));
+        assert_eq!((o.record, o.report), (Some("r.toml".into()), Some("r.json".into())));
+        for bad in ["0", "0.5", "fast", "inf"] {
+            let e = parse(&["--max-fps", bad]).expect_err("not a frame rate");
+            assert!(e.contains("--max-fps"), "{e}");
+        }
+        assert!(parse(&["--record", "r.toml", "--participant", "1", "--condition", "joint:on"]).is_err());
         let late = parse(&["--screenshot-after", "soon", "shot.png"]).expect_err("not seconds");
         assert!(late.contains("--screenshot-after") && late.contains("`soon` is not a number of seconds"), "{late}");
         assert!(parse(&["--screenshot-after", "2"]).is_err(), "PATH is required");

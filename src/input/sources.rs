@@ -40,7 +40,8 @@ pub enum SourceEvent {
 /// All input sources.
 ///
 /// Events are stamped with the wall-clock second they arrived
-/// ([`Input::push`]) and applied when a physics step's own time reaches
+/// ([`Input::push`]), spread over the frame that delivered them together
+/// ([`Input::spread`]), and applied when a physics step's own time reaches
 /// them ([`Input::hands_at`]). A frame that runs several catch-up steps
 /// therefore sees continuous motion, and a press or a release lands on its
 /// own step. Sampling once per frame instead, at a slow frame rate, would
@@ -78,6 +79,28 @@ impl Input {
         let at = if at.is_finite() { at.max(self.newest) } else { self.newest };
         self.newest = at;
         self.pending.push_back((at, event));
+    }
+
+    /// Spreads the events stamped in `(from, to]` evenly over that span,
+    /// in their order: the k-th of n at `from + (to - from) k / n`.
+    ///
+    /// The demo calls it once a frame, over the time since the last frame.
+    /// A window hears of input only between frames: the moves of a 60 ms
+    /// software-rendered frame arrive together and would carry nearly one
+    /// stamp, so the interpolated hand would stand still for most of the
+    /// frame and then jump through the batch. Their order is known and
+    /// their times are not; spread evenly, a steady drag stays steady, and
+    /// a Particle drag carries the box as far as the drag's true timing
+    /// does (`docs/design/demo-input-timing.md` has the measurements).
+    /// Where the window hears each event as it comes (a fast frame, or one
+    /// that waits for the next one), a stamp moves by less than a frame.
+    pub fn spread(&mut self, from: f64, to: f64) {
+        let n = self.pending.iter().filter(|p| p.0 > from && p.0 <= to).count();
+        let mut k = 0;
+        for p in self.pending.iter_mut().filter(|p| p.0 > from && p.0 <= to) {
+            k += 1;
+            p.0 = from + (to - from) * k as f64 / n as f64;
+        }
     }
 
     /// Applies every event that arrived by wall time `wall`.
@@ -312,6 +335,30 @@ mod tests {
         input.push(0.25, SourceEvent::Mouse(MouseEvent::Released(Button::Left)));
         assert_eq!(at(&mut input, 0.24), [0.1, -0.05]);
         assert!(input.hands_at(0.26, 0.0, table).is_empty());
+    }
+
+    /// Moves a slow frame delivered together are spread over the frame, in
+    /// their order, so the hand moves steadily through them.
+    #[test]
+    fn a_batch_of_moves_is_spread_over_its_frame() {
+        let mut input = Input::default();
+        input.push(0.0, SourceEvent::Mouse(MouseEvent::Moved([0.0, 0.0])));
+        input.push(0.0, SourceEvent::Mouse(MouseEvent::Pressed(Button::Left)));
+        input.apply_until(0.0);
+        for (i, x) in [0.01, 0.02, 0.03, 0.04].into_iter().enumerate() {
+            input.push(0.099 + 0.0001 * i as f64, SourceEvent::Mouse(MouseEvent::Moved([x, 0.0])));
+        }
+        input.spread(0.0, 0.1);
+        let table = [1.0, 0.75];
+        for (wall, x) in [(0.0125, 0.005), (0.025, 0.01), (0.05, 0.02), (0.0875, 0.035), (0.1, 0.04)] {
+            let h = input.hands_at(wall, 0.0, table);
+            assert!((h[0].pose.x - x).abs() < 1e-6, "at {wall} s: {} m, not {x}", h[0].pose.x);
+        }
+        // One event alone keeps the end of its span.
+        input.push(0.13, SourceEvent::Mouse(MouseEvent::Released(Button::Left)));
+        input.spread(0.1, 0.15);
+        assert_eq!(input.hands_at(0.149, 0.0, table).len(), 1);
+        assert!(input.hands_at(0.15, 0.0, table).is_empty());
     }
 
     #[test]

@@ -987,6 +987,34 @@ pub const PERCHED_JELLY_HEIGHT: Threshold = Threshold {
              7 cm",
 };
 
+/// The demo's own mouse under Xvfb (real X events through xdotool): a
+/// fingertip pressed on the centre of `one_box`'s box, moved 200 px right
+/// in 60 moves over 1.5 s, held 0.5 s and released. The box's travel over
+/// the cursor's, Particle, Proxy and Hybrid, at the demo's own frame rate
+/// and at `--max-fps 15`.
+pub const DEMO_MOUSE_DRAG: Threshold = Threshold {
+    name: "demo_mouse_drag",
+    side: Side::Above,
+    bound: 0.70,
+    measured: 0.908,
+    unit: "of the cursor's travel",
+    reason: "a drag the hand follows carries the box most of the way: the fingertip slips while the box speeds up, \
+             then holds it; 0.908 the least measured (Proxy), 0.92-0.98 the rest; the pressed point starts at the box \
+             centre, so a box that loses its finger stops before 0.5 (7 cm of a 21 cm drag) and fails",
+};
+
+/// [`DEMO_MOUSE_DRAG`] under Joint: the anchor holds the box to the
+/// cursor, so only the spring's lag is lost.
+pub const DEMO_MOUSE_DRAG_JOINT: Threshold = Threshold {
+    name: "demo_mouse_drag_joint",
+    side: Side::Above,
+    bound: 0.90,
+    measured: 0.957,
+    unit: "of the cursor's travel",
+    reason: "the joint's spring carries the box with the cursor and lets it settle after the release; 0.957 the \
+             least measured; 0.90 leaves the spring's last centimetre",
+};
+
 /// The whole table, for `tests/thresholds.rs`.
 pub const ALL: &[Threshold] = &[
     CULL_EDGE_PUSH,
@@ -1070,4 +1098,6 @@ pub const ALL: &[Threshold] = &[
     CENTROID_MISS,
     GRASP_RELEASED_SPEED,
     PROXY_GRASP_MISS,
+    DEMO_MOUSE_DRAG,
+    DEMO_MOUSE_DRAG_JOINT,
 ];
