@@ -226,7 +226,7 @@ impl Brush {
 /// and was a few per cent of a frame (`perf` on the frame benchmark). For
 /// `0 <= v < 2^23` the fraction `v - trunc(v)` is exact, so the comparison
 /// with one half decides as `round` does; `v + 0.5` truncated would not
-/// (0.499_999_97 + 0.5 rounds to 1.0 in f32). It equals `round` on all 2^32
+/// (`0.49999997 + 0.5` rounds to 1.0 in f32). It equals `round` on all 2^32
 /// f32 bit patterns, NaN and infinities included.
 #[inline]
 fn grey_level(v: f32) -> u8 {
