@@ -282,7 +282,7 @@ impl ParticleTechnique {
         // Index last frame's active slots by where they sat.
         let key = |px: [f32; 2]| ((px[0] / CELL).floor() as i32, (px[1] / CELL).floor() as i32);
         // Only looked up, never iterated, so the hasher cannot change an
-        // answer; FNV rather than std's SipHash, which was a few per cent of
+        // answer; FNV rather than std's SipHash, which costs a few per cent of
         // the frame at nine lookups a particle.
         let mut grid: FnvHashMap<(i32, i32), Vec<usize>> = FnvHashMap::default();
         for (i, s) in self.slots.iter().enumerate() {
