@@ -222,8 +222,9 @@ impl Brush {
 }
 
 /// `v.round() as u8` (half away from zero, saturating), without the libm
-/// call `round` compiles to on baseline x86-64: it runs once per drawn pixel
-/// and a libm call there costs a few per cent of a frame (`perf` on the frame benchmark). For
+/// call `round` compiles to on baseline x86-64: it runs once per drawn
+/// pixel, where a libm call costs a few per cent of a frame (`perf` on the
+/// frame benchmark). For
 /// `0 <= v < 2^23` the fraction `v - trunc(v)` is exact, so the comparison
 /// with one half decides as `round` does; `v + 0.5` truncated would not
 /// (`0.49999997 + 0.5` rounds to 1.0 in f32). It equals `round` on all 2^32
@@ -420,23 +421,8 @@ mod tests {
 
     #[test]
     fn grey_levels_round_as_f32_round_does() {
-        let mut values = vec![
-            0.0,
-            0.5,
-            1.5,
-            2.5,
-            0.499_999_97,
-            254.5,
-            254.499_98,
-            255.0,
-            255.5,
-            256.0,
-            1e9,
-            5e9,
-            f32::MAX,
-            -0.4,
-            -3.0,
-        ];
+        let mut values = vec![0.0, 0.5, 1.5, 2.5, 0.499_999_97, 254.5, 254.499_98, 255.0, 255.5, 256.0];
+        values.extend([1e9, 5e9, f32::MAX, -0.4, -3.0]);
         values.extend([f32::NAN, f32::INFINITY, f32::NEG_INFINITY, f32::MIN_POSITIVE, 8_388_607.5, 8_388_608.0]);
         // Every f32 between 0 and 300 whose bits end in 12 zeros, and the
         // neighbours of every half.
