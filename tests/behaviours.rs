@@ -102,6 +102,7 @@ behaviour_tests!(
     ball_spin,
     ball_under_hand,
     ball_under_hand_off_centre,
+    ball_under_hand_forward,
     ball_stop_flat_hand,
     ball_bounce_hand_edge,
     flick_from_rest,

@@ -367,6 +367,37 @@ pub fn cases() -> Vec<Case> {
             "the flat of the hand on a ball, landed off its centre: a real ball rolls forward about half the hand's \
              travel",
         ),
+        // The palm laid on the ball slides 30 cm forward, along its fingers:
+        // the ball rolls on about half of it (the same 0.3 to 0.75 as the
+        // slide to the right) and keeps to the hand's line, veering at most
+        // a fifth of what it goes forward (20%: 3 cm of a 15 cm roll, the
+        // ball's own radius). Proxy's cube slips off the ball: it goes
+        // under 0.3 forward, squeezed out sideways (more sideways than
+        // forward).
+        Case {
+            settle_s: 0.0,
+            ..case(
+                "ball_under_hand_forward",
+                "tasks/cases/ball.toml",
+                "assets/gestures/behaviours/ball_under_hand_forward.toml",
+                "ball",
+                "the flat of the hand on a ball, slid forward along the fingers: a real ball rolls straight ahead \
+                 about half the hand's travel",
+                vec![Check::between(Metric::Carry, 0.3, 0.75), Check::at_most(Metric::Veer, 0.2)],
+                vec![
+                    limit(
+                        "proxy",
+                        PROXY_FLAT_ONLY,
+                        vec![Check::at_most(Metric::Carry, 0.3), Check::at_least(Metric::Veer, 1.0)],
+                    ),
+                    limit(
+                        "joint",
+                        JOINT_MAGNET,
+                        vec![Check::at_least(Metric::Carry, 0.75), Check::at_most(Metric::Veer, 0.2)],
+                    ),
+                ],
+            )
+        },
         // The ramp sends the ball at about 0.6 m/s; a flat hand landing on it
         // stops it: under 5 cm/s when the hand lifts a second later.
         ball_ramp(
