@@ -19,10 +19,11 @@
 //! (see `rest`) and land on that object become the colliders of one dynamic
 //! body. Each keeps its shape, mass and friction, so friction still acts at
 //! every particle; the body weighs what its particles weigh, so the hand
-//! presses as hard as its particles alone do. The body moves by the rigid motion that fits
+//! presses as hard as its particles alone do. The body moves by the mean of
 //! its particles' velocities (the hand's move over the object along its
-//! surface, its skin's slip included): a translation and a turn about the
-//! vertical through the particles' centroid. Vertically it follows the
+//! surface, its skin's slip included) and turns about the vertical through
+//! the particles' centroid as the hand turns on the glass (see
+//! `rigid_fit`). Vertically it follows the
 //! surface down (the arm presses the hand there), and it gives way up only
 //! as fast as the surface rises under every one of its particles: an
 //! object lifting under the whole hand lifts it, one tilting under it
@@ -87,7 +88,7 @@ pub struct PadParticle {
     pub rise: f32,
     /// How the hand moves it across the table (m/s): its outline point's
     /// flow over the glass, seen at its height. The pad turns as these
-    /// points do (see [`rigid_fit`]).
+    /// points do (see `rigid_fit`).
     pub glass: glam::Vec2,
     /// Press (N).
     pub weight: f32,
