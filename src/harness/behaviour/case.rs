@@ -14,6 +14,8 @@ pub enum Metric {
     FollowError,
     /// The object's horizontal displacement across the case's axis, absolute (m).
     Across,
+    /// [`Metric::Across`] over [`Metric::Along`]: how far the object veered off the hand's line for each metre it went along it.
+    Veer,
     /// Counter-clockwise turn about the vertical (deg), integrated frame by frame (a ball's spin too).
     Yaw,
     /// Largest tilt of the object's up axis from the vertical (deg).
@@ -44,6 +46,7 @@ impl Metric {
             Metric::Carry => "carried (share of hand travel)",
             Metric::FollowError => "off the hand's path (cm)",
             Metric::Across => "moved across (cm)",
+            Metric::Veer => "sideways over forward (share)",
             Metric::Yaw => "turned (deg)",
             Metric::MaxTilt => "max tilt (deg)",
             Metric::MaxLift => "max lift (mm)",
@@ -62,7 +65,13 @@ impl Metric {
         match self {
             Metric::Along | Metric::FollowError | Metric::Across | Metric::MaxAlong | Metric::PinDrift => 100.0,
             Metric::MaxLift | Metric::MaxDrop | Metric::MaxOverlap => 1000.0,
-            Metric::Carry | Metric::Yaw | Metric::MaxTilt | Metric::EndSpeed | Metric::Bounce | Metric::Gathered => 1.0,
+            Metric::Carry
+            | Metric::Veer
+            | Metric::Yaw
+            | Metric::MaxTilt
+            | Metric::EndSpeed
+            | Metric::Bounce
+            | Metric::Gathered => 1.0,
         }
     }
 }

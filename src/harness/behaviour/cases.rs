@@ -209,6 +209,59 @@ fn side_pushes(out: &mut Vec<Case>) {
     }
 }
 
+const PLATFORM_WIDE: [(&str, &str); 8] = [
+    push!("platform_wide", "000"),
+    push!("platform_wide", "045"),
+    push!("platform_wide", "090"),
+    push!("platform_wide", "135"),
+    push!("platform_wide", "180"),
+    push!("platform_wide", "225"),
+    push!("platform_wide", "270"),
+    push!("platform_wide", "315"),
+];
+
+const PROXY_PLACED_ONCE: &str = "When a contact initially appears, a ray casting calculation is performed to \
+                                 determine the 3D position of the proxy so that it touches the underlying object";
+
+/// Long pushes onto a raised platform from eight directions: a fingertip
+/// lands on the lower table beside the platform, crosses its edge and
+/// pushes through the cylinder's axis until it is 26 cm (at the
+/// platform's height) past where the axis stood, so a cylinder that stays
+/// against the finger goes 29.25 cm (26 + 2.5 cm radius + 0.75 cm
+/// fingertip). At least 25 cm of that — the cylinder kept in front of the
+/// finger, not lost off its side — with the floor cases' tilt (20°) and
+/// fall (1 cm) bounds: it stays upright and on the platform. Proxy's cube
+/// is placed once, on the lower table where the finger lands, and meets the
+/// platform's side, not the cylinder: it moves it at most the floor cases'
+/// 5 cm.
+fn platform_pushes(out: &mut Vec<Case>) {
+    let paper = "pushing the steering cylinder across its platform from the table beside it (the study's steering \
+                 task)";
+    for (name, gesture) in PLATFORM_WIDE {
+        out.push(case(
+            name,
+            "tasks/behaviours/cylinder_platform_wide.toml",
+            gesture,
+            "cylinder",
+            paper,
+            vec![
+                Check::at_least(Metric::Along, 0.25),
+                Check::at_most(Metric::MaxTilt, 20.0),
+                Check::at_most(Metric::MaxDrop, 0.01),
+            ],
+            vec![limit(
+                "proxy",
+                PROXY_PLACED_ONCE,
+                vec![
+                    Check::at_most(Metric::Along, 0.05),
+                    Check::at_most(Metric::MaxTilt, 20.0),
+                    Check::at_most(Metric::MaxDrop, 0.01),
+                ],
+            )],
+        ));
+    }
+}
+
 /// Every case of the suite, in the table's order.
 ///
 /// One piece on purpose: a declarative table, one entry per manipulation
@@ -322,6 +375,7 @@ pub fn cases() -> Vec<Case> {
         ),
     ];
     side_pushes(&mut out);
+    platform_pushes(&mut out);
     out.extend([
         // A light fingertip brushes 8 cm over the ball's top: it rolls on at
         // least half that (a finger on top of a rolling ball moves twice as
@@ -367,6 +421,37 @@ pub fn cases() -> Vec<Case> {
             "the flat of the hand on a ball, landed off its centre: a real ball rolls forward about half the hand's \
              travel",
         ),
+        // The palm laid on the ball slides 30 cm forward, along its fingers:
+        // the ball rolls on about half of it (the same 0.3 to 0.75 as the
+        // slide to the right) and keeps to the hand's line, veering at most
+        // a fifth of what it goes forward (20%: 3 cm of a 15 cm roll, the
+        // ball's own radius). Proxy's cube slips off the ball: it goes
+        // under 0.3 forward, squeezed out sideways (more sideways than
+        // forward).
+        Case {
+            settle_s: 0.0,
+            ..case(
+                "ball_under_hand_forward",
+                "tasks/cases/ball.toml",
+                "assets/gestures/behaviours/ball_under_hand_forward.toml",
+                "ball",
+                "the flat of the hand on a ball, slid forward along the fingers: a real ball rolls straight ahead \
+                 about half the hand's travel",
+                vec![Check::between(Metric::Carry, 0.3, 0.75), Check::at_most(Metric::Veer, 0.2)],
+                vec![
+                    limit(
+                        "proxy",
+                        PROXY_FLAT_ONLY,
+                        vec![Check::at_most(Metric::Carry, 0.3), Check::at_least(Metric::Veer, 1.0)],
+                    ),
+                    limit(
+                        "joint",
+                        JOINT_MAGNET,
+                        vec![Check::at_least(Metric::Carry, 0.75), Check::at_most(Metric::Veer, 0.2)],
+                    ),
+                ],
+            )
+        },
         // The ramp sends the ball at about 0.6 m/s; a flat hand landing on it
         // stops it: under 5 cm/s when the hand lifts a second later.
         ball_ramp(

@@ -127,7 +127,17 @@ pub fn run_case(case: &Case, kind: TechniqueKind, root: &Path) -> Result<Measure
     values.insert(Metric::Along, along);
     values.insert(Metric::Carry, if hand_along.abs() > 1e-6 { along / hand_along } else { f32::NAN });
     values.insert(Metric::FollowError, (moved - hand_move).length());
-    values.insert(Metric::Across, (moved - axis * along).length());
+    let across = (moved - axis * along).length();
+    values.insert(Metric::Across, across);
+    // Under a millimetre forward, any sideways motion is all veer.
+    let veer = if along > 1e-3 {
+        across / along
+    } else if across > 1e-3 {
+        f32::INFINITY
+    } else {
+        f32::NAN
+    };
+    values.insert(Metric::Veer, veer);
     values.insert(Metric::Yaw, t.yaw_rad.to_degrees());
     // The session tracks every object's largest tilt (the run report's
     // `max_tilt_deg`); read, not tracked a second time.

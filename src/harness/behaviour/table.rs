@@ -86,7 +86,7 @@ fn format_value(metric: Metric, value: f32) -> String {
     }
     let v = value * metric.scale();
     match metric {
-        Metric::Carry | Metric::Gathered | Metric::EndSpeed | Metric::Bounce => format!("{v:.2}"),
+        Metric::Carry | Metric::Veer | Metric::Gathered | Metric::EndSpeed | Metric::Bounce => format!("{v:.2}"),
         _ => format!("{v:.1}"),
     }
 }
