@@ -17,6 +17,9 @@
 //! then one main pass: table, table markings, objects, deformables, decals,
 //! the contact image, and the feedback last (hidden parts faint, visible
 //! parts solid).
+//! The table and the decals are drawn cell by cell
+//! ([`shadow_regions`](crate::render::shadow_regions)): with the shadow
+//! lookup only where a caster's shadow can reach.
 
 use crate::render::bounds::shadow_bounds;
 use crate::render::camera::CameraMatrices;
