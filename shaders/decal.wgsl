@@ -72,8 +72,9 @@ fn vs_main(@builtin(vertex_index) index: u32, d: DecalIn) -> VsOut {
     return out;
 }
 
-@fragment
-fn fs_main(in: VsOut) -> @location(0) vec4<f32> {
+// The shape's coverage of this pixel (0 outside, 1 inside, antialiased
+// across its edge).
+fn coverage(in: VsOut) -> f32 {
     let disc = length(in.local) - in.shape.x;
     let q = abs(in.local) - in.shape.xy;
     let rect = length(max(q, vec2<f32>(0.0))) + min(max(q.x, q.y), 0.0);
@@ -81,12 +82,31 @@ fn fs_main(in: VsOut) -> @location(0) vec4<f32> {
     // A stroke is centred on the edge, like an SVG stroke.
     distance = select(distance, abs(distance) - 0.5 * in.shape.z, in.shape.z > 0.0);
     let pixel = max(fwidth(distance), 1e-6);
-    let coverage = clamp(0.5 - distance / pixel, 0.0, 1.0);
+    return clamp(0.5 - distance / pixel, 0.0, 1.0);
+}
+
+@fragment
+fn fs_main(in: VsOut) -> @location(0) vec4<f32> {
+    let coverage = coverage(in);
     if coverage <= 0.0 {
         discard;
     }
     // Matte: no highlight, so the lighting is ambient + shadowed Lambert.
     let up = vec3<f32>(0.0, 0.0, 1.0);
     let color = in.color.rgb * (ambient_light(up) + frame.light_color.rgb * direct_light(in.shadow, up));
+    return output(color, in.color.a * coverage);
+}
+
+// `fs_main` where no shadow can fall (`render::shadow_regions`): the four
+// lookups would each answer fully lit, so the colour is the same without them.
+@fragment
+fn fs_unshadowed(in: VsOut) -> @location(0) vec4<f32> {
+    let coverage = coverage(in);
+    if coverage <= 0.0 {
+        discard;
+    }
+    let up = vec3<f32>(0.0, 0.0, 1.0);
+    let direct = max(dot(up, frame.light_direction.xyz), 0.0);
+    let color = in.color.rgb * (ambient_light(up) + frame.light_color.rgb * direct);
     return output(color, in.color.a * coverage);
 }

@@ -33,3 +33,10 @@ fn fs_main(in: VsOut) -> @location(0) vec4<f32> {
     let lit = shadowed(shadow_sharp(in.shadow));
     return output(in.ambient + in.direct * lit, 1.0);
 }
+
+// `fs_main` where no shadow can fall (`render::shadow_regions`): the lookup
+// would answer fully lit, so the colour is the same without it.
+@fragment
+fn fs_unshadowed(in: VsOut) -> @location(0) vec4<f32> {
+    return output(in.ambient + in.direct, 1.0);
+}

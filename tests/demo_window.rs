@@ -392,6 +392,37 @@ fn the_demo_mouse_drags_the_box_under_every_technique() {
     }
 }
 
+/// `scripts/demo-fps.sh --tuio`, the frame-time measurement of
+/// `docs/performance.md`, runs: the demo takes two TUIO hands from
+/// `scripts/tuio-sweep.py`, and the script prints the demo's summary with
+/// its frame and render times. Figures only, no timing is asserted.
+#[test]
+fn the_frame_time_script_drives_the_demo_with_two_tuio_hands() {
+    require("Xvfb", "xvfb");
+    require("python3", "python3");
+    // The script starts its own Xvfb: not while xvfb-run picks a display.
+    let _one_at_a_time = XVFB.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    let dir = work_dir("demo_fps");
+    let shot = dir.join("frame.png");
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("scripts/demo-fps.sh");
+    let out = Command::new("timeout")
+        .args(["120", "bash"])
+        .arg(&script)
+        .args(["4", "--technique", "joint", "--tuio", "--", "--screenshot-after", "3"])
+        .arg(&shot)
+        .env("SURFACELAB", BIN)
+        .output()
+        .expect("bash runs");
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let report = format!("stdout:\n{stdout}\nstderr:\n{}", String::from_utf8_lossy(&out.stderr));
+    assert!(out.status.success(), "exit {:?}\n{report}", out.status);
+    println!("{stdout}");
+    assert!(stdout.contains("sorting with joint on "), "{report}");
+    let summary = stdout.lines().find(|l| l.contains("frames, mean frame")).unwrap_or_else(|| panic!("{report}"));
+    assert!(summary.contains(" fps)") && summary.contains(", render "), "{summary}");
+    assert!(shot.exists(), "no window screenshot\n{report}");
+}
+
 /// A TUIO 1.1 frame (`fseq` `f`) with two hand-sized blobs sweeping the
 /// sorting table's pieces back and forth, 4 s a sweep, `t` seconds in.
 fn sweeping_blobs(f: i32, t: f64) -> Vec<u8> {

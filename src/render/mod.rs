@@ -30,6 +30,7 @@ mod readback;
 mod renderer;
 pub mod samples;
 mod shadow_map;
+mod shadow_regions;
 mod snapshot;
 mod targets;
 mod texture;

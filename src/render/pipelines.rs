@@ -43,10 +43,15 @@ pub struct Pipelines {
     pub shadow_two_sided: wgpu::RenderPipeline,
     /// The table and boxes (flat faces, lit per face).
     pub flat: wgpu::RenderPipeline,
+    /// `flat` without the shadow lookup, for the table where no shadow can
+    /// fall (`shadow_regions`).
+    pub flat_unshadowed: wgpu::RenderPipeline,
     pub grid: wgpu::RenderPipeline,
     pub mesh_solid: wgpu::RenderPipeline,
     pub mesh_two_sided: wgpu::RenderPipeline,
     pub decal: wgpu::RenderPipeline,
+    /// `decal` without the shadow lookups (`shadow_regions`).
+    pub decal_unshadowed: wgpu::RenderPipeline,
     pub overlay: wgpu::RenderPipeline,
     pub feedback_lines_hidden: wgpu::RenderPipeline,
     pub feedback_lines_visible: wgpu::RenderPipeline,
@@ -62,6 +67,7 @@ pub struct PipelineConfig {
 }
 
 /// Depth state of one pipeline: test, write, bias.
+#[derive(Clone, Copy)]
 struct Depth {
     compare: wgpu::CompareFunction,
     write: bool,
@@ -90,6 +96,7 @@ impl Depth {
 
 /// One pipeline's description, turned into a `RenderPipelineDescriptor`
 /// by [`Pass::build`].
+#[derive(Clone, Copy)]
 struct Spec<'a> {
     label: &'a str,
     module: &'a wgpu::ShaderModule,
@@ -291,7 +298,8 @@ impl Pipelines {
         };
         let main = Pass { device, format, samples, layout: &main_layout };
         let mesh = |label, cull| main.mesh(&mesh_module, &mesh_buffers, label, cull);
-        let [flat, grid, decal] = main.surfaces(&flat_module, &grid_module, &decal_module, &mesh_buffers);
+        let [flat, flat_unshadowed, grid, decal, decal_unshadowed] =
+            main.surfaces(&flat_module, &grid_module, &decal_module, &mesh_buffers);
         let [feedback_lines_hidden, feedback_lines_visible, feedback_cubes_hidden, feedback_cubes_visible] =
             main.feedback(&feedback_module);
         let overlay_pass = Pass { device, format, samples, layout: &overlay_pipeline_layout };
@@ -302,8 +310,10 @@ impl Pipelines {
             mesh_solid: mesh("mesh pipeline (solid)", Some(wgpu::Face::Back)),
             mesh_two_sided: mesh("mesh pipeline (two-sided)", None),
             flat,
+            flat_unshadowed,
             grid,
             decal,
+            decal_unshadowed,
             // The hands are on the glass, above everything the table shows:
             // drawn over objects (no depth test), never hidden by them.
             overlay: overlay_pass.build(
@@ -342,9 +352,12 @@ impl Pass<'_> {
         grid_module: &wgpu::ShaderModule,
         decal_module: &wgpu::ShaderModule,
         mesh_buffers: &[Option<wgpu::VertexBufferLayout<'_>>],
-    ) -> [wgpu::RenderPipeline; 3] {
+    ) -> [wgpu::RenderPipeline; 5] {
         use wgpu::CompareFunction::LessEqual;
-        let flat = self.build(Spec::new("flat pipeline", flat_module, mesh_buffers).cull(Some(wgpu::Face::Back)));
+        let flat = Spec::new("flat pipeline", flat_module, mesh_buffers).cull(Some(wgpu::Face::Back));
+        let flat_unshadowed = self
+            .build(Spec { label: "flat pipeline (unshadowed)", ..flat }.entry_points("vs_main", Some("fs_unshadowed")));
+        let flat = self.build(flat);
         // Multiplicative: the strip darkens what the table shows.
         let darken = wgpu::BlendState {
             color: wgpu::BlendComponent {
@@ -362,9 +375,14 @@ impl Pass<'_> {
         let grid = Spec::new("grid pipeline", grid_module, &strip_buffers);
         let grid = self.build(grid.depth(Depth::test_only(LessEqual)).blend(Some(darken)));
         let decal_buffers = [Some(DecalInstance::layout())];
-        let decal = Spec::new("decal pipeline", decal_module, &decal_buffers);
-        let decal = self.build(decal.depth(Depth::test_only(LessEqual)).blend(Some(wgpu::BlendState::ALPHA_BLENDING)));
-        [flat, grid, decal]
+        let decal = Spec::new("decal pipeline", decal_module, &decal_buffers)
+            .depth(Depth::test_only(LessEqual))
+            .blend(Some(wgpu::BlendState::ALPHA_BLENDING));
+        let decal_unshadowed = self.build(
+            Spec { label: "decal pipeline (unshadowed)", ..decal }.entry_points("vs_main", Some("fs_unshadowed")),
+        );
+        let decal = self.build(decal);
+        [flat, flat_unshadowed, grid, decal, decal_unshadowed]
     }
 
     /// The technique's feedback: lines and cubes, each in a pass for the

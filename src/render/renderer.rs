@@ -17,18 +17,23 @@
 //! then one main pass: table, table markings, objects, deformables, decals,
 //! the contact image, and the feedback last (hidden parts faint, visible
 //! parts solid).
+//! The table and the decals are drawn cell by cell
+//! ([`shadow_regions`](crate::render::shadow_regions)): with the shadow
+//! lookup only where a caster's shadow can reach.
 
 use crate::render::bounds::shadow_bounds;
 use crate::render::camera::CameraMatrices;
 use crate::render::contact_texture::ContactTexture;
-use crate::render::draw_list::{DrawList, Rgba};
+use crate::render::draw_list::{Decal, DrawList, Rgba};
 use crate::render::error::RenderError;
 use crate::render::frame::{FrameData, TABLE_INSTANCE, validate};
 use crate::render::gpu::AdapterSummary;
+use crate::render::instances::TABLE_THICKNESS;
 use crate::render::light::{ShadowProjection, light_direction};
 use crate::render::mesh_library::{MeshLibrary, MeshRef};
 use crate::render::pipelines::{PipelineConfig, Pipelines};
 use crate::render::shadow_map::ShadowMap;
+use crate::render::shadow_regions::{self, PixelRect};
 use crate::render::targets::RenderTargets;
 use crate::render::uniforms::FrameUniforms;
 
@@ -87,6 +92,10 @@ pub struct Renderer {
     /// Sized by the last `prepare`.
     targets: Option<RenderTargets>,
     frame: FrameData,
+    /// The view cut into rectangles, each with whether a shadow can fall
+    /// in it: the table and decals are drawn per rectangle, with the shadow
+    /// lookup only where it can matter ([`shadow_regions`]).
+    shadow_cells: Vec<(PixelRect, bool)>,
     clear: wgpu::Color,
     camera: Option<CameraMatrices>,
 }
@@ -164,6 +173,7 @@ impl Renderer {
             contact: None,
             targets: None,
             frame,
+            shadow_cells: Vec::new(),
             clear: wgpu::Color::BLACK,
             camera: None,
         })
@@ -207,6 +217,17 @@ impl Renderer {
         let encode_srgb = !self.target_format.is_srgb();
         let uniforms = FrameUniforms::new(list, size, &camera, &shadow, self.options.shadow_map_size, encode_srgb);
         self.queue.write_buffer(&self.uniforms, 0, bytemuck::bytes_of(&uniforms));
+        // Receivers drawn per cell: the table (its sides too) and the decals.
+        let floor = list
+            .decals
+            .iter()
+            .map(|d| match *d {
+                Decal::Disc { z, .. } | Decal::Rect { z, .. } => z,
+            })
+            .fold(-TABLE_THICKNESS, f32::min);
+        let margin = shadow_regions::reach(uniforms.shadow[0], uniforms.shadow[3]);
+        let regions = shadow_regions::shadow_rects(list, camera.view_proj, size, light_direction(), floor, margin);
+        self.shadow_cells = shadow_regions::cells(size, &regions);
         self.camera = Some(camera);
         self.clear = clear_color(list.clear_color, encode_srgb);
 
@@ -271,11 +292,12 @@ impl Renderer {
         // Opaque: the table, its markings, the objects (boxes lit per face,
         // round meshes per pixel), then the two-sided deformables.
         let cube = self.meshes.get(MeshRef::Box);
-        pass.set_pipeline(&p.flat);
         pass.set_vertex_buffer(0, cube.vertices.slice(..));
         pass.set_vertex_buffer(1, f.objects.slice());
         pass.set_index_buffer(cube.indices.slice(..), wgpu::IndexFormat::Uint32);
-        pass.draw_indexed(0..cube.index_count, 0, TABLE_INSTANCE..TABLE_INSTANCE + 1);
+        self.per_cell(&mut pass, [&p.flat_unshadowed, &p.flat], |pass| {
+            pass.draw_indexed(0..cube.index_count, 0, TABLE_INSTANCE..TABLE_INSTANCE + 1);
+        });
         pass.set_pipeline(&p.grid);
         pass.set_vertex_buffer(0, f.strips.slice());
         pass.draw(0..6, 0..f.strip_count);
@@ -298,9 +320,10 @@ impl Renderer {
 
         // Painted on surfaces: decals, then the hand shadow over them.
         if f.decal_count > 0 {
-            pass.set_pipeline(&p.decal);
             pass.set_vertex_buffer(0, f.decals.slice());
-            pass.draw(0..DECAL_VERTICES, 0..f.decal_count);
+            self.per_cell(&mut pass, [&p.decal_unshadowed, &p.decal], |pass| {
+                pass.draw(0..DECAL_VERTICES, 0..f.decal_count);
+            });
         }
         if let (true, Some(contact)) = (f.show_overlay, &self.contact) {
             pass.set_pipeline(&p.overlay);
@@ -329,6 +352,29 @@ impl Renderer {
             pass.set_pipeline(&p.feedback_lines_visible);
             pass.set_vertex_buffer(0, f.lines.slice());
             pass.draw(0..6, 0..f.line_count);
+        }
+    }
+
+    /// Runs `draw` once per shadow cell, scissored to it, with
+    /// `[unshadowed, shadowed]` pipeline as the cell asks; leaves the
+    /// scissor on the whole target.
+    fn per_cell(
+        &self,
+        pass: &mut wgpu::RenderPass<'_>,
+        [unshadowed, shadowed]: [&wgpu::RenderPipeline; 2],
+        mut draw: impl FnMut(&mut wgpu::RenderPass<'_>),
+    ) {
+        let mut current = None;
+        for &(cell, shadow) in &self.shadow_cells {
+            if current != Some(shadow) {
+                pass.set_pipeline(if shadow { shadowed } else { unshadowed });
+                current = Some(shadow);
+            }
+            pass.set_scissor_rect(cell.min[0], cell.min[1], cell.width(), cell.height());
+            draw(pass);
+        }
+        if let Some(t) = &self.targets {
+            pass.set_scissor_rect(0, 0, t.size[0], t.size[1]);
         }
     }
 
