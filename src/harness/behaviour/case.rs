@@ -14,7 +14,7 @@ pub enum Metric {
     FollowError,
     /// The object's horizontal displacement across the case's axis, absolute (m).
     Across,
-    /// Counter-clockwise turn about the vertical (deg), integrated frame by frame (a ball's spin too).
+    /// Counter-clockwise turn about the vertical (deg), summed step by step from the poses (a ball's spin too).
     Yaw,
     /// Largest tilt of the object's up axis from the vertical (deg).
     MaxTilt,
