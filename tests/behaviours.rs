@@ -119,6 +119,7 @@ behaviour_tests!(
     gather_forearms,
     grasp_flat_hands,
     grasp_pinch,
+    fingers_over_ball_drag,
     flat_hand_beside_ball,
 );
 

@@ -16,7 +16,7 @@ pub enum Metric {
     Across,
     /// [`Metric::Across`] over [`Metric::Along`]: how far the object veered off the hand's line for each metre it went along it.
     Veer,
-    /// Counter-clockwise turn about the vertical (deg), integrated frame by frame (a ball's spin too).
+    /// Counter-clockwise turn about the vertical (deg), summed step by step from the poses (a ball's spin too).
     Yaw,
     /// Largest tilt of the object's up axis from the vertical (deg).
     MaxTilt,

@@ -500,6 +500,27 @@ pub fn cases() -> Vec<Case> {
              on the floor\"",
             false,
         ),
+        // The flat hand beside the ball with its fingers over it drags 20 cm
+        // across the line from its palm to the ball: the ball goes the
+        // hand's way, at most 4 cm (two thirds of its 6 cm width) to the
+        // side of the hand's path, and at least 6 cm along it (the 30% of
+        // `ball_under_hand`). Proxy's cube, set on the ball's flank, pushes
+        // it along but holds it no better than a flank can: the ball
+        // squeezes out sideways.
+        case(
+            "fingers_over_ball_drag",
+            "tasks/cases/ball.toml",
+            "assets/gestures/behaviours/fingers_over_ball_drag.toml",
+            "ball",
+            "shape hit-testing: \"the center point may lie outside the target object\" when \"the user places a \
+             large part of their hand on [the] surface\"; the hand still drags the ball its own way",
+            vec![Check::at_least(Metric::Along, 0.06), Check::at_most(Metric::Across, 0.04)],
+            vec![limit(
+                "proxy",
+                PROXY_FLAT_ONLY,
+                vec![Check::at_least(Metric::Along, 0.06), Check::at_least(Metric::Across, 0.04)],
+            )],
+        ),
         // Nothing lifts a resting ball (a prism reaching under it would).
         case(
             "flat_hand_beside_ball",

@@ -41,6 +41,9 @@ pub struct Overlap {
     /// The point of the overlap nearest the contact's centroid, on the
     /// glass: where a ray meets the object.
     pub point: Vec2,
+    /// The middle (area centroid) of the region both outlines cover, on
+    /// the glass: the middle of the part of the hand lying over the object.
+    pub middle: Vec2,
     /// The middle of the object's silhouette on the glass.
     pub centre: Vec2,
 }
@@ -59,6 +62,7 @@ pub fn overlaps(world: &World, outline: &[Vec2], centroid: Vec2) -> Vec<Overlap>
                 object: id,
                 depth: -report.distance as f32,
                 point: nearest_common_point(&contact, &object, centroid),
+                middle: common_middle(&contact, &object),
                 centre: centre(&object),
             })
         })
@@ -110,6 +114,51 @@ fn nearest_common_point(a: &ConvexPolygon, b: &ConvexPolygon, c: Vec2) -> Vec2 {
     };
     let p = Vec2::new(point.x as f32, point.y as f32);
     p + (centre(b) - p).clamp_length_max(INSET)
+}
+
+/// The area centroid of `a ∩ b` (both convex, counter-clockwise): `a`
+/// clipped by each edge of `b` in turn (Sutherland–Hodgman). An overlap
+/// too thin to have an area gives the mean of its clipped points, and one
+/// that vanished in rounding the middle of `b`'s part of the penetration.
+fn common_middle(a: &ConvexPolygon, b: &ConvexPolygon) -> Vec2 {
+    let mut ring: Vec<CVec2> = a.vertices().to_vec();
+    let bv = b.vertices();
+    for i in 0..bv.len() {
+        let (p, q) = (bv[i], bv[(i + 1) % bv.len()]);
+        let e = CVec2::new(q.x - p.x, q.y - p.y);
+        // Inside is to the left of a counter-clockwise edge.
+        let side = |v: CVec2| e.cross(CVec2::new(v.x - p.x, v.y - p.y));
+        let mut next = Vec::with_capacity(ring.len() + 1);
+        for j in 0..ring.len() {
+            let (u, w) = (ring[j], ring[(j + 1) % ring.len()]);
+            let (su, sw) = (side(u), side(w));
+            if su >= 0.0 {
+                next.push(u);
+            }
+            if (su >= 0.0) != (sw >= 0.0) {
+                next.push(u.lerp(w, su / (su - sw)));
+            }
+        }
+        ring = next;
+        if ring.is_empty() {
+            let w = contact_report(a, b).witness;
+            return Vec2::new((0.5 * (w[0].x + w[1].x)) as f32, (0.5 * (w[0].y + w[1].y)) as f32);
+        }
+    }
+    let (mut area, mut cx, mut cy) = (0.0, 0.0, 0.0);
+    for j in 0..ring.len() {
+        let (u, w) = (ring[j], ring[(j + 1) % ring.len()]);
+        let k = u.cross(w);
+        area += k;
+        cx += (u.x + w.x) * k;
+        cy += (u.y + w.y) * k;
+    }
+    if area.abs() < 1e-12 {
+        let n = ring.len() as f64;
+        let (sx, sy) = ring.iter().fold((0.0, 0.0), |(x, y), v| (x + v.x, y + v.y));
+        return Vec2::new((sx / n) as f32, (sy / n) as f32);
+    }
+    Vec2::new((cx / (3.0 * area)) as f32, (cy / (3.0 * area)) as f32)
 }
 
 /// The mean of a polygon's vertices.
@@ -170,6 +219,24 @@ mod tests {
         // ray through it meets the ball.
         assert!(o.point.x > 0.06 && o.point.x < 0.075 && o.point.y.abs() < 1e-3, "{:?}", o.point);
         assert_eq!(w.cast_contact_ray(o.point).and_then(|h| h.object), Some(ObjectId::new(0)));
+        // The middle of the overlap: the 3.2 mm sliver between the ball's
+        // rim and the hand's edge, on the ball's axis.
+        assert!(o.middle.x > 0.0718 && o.middle.x < 0.075 && o.middle.y.abs() < 1e-3, "{:?}", o.middle);
+    }
+
+    #[test]
+    fn the_middle_of_an_overlap_under_a_hand_covering_a_ball_is_over_its_centre() {
+        let w = world();
+        // A 12 cm square from x = 0.03 to 0.15 covers the ball's silhouette.
+        let found = overlaps(&w, &square(Vec2::new(0.09, 0.0), 0.06), Vec2::new(0.04, 0.0));
+        assert_eq!(found.len(), 1, "{found:?}");
+        let o = found[0];
+        // The ball's centre, 3 cm up at x = 0.1, as the 1.2 m eye sees it:
+        // 0.1 × 1.2 / 1.17 on the glass.
+        let seen = Vec2::new(0.1 * 1.2 / 1.17, 0.0);
+        assert!((o.middle - seen).length() < 5e-4, "middle {:?}", o.middle);
+        // Its rim point nearest the hand's centroid is about 3 cm off it.
+        assert!((o.point - o.centre).length() > 0.025, "{:?}", o.point);
     }
 
     #[test]

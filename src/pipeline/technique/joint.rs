@@ -1,7 +1,8 @@
 //! Joint: a spring from each contact to an anchor point on the touched object
 //! (`BumpTop` style: an off-centre anchor gives torque). A contact whose
 //! centroid misses every movable object grabs the one its outline overlaps,
-//! at the overlap point nearest the centroid (`hit_test.rs`; the paper's
+//! at the overlap point nearest the centroid where the surface there faces
+//! up, else at the middle of the overlap (`hit_test.rs`; the paper's
 //! point-based variant is `hit_test = "centroid"`).
 //!
 //! The contact drives an invisible kinematic anchor body; a rapier spring
@@ -98,6 +99,11 @@ struct Pusher {
 /// `sweep_gather` forearm on the far side never got a prism).
 const PRISM_SCALES: [f32; 4] = [1.0, 0.75, 0.5, 0.25];
 
+/// The least upward component of the surface normal under an outline
+/// grab's overlap point for the hand to rest there (cos 45°): a ball's
+/// flank at the rim of its silhouette is tilted about 70°, a box's top 0°.
+const MIN_REST_NORMAL_Z: f32 = std::f32::consts::FRAC_1_SQRT_2;
+
 #[derive(Debug)]
 pub struct JointTechnique {
     config: TechniqueConfig,
@@ -145,8 +151,21 @@ impl JointTechnique {
     }
 
     /// A grab where the contact's outline overlaps an object its centroid
-    /// misses, at the overlap point nearest the centroid (`hit_test`); the
+    /// misses: of the objects it overlaps, the one whose overlap point is
+    /// nearest the centroid (`hit_test`), held at that point where the
+    /// surface there faces up (the hand rests on a top), else at the middle
+    /// of the overlap, over the part of the object the hand lies on; the
     /// anchor then keeps that offset from the centroid.
+    ///
+    /// The overlap point is on the silhouette's rim, and on a ball that is
+    /// its steep flank, where no finger lying over it rests. A spring tied
+    /// there leaves the ball free to swing round the anchor (every pose with
+    /// that flank point at the anchor costs the spring nothing), so a drag
+    /// across the line from palm to ball swung it 4.9 cm to the side of the
+    /// hand's 20 cm path; from the middle of fingers covering it, 0.2 cm
+    /// (`docs/design/techniques.md`). On a flat top the rim point is where
+    /// the hand's edge rests, and a box held there pivots about it as the
+    /// paper's point-based joint does (the behaviour suite's `grip_block`).
     fn grab_by_outline(
         &self,
         world: &mut TechniqueWorld<'_>,
@@ -162,8 +181,10 @@ impl JointTechnique {
         let nearest = hit_test::overlaps(world, &outline, centroid)
             .into_iter()
             .min_by(|a, b| (a.point - centroid).length().total_cmp(&(b.point - centroid).length()))?;
-        match self.try_grab(world, nearest.point, v_hand)? {
-            Hold::Object(g) => Some(Hold::Object(Grab { offset: nearest.point - centroid, ..g })),
+        let steep = world.cast_contact_ray(nearest.point).is_none_or(|h| h.normal.z < MIN_REST_NORMAL_Z);
+        let at = if steep { nearest.middle } else { nearest.point };
+        match self.try_grab(world, at, v_hand)? {
+            Hold::Object(g) => Some(Hold::Object(Grab { offset: at - centroid, ..g })),
             soft @ Hold::Soft(_) => Some(soft),
         }
     }
