@@ -50,14 +50,14 @@ awk -v secs="$seconds" 'BEGIN {
   }
 }' > "$gesture"
 
-# A free display number.
-display=99
-while [[ -e /tmp/.X11-unix/X$display || -e /tmp/.X$display-lock ]]; do display=$((display + 1)); done
-Xvfb ":$display" -screen 0 1280x800x24 -nolisten tcp >"$work/xvfb.log" 2>&1 &
+# Xvfb picks a free display itself and writes its number to fd 3 once it
+# accepts connections (a socket file can appear before that).
+Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>"$work/display" >"$work/xvfb.log" 2>&1 &
 xvfb=$!
-for _ in $(seq 200); do [[ -e /tmp/.X11-unix/X$display ]] && break; sleep 0.1; done
-[[ -e /tmp/.X11-unix/X$display ]] && kill -0 "$xvfb" 2>/dev/null \
-  || { echo "demo-fps: Xvfb did not start on :$display" >&2; cat "$work/xvfb.log" >&2; exit 1; }
+for _ in $(seq 200); do [[ -s $work/display ]] && break; sleep 0.1; done
+display=$(tr -d '[:space:]' <"$work/display")
+[[ -n $display ]] && kill -0 "$xvfb" 2>/dev/null \
+  || { echo "demo-fps: Xvfb did not start" >&2; cat "$work/xvfb.log" >&2; exit 1; }
 
 input=(--script "$gesture")
 if $tuio; then

@@ -28,7 +28,7 @@ const MAX_WINDOW: [u32; 2] = [1280, 800];
 /// points clicked, in the order of `names` (what each point is, for the
 /// prompt), or `None` if the user gave up.
 pub fn pick_points(frame: &CameraImage, names: [&str; 4], title: &str) -> anyhow::Result<Option<[[f64; 2]; 4]>> {
-    let display = std::env::var("WAYLAND_DISPLAY").or_else(|_| std::env::var("DISPLAY")).unwrap_or_default();
+    let display = super::window_surface::display_name();
     let event_loop = EventLoop::new().map_err(|e| {
         anyhow!("cannot open a window on display {display:?}: {e}; give the points with --points instead")
     })?;

@@ -36,7 +36,7 @@ pub fn run(mut options: DemoOptions) -> anyhow::Result<()> {
     if let Some(path) = &options.record {
         lab.start_recording(Some(path.clone()))?;
     }
-    let display = std::env::var("WAYLAND_DISPLAY").or_else(|_| std::env::var("DISPLAY")).unwrap_or_default();
+    let display = super::window_surface::display_name();
     let event_loop = EventLoop::new().map_err(|e| {
         anyhow!("cannot open a window on display {display:?}: {e}; unset DISPLAY and WAYLAND_DISPLAY to run the headless job instead")
     })?;

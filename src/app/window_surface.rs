@@ -9,6 +9,14 @@ use std::sync::Arc;
 use winit::event_loop::ActiveEventLoop;
 use winit::window::Window;
 
+/// The display a window opens on, for error messages: `WAYLAND_DISPLAY`,
+/// else `DISPLAY`, an empty variable counting as unset (as winit treats
+/// it), else "".
+pub fn display_name() -> String {
+    let set = |name: &str| std::env::var(name).ok().filter(|v| !v.is_empty());
+    set("WAYLAND_DISPLAY").or_else(|| set("DISPLAY")).unwrap_or_default()
+}
+
 /// The GPU, the window's surface and what it can do.
 pub struct WindowSurface {
     pub gpu: GpuContext,
