@@ -35,27 +35,21 @@ const LONG_PUSH_SIGHT: &str = "a fingertip's line-of-sight capsules lean along t
      independent particles is not";
 const LONG_PUSH_JOINT: &str = "the cylinder leaves the fingertip's side after 15 to 21 cm of push in three of \
      the eight directions (measured, not investigated here)";
-use Metric::Along;
+
+/// A known gap in how far a push moves its object.
+const fn short_push(case: &'static str, technique: TechniqueKind, why: &'static str) -> Gap {
+    Gap { case, technique, metric: Metric::Along, why }
+}
 
 /// The known gaps, as measured by `surfacelab behaviours` on this build.
 pub const GAPS: &[Gap] = &[
-    Gap { case: "side_push_platform_wide_045", technique: TechniqueKind::JOINT, metric: Along, why: LONG_PUSH_JOINT },
-    Gap {
-        case: "side_push_platform_wide_045",
-        technique: TechniqueKind::PARTICLE,
-        metric: Along,
-        why: LONG_PUSH_SIGHT,
-    },
-    Gap { case: "side_push_platform_wide_045", technique: TechniqueKind::HYBRID, metric: Along, why: LONG_PUSH_SIGHT },
-    Gap { case: "side_push_platform_wide_090", technique: TechniqueKind::JOINT, metric: Along, why: LONG_PUSH_JOINT },
-    Gap {
-        case: "side_push_platform_wide_225",
-        technique: TechniqueKind::PARTICLE,
-        metric: Along,
-        why: LONG_PUSH_SIGHT,
-    },
-    Gap { case: "side_push_platform_wide_270", technique: TechniqueKind::JOINT, metric: Along, why: LONG_PUSH_JOINT },
-    Gap { case: "side_push_platform_wide_270", technique: TechniqueKind::HYBRID, metric: Along, why: LONG_PUSH_SIGHT },
+    short_push("side_push_platform_wide_045", TechniqueKind::JOINT, LONG_PUSH_JOINT),
+    short_push("side_push_platform_wide_045", TechniqueKind::PARTICLE, LONG_PUSH_SIGHT),
+    short_push("side_push_platform_wide_045", TechniqueKind::HYBRID, LONG_PUSH_SIGHT),
+    short_push("side_push_platform_wide_090", TechniqueKind::JOINT, LONG_PUSH_JOINT),
+    short_push("side_push_platform_wide_225", TechniqueKind::PARTICLE, LONG_PUSH_SIGHT),
+    short_push("side_push_platform_wide_270", TechniqueKind::JOINT, LONG_PUSH_JOINT),
+    short_push("side_push_platform_wide_270", TechniqueKind::HYBRID, LONG_PUSH_SIGHT),
 ];
 
 /// The known gap for this cell, if it is one.

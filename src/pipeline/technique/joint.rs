@@ -161,7 +161,7 @@ impl JointTechnique {
     /// its steep flank, where no finger lying over it rests. A spring tied
     /// there leaves the ball free to swing round the anchor (every pose with
     /// that flank point at the anchor costs the spring nothing), so a drag
-    /// across the line from palm to ball swung it 4.9 cm to the side of the
+    /// across the line from palm to ball swings it 4.9 cm to the side of the
     /// hand's 20 cm path; from the middle of fingers covering it, 0.2 cm
     /// (`docs/design/techniques.md`). On a flat top the rim point is where
     /// the hand's edge rests, and a box held there pivots about it as the

@@ -215,10 +215,10 @@ impl Pads {
 /// in speed along it, so on a ball's flank the points slide down and apart
 /// at rates set by the local slope, and an outline that covers the flank
 /// unevenly (a palm's heel over a ball it has slid past) fits a turn the
-/// hand never made. A flat hand sliding 30 cm forward over a ball without
-/// turning had its pad turned at up to 2.2 rad/s as its heel passed over
-/// the ball's front; the pad spun the ball at 6 rad/s and sent it off 23°
-/// to the side (6.4 cm sideways for 15.1 cm forward when the hand lifts:
+/// hand never made. Fitted so, a flat hand sliding 30 cm forward over a
+/// ball without turning turns its pad at up to 2.2 rad/s as its heel
+/// passes over the ball's front; the pad spins the ball at 6 rad/s and
+/// sends it off 23° to the side (6.4 cm sideways for 15.1 cm forward when the hand lifts:
 /// `ball_under_hand_forward` in the behaviour suite). Turned as the hand
 /// turns on the glass, the pad turns under 0.8 rad/s and the ball rolls
 /// 19.6 cm forward, 0.6 cm sideways.
