@@ -43,7 +43,7 @@ use super::particle_frame::{Draft, Frame, MAX_SURFACE_SPEEDUP, Placement, Settle
 use super::proxy::gravity_scale_for;
 use super::rest::{Press, Resting};
 use super::sight_reach::SightReach;
-use super::surface_point::table_velocity;
+use super::surface_point::{move_at_height, table_velocity};
 use super::{Feedback, Technique, TechniqueConfig, TechniqueCounts, TechniqueInput};
 use crate::pipeline::surface::Sensor;
 use crate::pipeline::vision::{ContactId, EdgeSample, FlowInterest};
@@ -407,7 +407,6 @@ impl Technique for ParticleTechnique {
         // (see `pad`), by contact in id order (deterministic).
         let mut pads: BTreeMap<ContactId, Vec<PadParticle>> = BTreeMap::new();
         let mut placements = Vec::with_capacity(all.len());
-        let eye = world.eye().z;
         for p in all {
             match p.pad {
                 Some(id) => {
@@ -415,14 +414,11 @@ impl Technique for ParticleTechnique {
                     // Relative to the particle's centre, not rotated: the
                     // pad is level.
                     collider.position = Pose::from_translation(-p.center) * Self::pose(&p) * collider.position;
-                    // The hand's move over the glass, seen at the particle's
-                    // height (nearer the eye, a point under the hand moves less).
-                    let seen = (eye - p.center.z) / eye;
                     pads.entry(id).or_default().push(PadParticle {
                         center: p.center,
                         velocity: p.velocity - Vec3::new(0.0, 0.0, p.give_way.z),
                         rise: p.give_way.z,
-                        glass: table_velocity(input.sensor, p.flow_px, input.dt) * seen,
+                        glass: table_velocity(input.sensor, p.flow_px, input.dt) * move_at_height(world, p.center.z),
                         weight: p.weight,
                         mass: p.mass,
                         collider,

@@ -60,7 +60,7 @@
 //!
 //! Design: docs/design/resting-pad.md.
 
-use super::surface_point::least_squares_turn;
+use super::surface_point::{least_squares_turn, move_at_height};
 use crate::pipeline::surface::{PixelPoint, Sensor};
 use crate::pipeline::vision::{Contact, ContactId, EdgeSample, VisionFrame};
 use crate::pipeline::world::{RayHit, World};
@@ -277,8 +277,7 @@ impl Resting {
         // eye). Not where the contact's ray meets the surface now: under a
         // slanted ray a surface that only sinks (a card tipping under the
         // finger) is met further out, which is no slip.
-        let eye = world.eye().z;
-        let carried = a.at + ((centre - a.centre) * ((eye - a.at.z) / eye)).extend(0.0);
+        let carried = a.at + ((centre - a.centre) * move_at_height(world, a.at.z)).extend(0.0);
         let went = pose.position + pose.rotation * a.local;
         let slip = (carried - went).truncate();
         if slip.length() > STICK {

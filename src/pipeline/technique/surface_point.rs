@@ -47,6 +47,14 @@ pub fn project_flow(world: &World, hit: &RayHit, next: Vec2) -> Vec3 {
     o + d * t
 }
 
+/// How far a point at height `z` under a hand moves for each metre the hand
+/// moves over the glass: less the nearer the point is to the eye, since
+/// both stay on the same camera ray.
+pub fn move_at_height(world: &World, z: f32) -> f32 {
+    let eye = world.eye().z;
+    (eye - z) / eye
+}
+
 /// Where a contact's camera ray crosses the horizontal plane at height `z`:
 /// the world x/y a body at that height must go to so that it appears under
 /// the finger (perspective moves raised things outward on screen).
