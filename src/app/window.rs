@@ -67,9 +67,7 @@ pub fn run(mut options: DemoOptions) -> anyhow::Result<()> {
             "live input",
             app.started.elapsed().as_secs_f64(),
         );
-        let json = serde_json::to_string_pretty(&report).context("writing the JSON report")?;
-        crate::files::write_output(path, (json + "\n").as_bytes())
-            .with_context(|| format!("writing report {}", path.display()))?;
+        report.save(path).with_context(|| format!("writing report {}", path.display()))?;
     }
     app.error.map_or(Ok(()), Err)
 }

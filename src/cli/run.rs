@@ -93,24 +93,21 @@ fn latency_line(waits: &mut [Duration], dt: f64) -> Option<String> {
 
 /// The report as JSON, to `path` (atomically) or standard output.
 fn write_report(report: &RunReport, path: Option<&std::path::Path>) -> super::CommandResult {
-    let json = serde_json::to_string_pretty(report).context("writing the JSON report")?;
-    match path {
-        Some(path) => {
-            // Atomic: a full disk leaves the earlier report whole, not truncated.
-            crate::files::write_output(path, (json + "\n").as_bytes())
-                .with_context(|| format!("writing report {}", path.display()))?;
-            let why = report.completion.incomplete.as_deref().map_or_else(String::new, |w| format!(" ({w})"));
-            eprintln!(
-                "surfacelab run: {} steps, complete: {}{why}, max speed {:.2} m/s, NaN {}; report in {}",
-                report.steps,
-                report.completion.complete,
-                report.max_speed,
-                report.nan_count,
-                path.display()
-            );
-        }
-        None => outln!("{json}")?,
-    }
+    let Some(path) = path else {
+        let json = serde_json::to_string_pretty(report).context("writing the JSON report")?;
+        outln!("{json}")?;
+        return Ok(ExitCode::SUCCESS);
+    };
+    report.save(path).with_context(|| format!("writing report {}", path.display()))?;
+    let why = report.completion.incomplete.as_deref().map_or_else(String::new, |w| format!(" ({w})"));
+    eprintln!(
+        "surfacelab run: {} steps, complete: {}{why}, max speed {:.2} m/s, NaN {}; report in {}",
+        report.steps,
+        report.completion.complete,
+        report.max_speed,
+        report.nan_count,
+        path.display()
+    );
     Ok(ExitCode::SUCCESS)
 }
 

@@ -141,6 +141,14 @@ pub struct RunReport {
 }
 
 impl RunReport {
+    /// Writes the report as pretty JSON to `path`, atomically (a full disk
+    /// leaves an earlier report whole, not truncated); `-` is standard
+    /// output (see [`crate::files::write_output`]).
+    pub fn save(&self, path: &std::path::Path) -> std::io::Result<()> {
+        let json = serde_json::to_string_pretty(self).map_err(std::io::Error::other)?;
+        crate::files::write_output(path, (json + "\n").as_bytes())
+    }
+
     pub fn from_session(session: &Session, feedback: bool, gesture: &str, wall_time_s: f64) -> RunReport {
         let w = session.world();
         let scene = session.scene();
